@@ -1,0 +1,170 @@
+//! `merkur`: the command-line tool of the merkur project.
+//!
+//! Subcommands that exist work; nothing here is a placeholder. Later issues
+//! add Verilog generation, RTL simulation and synthesis.
+
+use clap::{Parser, Subcommand};
+use merkur_model::{config, ring, trace};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+mod demo;
+
+#[derive(Parser)]
+#[command(
+    name = "merkur",
+    version,
+    about = "MERKUR fault-tolerant ring fieldbus: scenarios, golden traces, demo",
+    long_about = "MERKUR fault-tolerant ring fieldbus.\n\nScenario files are TOML (docs/scenarios.md); the protocol is docs/protocol.md."
+)]
+struct Cli {
+    #[command(subcommand)]
+    cmd: Cmd,
+}
+
+#[derive(Subcommand)]
+enum Cmd {
+    /// Validate a scenario and print a summary of its ring.
+    Check {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+        /// Line rate in Mbit/s for the cycle time (default: the scenario's frame.line_rate_mbps, else 50).
+        #[arg(long, value_name = "MBPS")]
+        line_rate: Option<f64>,
+    },
+    /// Run the reference model on a scenario and write its golden trace.
+    Trace {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+        /// Output file; written atomically (nothing is left behind on error). Omit to print to stdout.
+        #[arg(short, long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
+    /// Run the model on the built-in 8-node ring with one line break and explain what happens.
+    Demo,
+}
+
+fn read_scenario(path: &Path) -> Result<(String, config::Config), String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("error: cannot read scenario {}: {e}", path.display()))?;
+    let name = path.display().to_string();
+    let cfg = config::load(&name, &text).map_err(|e| e.to_string())?;
+    Ok((text, cfg))
+}
+
+/// Writes `data` to `path` through a temporary file in the same directory,
+/// so a failed run never leaves a half-written file.
+fn write_atomic(path: &Path, data: &str) -> Result<(), String> {
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let fname = path
+        .file_name()
+        .ok_or_else(|| format!("error: --output {} is not a file name", path.display()))?;
+    let tmp = dir.join(format!(".{}.{}.tmp", fname.to_string_lossy(), std::process::id()));
+    std::fs::write(&tmp, data).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!("error: cannot write {}: {e}", path.display())
+    })?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!("error: cannot write {}: {e}", path.display())
+    })
+}
+
+fn check(path: &Path, line_rate: Option<f64>) -> Result<(), String> {
+    let (_, cfg) = read_scenario(path)?;
+    let rate = match line_rate {
+        None => cfg.line_rate_mbps,
+        Some(r) if r.is_finite() && r > 0.0 && r <= 1000.0 => r,
+        Some(r) => {
+            return Err(format!(
+                "error: --line-rate {r} must be above 0 and at most 1000 (Mbit/s)"
+            ))
+        }
+    };
+    let count = |k: merkur_model::scenario::Kind| cfg.nodes.iter().filter(|n| n.kind == k).count();
+    use merkur_model::scenario::Kind::*;
+    println!("scenario   {} ({})", cfg.name, path.display());
+    println!(
+        "ring       {} nodes: {} special master (node {}), {} masters, {} sensors, {} actuators",
+        cfg.nodes.len(),
+        count(SpecialMaster),
+        cfg.sm,
+        count(Master),
+        count(Sensor),
+        count(Actuator)
+    );
+    println!(
+        "frame      {} slots, {} words, {} bit times{}",
+        cfg.slots,
+        if cfg.ext { "30-bit (extended alarm)" } else { "25-bit" },
+        cfg.frame_bits(),
+        if cfg.ext { ", alarms carried beside the data" } else { "" }
+    );
+    println!(
+        "cycle      {} bit times = {:.2} us at {} Mbit/s (minimum legal period {})",
+        cfg.period,
+        cfg.period as f64 / rate,
+        rate,
+        config::min_period(cfg.slots, cfg.nodes.len(), cfg.ext)
+    );
+    println!(
+        "run        {} cycles, seed {}, {} host writes, {} interrupt requests, {} faults",
+        cfg.cycles,
+        cfg.seed,
+        cfg.host_writes.len(),
+        cfg.irqs.len(),
+        cfg.faults.len()
+    );
+    for (c, f) in &cfg.faults {
+        println!("fault      cycle {c}: {f}");
+    }
+    for (a, b, d) in ring::windows(&cfg) {
+        println!("window     cycles {a}..={b}: {d}");
+    }
+    println!("ok");
+    Ok(())
+}
+
+fn trace_cmd(path: &Path, output: Option<&Path>) -> Result<(), String> {
+    let (text, cfg) = read_scenario(path)?;
+    let recs = ring::run(&cfg);
+    let out = trace::render(&cfg, &text, &recs);
+    match output {
+        None => {
+            print!("{out}");
+            Ok(())
+        }
+        Some(p) => {
+            write_atomic(p, &out)?;
+            eprintln!(
+                "wrote {} ({} cycles, {} bytes)",
+                p.display(),
+                cfg.cycles,
+                out.len()
+            );
+            Ok(())
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let r = match &cli.cmd {
+        Cmd::Check {
+            scenario,
+            line_rate,
+        } => check(scenario, *line_rate),
+        Cmd::Trace { scenario, output } => trace_cmd(scenario, output.as_deref()),
+        Cmd::Demo => demo::run(),
+    };
+    match r {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::FAILURE
+        }
+    }
+}

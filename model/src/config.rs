@@ -1,0 +1,678 @@
+//! A validated ring configuration, built from a [`RawScenario`].
+//! Every rule of docs/protocol.md §7 and §10 that a configuration can break
+//! is checked here, with an error naming the field and value.
+
+use crate::line::word_bits;
+use crate::scenario::*;
+use std::collections::BTreeMap;
+use toml::Spanned;
+use std::fmt;
+
+/// Bits of the start delimiter JK.
+pub const JK_BITS: u32 = 10;
+/// Smallest gap between frames: 4 idle groups.
+pub const MIN_GAP_BITS: u32 = 20;
+/// Upper bound of one node's delay on the processing path, in bit times.
+pub const NODE_DELAY_BITS: u32 = 12;
+/// Upper bound of one node's delay on the secondary pass-through, in bit times.
+pub const PASS_DELAY_BITS: u32 = 12;
+/// Period of TST packets on a wrapped link, in bit times.
+pub const TST_PERIOD_BITS: u32 = 65;
+/// Reintegration needs this many TST periods inside one cycle.
+pub const MIN_PERIOD_BITS: u32 = 300;
+
+/// A fibre: `P(k)` runs node k PO -> node k+1 PI, `S(k)` node k+1 SO -> node k SI.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Fibre {
+    /// Primary fibre k.
+    P(usize),
+    /// Secondary fibre k.
+    S(usize),
+}
+
+impl fmt::Display for Fibre {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Fibre::P(k) => write!(f, "P{k}"),
+            Fibre::S(k) => write!(f, "S{k}"),
+        }
+    }
+}
+
+impl Fibre {
+    /// Parses `P3` / `S0` for a ring of `n` nodes.
+    pub fn parse(s: &str, n: usize) -> Result<Fibre, String> {
+        let bad = || {
+            format!(
+                "fibre = \"{s}\" is not a fibre of this ring: use P0..P{m} or S0..S{m}",
+                m = n - 1
+            )
+        };
+        let (kind, num) = s.split_at(s.char_indices().nth(1).map(|(i, _)| i).unwrap_or(0));
+        let k: usize = num.parse().map_err(|_| bad())?;
+        if k >= n {
+            return Err(bad());
+        }
+        match kind {
+            "P" | "p" => Ok(Fibre::P(k)),
+            "S" | "s" => Ok(Fibre::S(k)),
+            _ => Err(bad()),
+        }
+    }
+}
+
+/// Which word of a frame a bit flip hits.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FlipTarget {
+    /// The start delimiter JK.
+    Cs,
+    /// Header word 0.
+    H0,
+    /// Header word 1.
+    H1,
+    /// A slot word.
+    Slot(usize),
+}
+
+impl fmt::Display for FlipTarget {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FlipTarget::Cs => write!(f, "cs"),
+            FlipTarget::H0 => write!(f, "h0"),
+            FlipTarget::H1 => write!(f, "h1"),
+            FlipTarget::Slot(s) => write!(f, "s{s}"),
+        }
+    }
+}
+
+/// A validated fault.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fault {
+    /// Fibre goes dark before `slot` (None: before the start delimiter).
+    Break {
+        /// The fibre.
+        fibre: Fibre,
+        /// Slot before which it happens (None: before the delimiter).
+        slot: Option<usize>,
+    },
+    /// Fibre carries light again.
+    Repair {
+        /// The fibre.
+        fibre: Fibre,
+        /// Slot before which it happens (None: before the delimiter).
+        slot: Option<usize>,
+    },
+    /// Node dies before `slot`.
+    Kill {
+        /// The node.
+        node: usize,
+        /// Slot before which it happens (None: before the delimiter).
+        slot: Option<usize>,
+    },
+    /// One line bit inverted.
+    Flip {
+        /// The fibre.
+        fibre: Fibre,
+        /// The word hit.
+        target: FlipTarget,
+        /// Line bit within that word.
+        bit: u32,
+    },
+}
+
+impl fmt::Display for Fault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let at = |s: &Option<usize>| s.map(|s| format!("s{s}")).unwrap_or_else(|| "cs".into());
+        match self {
+            Fault::Break { fibre, slot } => write!(f, "break {fibre} at {}", at(slot)),
+            Fault::Repair { fibre, slot } => write!(f, "repair {fibre} at {}", at(slot)),
+            Fault::Kill { node, slot } => write!(f, "kill node{node} at {}", at(slot)),
+            Fault::Flip { fibre, target, bit } => write!(f, "flip {fibre} {target} bit {bit}"),
+        }
+    }
+}
+
+/// What kind of writer a slot has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SlotKind {
+    /// Written by a sensor slave.
+    Sensor,
+    /// Written by a master's host (LOCAL).
+    Local,
+    /// Data written by a master, Alive by the actuator slave `actuator`.
+    Act {
+        /// The actuator node.
+        actuator: usize,
+    },
+}
+
+/// One validated node.
+#[derive(Debug, Clone)]
+pub struct NodeCfg {
+    /// Kind.
+    pub kind: Kind,
+    /// Home slot.
+    pub address: usize,
+    /// Masters: LOCAL slots.
+    pub slots: Vec<usize>,
+    /// Masters: served actuator slots.
+    pub serves: Vec<usize>,
+    /// Clock offset, ppm.
+    pub ppm: f64,
+    /// Masters: Alive check enabled on foreign slots.
+    pub alive_check: bool,
+}
+
+/// A validated scenario.
+#[derive(Debug, Clone)]
+pub struct Config {
+    /// Name.
+    pub name: String,
+    /// Seed.
+    pub seed: u64,
+    /// Cycles to run.
+    pub cycles: u32,
+    /// Extended-alarm frame variant.
+    pub ext: bool,
+    /// Cycle period, bit times.
+    pub period: u32,
+    /// Line rate for summaries, Mbit/s.
+    pub line_rate_mbps: f64,
+    /// Nodes in ring order.
+    pub nodes: Vec<NodeCfg>,
+    /// Slots per frame.
+    pub slots: usize,
+    /// Writer (data source) of each slot.
+    pub writer: Vec<usize>,
+    /// Kind of each slot.
+    pub slot_kind: Vec<SlotKind>,
+    /// Index of the special master.
+    pub sm: usize,
+    /// Sensor stimulus generator.
+    pub generator: Generator,
+    /// Explicit sensor values: slot -> (from cycle -> value).
+    pub values: BTreeMap<usize, BTreeMap<u32, u16>>,
+    /// Host writes: (cycle, node, slot, data), in file order.
+    pub host_writes: Vec<(u32, usize, usize, u16)>,
+    /// Interrupt requests: (cycle, node, line).
+    pub irqs: Vec<(u32, usize, IrqLine)>,
+    /// Faults: (cycle, fault), in file order.
+    pub faults: Vec<(u32, Fault)>,
+}
+
+impl Config {
+    /// Line bits of one word.
+    pub fn word_bits(&self) -> u32 {
+        word_bits(self.ext)
+    }
+    /// Frame length in bit times: JK, two header words, the slots.
+    pub fn frame_bits(&self) -> u32 {
+        frame_bits(self.slots, self.ext)
+    }
+    /// Cycle time in microseconds at the configured line rate.
+    pub fn cycle_us(&self) -> f64 {
+        self.period as f64 / self.line_rate_mbps
+    }
+}
+
+/// Frame length in bit times.
+pub fn frame_bits(slots: usize, ext: bool) -> u32 {
+    JK_BITS + (2 + slots as u32) * word_bits(ext)
+}
+
+/// Smallest legal cycle period (docs/protocol.md §8): room for the frame and
+/// its gap, for the worst-case wrapped ring latency plus one word of
+/// processing in the special master, and for a reintegration handshake.
+pub fn min_period(slots: usize, nodes: usize, ext: bool) -> u32 {
+    let f = frame_bits(slots, ext) + MIN_GAP_BITS;
+    let latency = nodes as u32 * (NODE_DELAY_BITS + PASS_DELAY_BITS) + word_bits(ext);
+    f.max(latency).max(MIN_PERIOD_BITS)
+}
+
+fn slot_list(v: &Option<Spanned<Vec<Spanned<u32>>>>) -> Vec<&Spanned<u32>> {
+    v.as_ref()
+        .map(|l| l.get_ref().iter().collect())
+        .unwrap_or_default()
+}
+
+/// Reads and validates a scenario file's text. `file` is used in messages.
+pub fn load(file: &str, text: &str) -> Result<Config, ScenarioError> {
+    let raw = parse_raw(file, text)?;
+    validate(file, text, &raw)
+}
+
+/// Validates a parsed scenario.
+pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, ScenarioError> {
+    let m = SourceMap::new(file, text);
+    let n = raw.node.len();
+    if n < 2 {
+        return Err(m.error(
+            None,
+            format!("node: a ring needs at least 2 [[node]] entries, found {n}"),
+        ));
+    }
+    if n > MAX_NODES {
+        return Err(m.error(
+            None,
+            format!("node: {n} nodes, at most {MAX_NODES} are allowed"),
+        ));
+    }
+    let cycles = *raw.cycles.get_ref();
+    if cycles == 0 || cycles > MAX_CYCLES {
+        return Err(m.at(
+            &raw.cycles,
+            format!("cycles = {cycles} must be between 1 and {MAX_CYCLES}"),
+        ));
+    }
+    // Special master.
+    let sms: Vec<usize> = (0..n)
+        .filter(|&i| *raw.node[i].kind.get_ref() == Kind::SpecialMaster)
+        .collect();
+    if sms.is_empty() {
+        return Err(m.error(
+            None,
+            "node: the ring has no special master; exactly one node needs kind = \"special_master\"",
+        ));
+    }
+    if sms.len() > 1 {
+        return Err(m.at(
+            &raw.node[sms[1]].kind,
+            format!(
+                "node[{}].kind = \"special_master\": a ring has exactly one special master, node[{}] already is",
+                sms[1], sms[0]
+            ),
+        ));
+    }
+    // Slot ownership.
+    let mut writer: BTreeMap<usize, usize> = BTreeMap::new();
+    let mut kinds: BTreeMap<usize, SlotKind> = BTreeMap::new();
+    let mut nodes = Vec::with_capacity(n);
+    let check_slot = |s: &Spanned<u32>, field: String| -> Result<usize, ScenarioError> {
+        let v = *s.get_ref() as usize;
+        if v >= MAX_SLOTS {
+            Err(m.at(
+                s,
+                format!("{field} = {v} is out of range: slots are 0..{}", MAX_SLOTS - 1),
+            ))
+        } else {
+            Ok(v)
+        }
+    };
+    let claim = |slot: usize,
+                 at: &Spanned<u32>,
+                 node: usize,
+                 field: String,
+                 writer: &mut BTreeMap<usize, usize>|
+     -> Result<(), ScenarioError> {
+        if let Some(other) = writer.get(&slot) {
+            return Err(m.at(
+                at,
+                format!(
+                    "{field} = {slot}: slot {slot} already has a writer, node[{other}] ({}); every slot has exactly one",
+                    raw.node[*other].kind.get_ref().name()
+                ),
+            ));
+        }
+        writer.insert(slot, node);
+        Ok(())
+    };
+    // Actuators first so that `serves` can be matched against them.
+    let mut actuator_of: BTreeMap<usize, usize> = BTreeMap::new();
+    for (i, rn) in raw.node.iter().enumerate() {
+        let kind = *rn.kind.get_ref();
+        let address = check_slot(&rn.address, format!("node[{i}].address"))?;
+        let ppm = rn.ppm.as_ref().map(|p| *p.get_ref()).unwrap_or(0.0);
+        if let Some(p) = &rn.ppm {
+            if !ppm.is_finite() || ppm.abs() > MAX_PPM {
+                return Err(m.at(
+                    p,
+                    format!("node[{i}].ppm = {ppm} is out of range: clock offsets are within ±{MAX_PPM} ppm"),
+                ));
+            }
+        }
+        if !kind.is_master() {
+            for (f, v) in [("slots", &rn.slots), ("serves", &rn.serves)] {
+                if let Some(v) = v {
+                    return Err(m.at(
+                        v,
+                        format!(
+                            "node[{i}].{f}: a {} owns exactly its address slot; `{f}` is for masters",
+                            kind.name()
+                        ),
+                    ));
+                }
+            }
+            if rn.alive_check.is_some() {
+                return Err(m.error(
+                    Some(rn.kind.span().start),
+                    format!("node[{i}].alive_check: only masters check Alive bits"),
+                ));
+            }
+        }
+        let mut cfg = NodeCfg {
+            kind,
+            address,
+            slots: vec![],
+            serves: vec![],
+            ppm,
+            alive_check: rn.alive_check.unwrap_or(true),
+        };
+        match kind {
+            Kind::Sensor => {
+                claim(address, &rn.address, i, format!("node[{i}].address"), &mut writer)?;
+                kinds.insert(address, SlotKind::Sensor);
+            }
+            Kind::Actuator => {
+                if let Some(other) = actuator_of.get(&address) {
+                    return Err(m.at(
+                        &rn.address,
+                        format!("node[{i}].address = {address}: actuator node[{other}] already reads slot {address}"),
+                    ));
+                }
+                actuator_of.insert(address, i);
+            }
+            Kind::Master | Kind::SpecialMaster => {
+                let Some(list) = &rn.slots else {
+                    return Err(m.at(
+                        &rn.kind,
+                        format!("node[{i}].slots is missing: a master lists the slots its host writes (at least its address {address})"),
+                    ));
+                };
+                for s in slot_list(&rn.slots) {
+                    let v = check_slot(s, format!("node[{i}].slots"))?;
+                    claim(v, s, i, format!("node[{i}].slots"), &mut writer)?;
+                    kinds.insert(v, SlotKind::Local);
+                    cfg.slots.push(v);
+                }
+                if !cfg.slots.contains(&address) {
+                    return Err(m.at(
+                        &rn.address,
+                        format!("node[{i}].address = {address} is not one of node[{i}].slots: a master's alarms go in a slot it writes"),
+                    ));
+                }
+                let _ = list;
+                for s in slot_list(&rn.serves) {
+                    let v = check_slot(s, format!("node[{i}].serves"))?;
+                    cfg.serves.push(v);
+                }
+            }
+        }
+        nodes.push(cfg);
+    }
+    // Served actuator slots.
+    for (i, rn) in raw.node.iter().enumerate() {
+        for s in slot_list(&rn.serves) {
+            let v = *s.get_ref() as usize;
+            let Some(&act) = actuator_of.get(&v) else {
+                return Err(m.at(
+                    s,
+                    format!("node[{i}].serves = {v}: no actuator has address {v}"),
+                ));
+            };
+            claim(v, s, i, format!("node[{i}].serves"), &mut writer)?;
+            kinds.insert(v, SlotKind::Act { actuator: act });
+        }
+    }
+    for (&slot, &act) in &actuator_of {
+        if !writer.contains_key(&slot) {
+            return Err(m.at(
+                &raw.node[act].address,
+                format!("node[{act}].address = {slot}: no master serves this actuator; add {slot} to one master's `serves`"),
+            ));
+        }
+    }
+    let slots = writer.keys().next_back().map(|s| s + 1).unwrap_or(0);
+    if let Some(gap) = (0..slots).find(|s| !writer.contains_key(s)) {
+        return Err(m.error(
+            None,
+            format!("node: slot {gap} has no writer; slots must be numbered 0..{} without gaps", slots - 1),
+        ));
+    }
+    let ext = raw.frame.alarm_bits;
+    let min = min_period(slots, n, ext);
+    let period = match &raw.frame.period_bits {
+        None => min,
+        Some(p) => {
+            let v = *p.get_ref();
+            if v < min {
+                return Err(m.at(
+                    p,
+                    format!(
+                        "frame.period_bits = {v} is shorter than the ring can hold: {slots} slots on {n} nodes need at least {min} bit times (frame {} + gap {MIN_GAP_BITS}, wrapped-ring latency {}, reintegration {MIN_PERIOD_BITS})",
+                        frame_bits(slots, ext),
+                        n as u32 * (NODE_DELAY_BITS + PASS_DELAY_BITS) + word_bits(ext)
+                    ),
+                ));
+            }
+            v
+        }
+    };
+    let line_rate_mbps = match &raw.frame.line_rate_mbps {
+        None => 50.0,
+        Some(r) => {
+            let v = *r.get_ref();
+            if !(v.is_finite() && v > 0.0 && v <= 1000.0) {
+                return Err(m.at(
+                    r,
+                    format!("frame.line_rate_mbps = {v} must be above 0 and at most 1000"),
+                ));
+            }
+            v
+        }
+    };
+    let writer_v: Vec<usize> = (0..slots).map(|s| writer[&s]).collect();
+    let slot_kind: Vec<SlotKind> = (0..slots).map(|s| kinds[&s]).collect();
+    let sm = sms[0];
+    let check_cycle = |c: &Spanned<u32>, field: String| -> Result<u32, ScenarioError> {
+        let v = *c.get_ref();
+        if v >= cycles {
+            Err(m.at(
+                c,
+                format!("{field} = {v} is past the end of the run (cycles = {cycles})"),
+            ))
+        } else {
+            Ok(v)
+        }
+    };
+    let check_data = |d: &Spanned<u32>, field: String| -> Result<u16, ScenarioError> {
+        let v = *d.get_ref();
+        u16::try_from(v).map_err(|_| m.at(d, format!("{field} = {v} does not fit in 16 bits")))
+    };
+    let check_node = |d: &Spanned<u32>, field: String| -> Result<usize, ScenarioError> {
+        let v = *d.get_ref() as usize;
+        if v >= n {
+            Err(m.at(
+                d,
+                format!("{field} = {v}: the ring has nodes 0..{}", n - 1),
+            ))
+        } else {
+            Ok(v)
+        }
+    };
+    let mut values: BTreeMap<usize, BTreeMap<u32, u16>> = BTreeMap::new();
+    for (j, v) in raw.stimulus.value.iter().enumerate() {
+        let c = check_cycle(&v.cycle, format!("stimulus.value[{j}].cycle"))?;
+        let s = *v.slot.get_ref() as usize;
+        if s >= slots || slot_kind[s] != SlotKind::Sensor {
+            return Err(m.at(
+                &v.slot,
+                format!("stimulus.value[{j}].slot = {s} is not a sensor slot"),
+            ));
+        }
+        let d = check_data(&v.data, format!("stimulus.value[{j}].data"))?;
+        values.entry(s).or_default().insert(c, d);
+    }
+    let mut host_writes = vec![];
+    for (j, w) in raw.host_write.iter().enumerate() {
+        let c = check_cycle(&w.cycle, format!("host_write[{j}].cycle"))?;
+        let nd = check_node(&w.node, format!("host_write[{j}].node"))?;
+        if !nodes[nd].kind.is_master() {
+            return Err(m.at(
+                &w.node,
+                format!("host_write[{j}].node = {nd} is a {}, only masters have a host", nodes[nd].kind.name()),
+            ));
+        }
+        let s = *w.slot.get_ref() as usize;
+        if s >= slots || writer_v[s] != nd {
+            return Err(m.at(
+                &w.slot,
+                format!("host_write[{j}].slot = {s} is not written by node[{nd}]; a host writes only its LOCAL and served actuator slots"),
+            ));
+        }
+        let d = check_data(&w.data, format!("host_write[{j}].data"))?;
+        host_writes.push((c, nd, s, d));
+    }
+    let mut irqs = vec![];
+    for (j, q) in raw.irq.iter().enumerate() {
+        let c = check_cycle(&q.cycle, format!("irq[{j}].cycle"))?;
+        let nd = check_node(&q.node, format!("irq[{j}].node"))?;
+        irqs.push((c, nd, *q.line.get_ref()));
+    }
+    let mut faults = vec![];
+    for (j, f) in raw.fault.iter().enumerate() {
+        let c = check_cycle(&f.cycle, format!("fault[{j}].cycle"))?;
+        let kind = *f.kind.get_ref();
+        let kname = match kind {
+            FaultKind::Break => "break",
+            FaultKind::Repair => "repair",
+            FaultKind::Kill => "kill",
+            FaultKind::Flip => "flip",
+        };
+        let need = |present: bool, field: &str| -> Result<(), ScenarioError> {
+            if present {
+                Ok(())
+            } else {
+                Err(m.at(
+                    &f.kind,
+                    format!("fault[{j}].{field} is missing: kind = \"{kname}\" needs it"),
+                ))
+            }
+        };
+        let forbid = |present: Option<usize>, field: &str| -> Result<(), ScenarioError> {
+            match present {
+                None => Ok(()),
+                Some(at) => Err(m.error(
+                    Some(at),
+                    format!("fault[{j}].{field} has no meaning for kind = \"{kname}\""),
+                )),
+            }
+        };
+        let span = |o: &Option<Spanned<String>>| o.as_ref().map(|s| s.span().start);
+        let spanu = |o: &Option<Spanned<u32>>| o.as_ref().map(|s| s.span().start);
+        let fibre = |j: usize| -> Result<Fibre, ScenarioError> {
+            let fs = f.fibre.as_ref().expect("checked by need");
+            Fibre::parse(fs.get_ref(), n).map_err(|e| m.at(fs, format!("fault[{j}].{e}")))
+        };
+        let slot_at = |o: &Option<Spanned<u32>>| -> Result<Option<usize>, ScenarioError> {
+            match o {
+                None => Ok(None),
+                Some(s) => {
+                    let v = *s.get_ref() as usize;
+                    if v >= slots {
+                        Err(m.at(
+                            s,
+                            format!("fault[{j}].slot = {v}: the frame has slots 0..{}", slots - 1),
+                        ))
+                    } else {
+                        Ok(Some(v))
+                    }
+                }
+            }
+        };
+        let fault = match kind {
+            FaultKind::Break | FaultKind::Repair => {
+                need(f.fibre.is_some(), "fibre")?;
+                forbid(spanu(&f.node), "node")?;
+                forbid(span(&f.word), "word")?;
+                forbid(spanu(&f.bit), "bit")?;
+                let fibre = fibre(j)?;
+                let slot = slot_at(&f.slot)?;
+                if kind == FaultKind::Break {
+                    Fault::Break { fibre, slot }
+                } else {
+                    Fault::Repair { fibre, slot }
+                }
+            }
+            FaultKind::Kill => {
+                need(f.node.is_some(), "node")?;
+                forbid(span(&f.fibre), "fibre")?;
+                forbid(span(&f.word), "word")?;
+                forbid(spanu(&f.bit), "bit")?;
+                let ns = f.node.as_ref().expect("checked");
+                let node = check_node(ns, format!("fault[{j}].node"))?;
+                if node == sm {
+                    return Err(m.at(
+                        ns,
+                        format!("fault[{j}].node = {node} is the special master; its death needs a flying master (BRIEF §5), which this version does not have"),
+                    ));
+                }
+                Fault::Kill {
+                    node,
+                    slot: slot_at(&f.slot)?,
+                }
+            }
+            FaultKind::Flip => {
+                need(f.fibre.is_some(), "fibre")?;
+                need(f.bit.is_some(), "bit")?;
+                forbid(spanu(&f.node), "node")?;
+                let fibre = fibre(j)?;
+                let target = match (&f.word, &f.slot) {
+                    (Some(w), None) => match w.get_ref().as_str() {
+                        "cs" => FlipTarget::Cs,
+                        "h0" => FlipTarget::H0,
+                        "h1" => FlipTarget::H1,
+                        other => {
+                            return Err(m.at(
+                                w,
+                                format!("fault[{j}].word = \"{other}\": use \"cs\", \"h0\", \"h1\", or give `slot` instead"),
+                            ))
+                        }
+                    },
+                    (None, Some(_)) => FlipTarget::Slot(slot_at(&f.slot)?.expect("some")),
+                    (Some(w), Some(_)) => {
+                        return Err(m.at(w, format!("fault[{j}]: give either `word` or `slot`, not both")))
+                    }
+                    (None, None) => {
+                        return Err(m.at(
+                            &f.kind,
+                            format!("fault[{j}]: kind = \"flip\" needs `slot` or `word` (\"cs\", \"h0\", \"h1\")"),
+                        ))
+                    }
+                };
+                let b = f.bit.as_ref().expect("checked");
+                let max = if target == FlipTarget::Cs { JK_BITS } else { word_bits(ext) };
+                if *b.get_ref() >= max {
+                    return Err(m.at(
+                        b,
+                        format!("fault[{j}].bit = {}: a {} has line bits 0..{}", b.get_ref(), if target == FlipTarget::Cs { "start delimiter" } else { "word" }, max - 1),
+                    ));
+                }
+                Fault::Flip {
+                    fibre,
+                    target,
+                    bit: *b.get_ref(),
+                }
+            }
+        };
+        faults.push((c, fault));
+    }
+    Ok(Config {
+        name: raw.name.clone().unwrap_or_else(|| file.to_string()),
+        seed: raw.seed,
+        cycles,
+        ext,
+        period,
+        line_rate_mbps,
+        nodes,
+        slots,
+        writer: writer_v,
+        slot_kind,
+        sm,
+        generator: raw.stimulus.generator,
+        values,
+        host_writes,
+        irqs,
+        faults,
+    })
+}
+

@@ -1,0 +1,1167 @@
+//! The cycle-level ring simulation (docs/protocol.md §5–§12).
+//!
+//! One call of [`Ring::step`] simulates one communication cycle: the special
+//! master emits a frame, the frame follows the path the switchboxes make
+//! (processing at each node's INPUT, pass-through on the secondary ring), the
+//! secondary test frame and the link tests (TST) run, and at the end of the
+//! cycle every stream controller's verdict is resolved into switchbox changes,
+//! failsafe entries and reintegrations, which take effect from the next cycle.
+
+use crate::config::*;
+use crate::line::{self, Rx, Word};
+use crate::scenario::{Generator, IrqLine, Kind};
+use std::collections::BTreeSet;
+use std::fmt;
+
+/// Switchbox mode: the rows of the paper's Table 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Mode {
+    /// Row 1, all ports ok: INPUT=PI, OUTPUT=PO, BSR=SI, BSS=SO.
+    N,
+    /// Row 2, SO or PI defective: INPUT=SI, OUTPUT=PO, BSR=PI, BSS=SO.
+    Wu,
+    /// Row 3, SI or PO defective: INPUT=PI, OUTPUT=SO, BSR=SI, BSS=PO.
+    Wd,
+}
+
+impl Mode {
+    /// Code used in RECONFIG alarms and traces.
+    pub fn code(self) -> u16 {
+        match self {
+            Mode::N => 0,
+            Mode::Wu => 1,
+            Mode::Wd => 2,
+        }
+    }
+    /// Name in traces.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::N => "N",
+            Mode::Wu => "WU",
+            Mode::Wd => "WD",
+        }
+    }
+}
+
+/// Physical ports of a node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Port {
+    /// Primary in.
+    Pi,
+    /// Primary out.
+    Po,
+    /// Secondary in.
+    Si,
+    /// Secondary out.
+    So,
+}
+
+/// Table 1: (INPUT, OUTPUT, BSR, BSS) of a mode.
+pub fn table1(m: Mode) -> (Port, Port, Port, Port) {
+    match m {
+        Mode::N => (Port::Pi, Port::Po, Port::Si, Port::So),
+        Mode::Wu => (Port::Si, Port::Po, Port::Pi, Port::So),
+        Mode::Wd => (Port::Pi, Port::So, Port::Si, Port::Po),
+    }
+}
+
+/// What a fibre carried in one slot position of a frame.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Slot {
+    /// A word with good parity.
+    Data(Word),
+    /// The VOID word (five S groups).
+    Void,
+    /// A word that failed parity or held a non-data group.
+    Bad,
+    /// Nothing: the line went dark before this slot.
+    Missing,
+}
+
+/// Decoded header fields (docs/protocol.md §5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Header {
+    /// Failsafe seen upstream.
+    pub fs: bool,
+    /// Some node on the path this cycle is wrapped.
+    pub rwc: bool,
+    /// The ring was wrapped in the previous cycle (set by the special master).
+    pub rwp: bool,
+    /// Cycle counter, 3 bits.
+    pub cyc: u8,
+    /// Processing nodes passed so far.
+    pub hop: u16,
+}
+
+impl Header {
+    /// Header word 0 for a frame of `slots` slots.
+    pub fn h0(&self, slots: usize) -> Word {
+        Word {
+            data: ((self.fs as u16) << 13) | ((self.rwc as u16) << 12) | ((slots as u16 - 1) & 0xfff),
+            ..Word::default()
+        }
+    }
+    /// Header word 1.
+    pub fn h1(&self) -> Word {
+        Word {
+            data: ((self.rwp as u16) << 15) | (((self.cyc & 7) as u16) << 12) | (self.hop & 0xfff),
+            ..Word::default()
+        }
+    }
+    /// Decodes two header words; None when the type or slot count is wrong.
+    pub fn decode(h0: &Word, h1: &Word, slots: usize) -> Option<Header> {
+        if h0.data >> 14 != 0 || (h0.data & 0xfff) as usize != slots - 1 || h0.alarm || h1.alarm {
+            return None;
+        }
+        Some(Header {
+            fs: h0.data & (1 << 13) != 0,
+            rwc: h0.data & (1 << 12) != 0,
+            rwp: h1.data & (1 << 15) != 0,
+            cyc: ((h1.data >> 12) & 7) as u8,
+            hop: h1.data & 0xfff,
+        })
+    }
+}
+
+/// Header as a receiver sees it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum HeaderRx {
+    /// Both header words decoded.
+    Ok(Header),
+    /// Start delimiter found, header word bad: frame ignored.
+    Bad,
+    /// Start delimiter not found: frame invisible.
+    NoCs,
+}
+
+/// A data frame on a fibre.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Frame {
+    /// Header.
+    pub hdr: HeaderRx,
+    /// One entry per slot.
+    pub words: Vec<Slot>,
+}
+
+/// What one fibre carried during one cycle.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Carry {
+    /// No light (broken fibre or dead sender).
+    Silent,
+    /// Idle groups only.
+    Idle,
+    /// The cycle's data frame (possibly passed through).
+    Data(Frame),
+    /// The secondary test frame; `ok` = still intact.
+    Sec {
+        /// Intact.
+        ok: bool,
+    },
+    /// Link test packets from a wrapped node; `ack` = it hears its partner's TST.
+    Tst {
+        /// Acknowledge bit.
+        ack: bool,
+    },
+}
+
+/// Why a node entered failsafe.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FsCause {
+    /// A stream controller failed while the ring was known to be wrapped.
+    SecondFault,
+    /// A header with FS=1 arrived.
+    Header,
+    /// No valid frame for two cycles.
+    Timeout,
+    /// A FAILSAFE alarm (user request) was sent or received.
+    Request,
+}
+
+impl fmt::Display for FsCause {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            FsCause::SecondFault => "second-fault",
+            FsCause::Header => "header",
+            FsCause::Timeout => "timeout",
+            FsCause::Request => "request",
+        })
+    }
+}
+
+/// Alarm reason codes (docs/protocol.md §11).
+pub mod reason {
+    /// User interrupt 1.
+    pub const IRQ1: u8 = 1;
+    /// User interrupt 2.
+    pub const IRQ2: u8 = 2;
+    /// Failsafe request.
+    pub const FAILSAFE: u8 = 3;
+    /// Switchbox reconfiguration; argument = new mode code.
+    pub const RECONFIG: u8 = 4;
+}
+
+/// Where in a cycle an event happened.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum At {
+    /// At the start delimiter / header.
+    Hdr,
+    /// In a slot.
+    Slot(usize),
+    /// After the frame (end-of-cycle resolution).
+    End,
+}
+
+impl fmt::Display for At {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            At::Hdr => write!(f, "hdr"),
+            At::Slot(s) => write!(f, "s{s}"),
+            At::End => write!(f, "end"),
+        }
+    }
+}
+
+/// Something that happened.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum EventKind {
+    /// Switchbox change, effective from the next cycle.
+    Mode {
+        /// Old mode.
+        from: Mode,
+        /// New mode.
+        to: Mode,
+    },
+    /// Failsafe entered.
+    Failsafe(FsCause),
+    /// The node put an alarm word in its home slot.
+    AlarmTx {
+        /// Reason code.
+        reason: u8,
+        /// Argument (RECONFIG: mode code).
+        arg: u8,
+    },
+    /// A master received an alarm and raised it to its host.
+    Irq {
+        /// Slot the alarm came in (the sender's address).
+        slot: usize,
+        /// Reason code.
+        reason: u8,
+        /// Argument.
+        arg: u8,
+    },
+    /// A master saw the Alive bit of a slot stop toggling.
+    AliveLost {
+        /// Slot.
+        slot: usize,
+    },
+    /// It toggles again.
+    AliveRestored {
+        /// Slot.
+        slot: usize,
+    },
+    /// The special master's secondary test frame did not return intact.
+    SecFail,
+}
+
+/// An event stamped with cycle, position and node.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Event {
+    /// Cycle.
+    pub cycle: u32,
+    /// Position in the cycle.
+    pub at: At,
+    /// Node.
+    pub node: usize,
+    /// What.
+    pub kind: EventKind,
+}
+
+/// A pending alarm.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct Pending {
+    prio: u8,
+    reason: u8,
+    arg: u8,
+}
+
+fn prio(reason: u8) -> u8 {
+    match reason {
+        reason::FAILSAFE => 0,
+        reason::RECONFIG => 1,
+        reason::IRQ1 => 2,
+        _ => 3,
+    }
+}
+
+/// State of one node at the end of a cycle.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NodeState {
+    /// Switchbox mode for the next cycle.
+    pub mode: Mode,
+    /// Not killed.
+    pub up: bool,
+    /// In failsafe (terminal).
+    pub failsafe: bool,
+    /// The node knows the ring is wrapped (last valid header, or itself).
+    pub rw: bool,
+    /// Armed: has seen its first valid frame.
+    pub armed: bool,
+    /// Consecutive cycles without a valid frame at INPUT.
+    pub no_frame: u32,
+    /// Words with a parity/code error seen at INPUT (cumulative).
+    pub perr: u32,
+    /// Cycles without a valid frame at INPUT, after arming (cumulative).
+    pub ferr: u32,
+    /// Alive-check failures (cumulative; masters).
+    pub aerr: u32,
+    /// Secondary test failures (cumulative; special master).
+    pub serr: u32,
+    /// HOP value this node put in the header this cycle (SM: HOP returned).
+    pub hop: Option<u16>,
+    /// Masters: the data memory (real-time database).
+    pub db: Vec<u16>,
+    /// Actuators: the output register.
+    pub output: u16,
+    /// The node's Alive flip-flop (value used this cycle).
+    pub toggle: bool,
+    last_alive: Vec<Option<bool>>,
+    alive_lost: Vec<bool>,
+    prev_home_alarm: bool,
+    pending: BTreeSet<Pending>,
+}
+
+/// The ring.
+#[derive(Debug, Clone)]
+pub struct Ring {
+    /// Configuration.
+    pub cfg: Config,
+    /// Node states.
+    pub nodes: Vec<NodeState>,
+    /// Cycle to run next.
+    pub cycle: u32,
+    /// Broken fibres.
+    pub broken: BTreeSet<Fibre>,
+    /// Cycle in which each currently repaired-but-unused link was repaired.
+    repaired: Vec<Option<u32>>,
+    /// Special master's return store (next cycle's words).
+    store: Vec<Slot>,
+    /// Words the special master emitted this cycle (alarm retransmit rule).
+    emitted: Vec<Slot>,
+    /// RWC of the last returned header.
+    returned_rwc: bool,
+}
+
+/// Everything the model observed in one cycle.
+#[derive(Debug, Clone)]
+pub struct CycleRecord {
+    /// Cycle number.
+    pub cycle: u32,
+    /// Content of every fibre: P0..P(n-1), then S0..S(n-1).
+    pub fibres: Vec<Carry>,
+    /// Node states at the end of the cycle.
+    pub nodes: Vec<NodeState>,
+    /// Events, in order.
+    pub events: Vec<Event>,
+    /// Value each slot's writer produced this cycle.
+    pub produced: Vec<u16>,
+    /// Processing path this cycle (node indices, SM first).
+    pub path: Vec<usize>,
+}
+
+fn splitmix(mut x: u64) -> u64 {
+    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = x;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// A sensor's value in a cycle (docs/scenarios.md, stimulus).
+pub fn sensor_value(cfg: &Config, slot: usize, cycle: u32) -> u16 {
+    if let Some(v) = cfg
+        .values
+        .get(&slot)
+        .and_then(|m| m.range(..=cycle).next_back())
+    {
+        return *v.1;
+    }
+    match cfg.generator {
+        Generator::Counter => ((slot as u32).wrapping_mul(0x0101).wrapping_add(cycle) & 0xffff) as u16,
+        Generator::Random => {
+            (splitmix(cfg.seed ^ splitmix(((slot as u64) << 32) | cycle as u64)) & 0xffff) as u16
+        }
+        Generator::Explicit => 0,
+    }
+}
+
+impl Ring {
+    /// A ring in its power-up state (all switchboxes N, memories zero).
+    pub fn new(cfg: Config) -> Ring {
+        let n = cfg.nodes.len();
+        let s = cfg.slots;
+        let nodes = cfg
+            .nodes
+            .iter()
+            .map(|nc| NodeState {
+                mode: Mode::N,
+                up: true,
+                failsafe: false,
+                rw: false,
+                armed: false,
+                no_frame: 0,
+                perr: 0,
+                ferr: 0,
+                aerr: 0,
+                serr: 0,
+                hop: None,
+                db: if nc.kind.is_master() { vec![0; s] } else { vec![] },
+                output: 0,
+                toggle: false,
+                last_alive: vec![None; if nc.kind.is_master() { s } else { 0 }],
+                alive_lost: vec![false; if nc.kind.is_master() { s } else { 0 }],
+                prev_home_alarm: false,
+                pending: BTreeSet::new(),
+            })
+            .collect();
+        Ring {
+            nodes,
+            cycle: 0,
+            broken: BTreeSet::new(),
+            repaired: vec![None; n],
+            store: vec![Slot::Void; s],
+            emitted: vec![Slot::Void; s],
+            returned_rwc: false,
+            cfg,
+        }
+    }
+
+    fn n(&self) -> usize {
+        self.cfg.nodes.len()
+    }
+
+    /// Fibre leaving node `k` at port `p` (PO or SO).
+    pub fn out_fibre(&self, k: usize, p: Port) -> Fibre {
+        let n = self.n();
+        match p {
+            Port::Po => Fibre::P(k),
+            Port::So => Fibre::S((k + n - 1) % n),
+            _ => unreachable!("inputs have no outgoing fibre"),
+        }
+    }
+
+    /// Fibre entering node `k` at port `p` (PI or SI).
+    pub fn in_fibre(&self, k: usize, p: Port) -> Fibre {
+        let n = self.n();
+        match p {
+            Port::Pi => Fibre::P((k + n - 1) % n),
+            Port::Si => Fibre::S(k),
+            _ => unreachable!("outputs have no incoming fibre"),
+        }
+    }
+
+    /// Sender node and port of a fibre.
+    pub fn src(&self, f: Fibre) -> (usize, Port) {
+        let n = self.n();
+        match f {
+            Fibre::P(k) => (k, Port::Po),
+            Fibre::S(k) => ((k + 1) % n, Port::So),
+        }
+    }
+
+    /// Receiver node and port of a fibre.
+    pub fn dst(&self, f: Fibre) -> (usize, Port) {
+        let n = self.n();
+        match f {
+            Fibre::P(k) => ((k + 1) % n, Port::Pi),
+            Fibre::S(k) => (k, Port::Si),
+        }
+    }
+
+    fn fibre_index(&self, f: Fibre) -> usize {
+        match f {
+            Fibre::P(k) => k,
+            Fibre::S(k) => self.n() + k,
+        }
+    }
+
+    /// Light on a fibre at the start of the cycle (static carrier view).
+    fn lit(&self, f: Fibre) -> bool {
+        !self.broken.contains(&f) && self.nodes[self.src(f).0].up
+    }
+
+    /// A fibre carries TST: its sender is wrapped and this is its BSS.
+    fn carries_tst(&self, f: Fibre) -> bool {
+        let (k, p) = self.src(f);
+        self.lit(f) && self.nodes[k].mode != Mode::N && table1(self.nodes[k].mode).3 == p
+    }
+
+    fn event(&self, ev: &mut Vec<Event>, cycle: u32, at: At, node: usize, kind: EventKind) {
+        ev.push(Event {
+            cycle,
+            at,
+            node,
+            kind,
+        });
+    }
+
+    fn enter_failsafe(&mut self, ev: &mut Vec<Event>, k: usize, at: At, cause: FsCause) {
+        if !self.nodes[k].failsafe {
+            self.nodes[k].failsafe = true;
+            let c = self.cycle;
+            self.event(ev, c, at, k, EventKind::Failsafe(cause));
+        }
+    }
+
+    /// Runs one cycle and returns what happened.
+    pub fn step(&mut self) -> CycleRecord {
+        let c = self.cycle;
+        let n = self.n();
+        let s_count = self.cfg.slots;
+        let mut ev = Vec::new();
+
+        // 1. Host writes and interrupt requests land before the cycle.
+        for &(wc, node, slot, data) in &self.cfg.host_writes {
+            if wc == c {
+                self.nodes[node].db[slot] = data;
+            }
+        }
+        for &(qc, node, line) in &self.cfg.irqs.clone() {
+            if qc == c {
+                let r = match line {
+                    IrqLine::Irq1 => reason::IRQ1,
+                    IrqLine::Irq2 => reason::IRQ2,
+                    IrqLine::Failsafe => reason::FAILSAFE,
+                };
+                self.nodes[node].pending.insert(Pending {
+                    prio: prio(r),
+                    reason: r,
+                    arg: 0,
+                });
+            }
+        }
+        // 2. Faults of this cycle.
+        let faults: Vec<Fault> = self
+            .cfg
+            .faults
+            .iter()
+            .filter(|(fc, _)| *fc == c)
+            .map(|(_, f)| *f)
+            .collect();
+        let mut cut_fibre: Vec<(Fibre, usize)> = vec![];
+        let mut cut_node: Vec<(usize, usize)> = vec![];
+        for f in &faults {
+            match *f {
+                Fault::Break { fibre, slot: None } => {
+                    self.broken.insert(fibre);
+                }
+                Fault::Break { fibre, slot: Some(s) } => cut_fibre.push((fibre, s)),
+                Fault::Kill { node, slot: None } => self.nodes[node].up = false,
+                Fault::Kill { node, slot: Some(s) } => cut_node.push((node, s)),
+                _ => {}
+            }
+        }
+        let flips: Vec<(Fibre, FlipTarget, u32)> = faults
+            .iter()
+            .filter_map(|f| match *f {
+                Fault::Flip { fibre, target, bit } => Some((fibre, target, bit)),
+                _ => None,
+            })
+            .collect();
+        let produced: Vec<u16> = (0..s_count).map(|s| self.source_value(s, c)).collect();
+
+        let mut fibres: Vec<Carry> = Vec::with_capacity(2 * n);
+        for k in 0..n {
+            fibres.push(if self.lit(Fibre::P(k)) { Carry::Idle } else { Carry::Silent });
+        }
+        for k in 0..n {
+            fibres.push(if self.lit(Fibre::S(k)) { Carry::Idle } else { Carry::Silent });
+        }
+        let mut got_frame = vec![false; n];
+        let mut path = vec![];
+
+        // 3. The data frame.
+        let sm = self.cfg.sm;
+        let sm_bsr_data;
+        {
+            let hdr = Header {
+                fs: self.nodes[sm].failsafe,
+                rwc: self.nodes[sm].mode != Mode::N,
+                rwp: self.returned_rwc,
+                cyc: (c & 7) as u8,
+                hop: 0,
+            };
+            let mut frame = Frame {
+                hdr: HeaderRx::Ok(hdr),
+                words: self.store.clone(),
+            };
+            if !self.nodes[sm].failsafe {
+                for s in 0..s_count {
+                    self.write_slot(sm, s, &mut frame.words[s], &mut ev);
+                }
+            }
+            self.emitted = frame.words.clone();
+            path.push(sm);
+            let mut bsr_data = false;
+            let mut fib = self.out_fibre(sm, table1(self.nodes[sm].mode).1);
+            let mut returned = None;
+            for _hop in 0..4 * n + 4 {
+                if !self.lit(fib) {
+                    break;
+                }
+                if let Some(&(_, s)) = cut_fibre.iter().find(|(f, _)| *f == fib) {
+                    truncate(&mut frame, s);
+                }
+                self.apply_flips(&mut frame, fib, &flips);
+                let fi = self.fibre_index(fib);
+                fibres[fi] = Carry::Data(frame.clone());
+                let (k, port) = self.dst(fib);
+                if !self.nodes[k].up {
+                    break;
+                }
+                let (inp, out, bsr, bss) = table1(self.nodes[k].mode);
+                if port == inp {
+                    if k == sm {
+                        returned = Some(frame.clone());
+                        break;
+                    }
+                    path.push(k);
+                    got_frame[k] = self.process(k, &mut frame, &mut ev);
+                    if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
+                        truncate(&mut frame, s);
+                    }
+                    fib = self.out_fibre(k, out);
+                } else if port == bsr && self.nodes[k].mode == Mode::N {
+                    if k == sm {
+                        bsr_data = true;
+                    }
+                    if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
+                        truncate(&mut frame, s);
+                    }
+                    fib = self.out_fibre(k, bss);
+                } else {
+                    break;
+                }
+            }
+            sm_bsr_data = bsr_data;
+            got_frame[sm] = self.sm_return(returned, &mut ev);
+        }
+
+        // 4. The secondary test frame.
+        if self.nodes[sm].mode == Mode::N && !sm_bsr_data {
+            let mut ok = true;
+            let mut lost = false;
+            let mut back = false;
+            let mut fib = self.out_fibre(sm, Port::So);
+            for _ in 0..n + 1 {
+                if !self.lit(fib) || cut_fibre.iter().any(|(f, _)| *f == fib) {
+                    break;
+                }
+                for &(ff, t, _) in &flips {
+                    if ff == fib {
+                        match t {
+                            FlipTarget::Cs => lost = true,
+                            FlipTarget::H0 | FlipTarget::H1 => ok = false,
+                            FlipTarget::Slot(_) => {}
+                        }
+                    }
+                }
+                if lost {
+                    break;
+                }
+                let fi = self.fibre_index(fib);
+                fibres[fi] = Carry::Sec { ok };
+                let (k, port) = self.dst(fib);
+                if !self.nodes[k].up || port != Port::Si || self.nodes[k].mode != Mode::N {
+                    break;
+                }
+                if cut_node.iter().any(|(nd, _)| *nd == k) {
+                    break;
+                }
+                if k == sm {
+                    back = true;
+                    break;
+                }
+                fib = self.out_fibre(k, Port::So);
+            }
+            if !(back && ok) {
+                self.nodes[sm].serr += 1;
+                self.event(&mut ev, c, At::End, sm, EventKind::SecFail);
+            }
+        }
+
+        // 5. Link tests from wrapped nodes.
+        for k in 0..n {
+            if !self.nodes[k].up || self.nodes[k].mode == Mode::N {
+                continue;
+            }
+            let (_, _, bsr, bss) = table1(self.nodes[k].mode);
+            let f = self.out_fibre(k, bss);
+            if self.lit(f) {
+                let ack = self.carries_tst(self.in_fibre(k, bsr));
+                let fi = self.fibre_index(f);
+                fibres[fi] = Carry::Tst { ack };
+            }
+        }
+
+        // 6. Frame supervision and the CS timeout.
+        for (k, &got) in got_frame.iter().enumerate() {
+            if !self.nodes[k].up {
+                continue;
+            }
+            if got {
+                self.nodes[k].armed = true;
+                self.nodes[k].no_frame = 0;
+            } else if self.nodes[k].armed {
+                self.nodes[k].ferr += 1;
+                self.nodes[k].no_frame += 1;
+                if self.nodes[k].no_frame >= 2 {
+                    self.enter_failsafe(&mut ev, k, At::End, FsCause::Timeout);
+                }
+            }
+        }
+        // Faults that take effect at the end of the cycle.
+        for (f, _) in &cut_fibre {
+            self.broken.insert(*f);
+        }
+        for (k, _) in &cut_node {
+            self.nodes[*k].up = false;
+        }
+        for f in &faults {
+            if let Fault::Repair { fibre, .. } = *f {
+                self.broken.remove(&fibre);
+                let link = match fibre {
+                    Fibre::P(k) | Fibre::S(k) => k,
+                };
+                self.repaired[link] = Some(c);
+            }
+        }
+        // 7. Stream controllers and switchboxes.
+        self.resolve(&mut ev);
+        for nd in self.nodes.iter_mut() {
+            nd.toggle = !nd.toggle;
+        }
+        self.cycle += 1;
+        CycleRecord {
+            cycle: c,
+            fibres,
+            nodes: self.nodes.clone(),
+            events: ev,
+            produced,
+            path,
+        }
+    }
+
+    /// Value the writer of slot `s` produces in cycle `c` (without alarms).
+    fn source_value(&self, s: usize, c: u32) -> u16 {
+        match self.cfg.slot_kind[s] {
+            SlotKind::Sensor => sensor_value(&self.cfg, s, c),
+            _ => self.nodes[self.cfg.writer[s]].db[s],
+        }
+    }
+
+    fn apply_flips(&self, frame: &mut Frame, fib: Fibre, flips: &[(Fibre, FlipTarget, u32)]) {
+        let ext = self.cfg.ext;
+        for &(f, t, bit) in flips {
+            if f != fib {
+                continue;
+            }
+            match t {
+                FlipTarget::Cs => frame.hdr = HeaderRx::NoCs,
+                FlipTarget::H0 | FlipTarget::H1 => {
+                    if let HeaderRx::Ok(h) = frame.hdr {
+                        let (w, other) = if t == FlipTarget::H0 {
+                            (h.h0(self.cfg.slots), h.h1())
+                        } else {
+                            (h.h1(), h.h0(self.cfg.slots))
+                        };
+                        // A flip of a header word's last bit also hits the
+                        // next word's first bit.
+                        let next = if t == FlipTarget::H0 {
+                            Some(other)
+                        } else {
+                            match frame.words.first() {
+                                Some(Slot::Data(w)) => Some(*w),
+                                _ => None,
+                            }
+                        };
+                        let (r, r2) = line::flip_and_decode(&w, next.as_ref(), ext, bit as usize);
+                        if t == FlipTarget::H1 {
+                            if let (Some(r2), Some(first)) = (r2, frame.words.first_mut()) {
+                                *first = rx_slot(r2);
+                            }
+                        }
+                        let (h0, h1) = match (t, r, r2) {
+                            (FlipTarget::H0, Rx::Ok(a), Some(Rx::Ok(b))) => (a, b),
+                            (FlipTarget::H1, Rx::Ok(b), _) => (other, b),
+                            _ => {
+                                frame.hdr = HeaderRx::Bad;
+                                continue;
+                            }
+                        };
+                        frame.hdr = match Header::decode(&h0, &h1, self.cfg.slots) {
+                            Some(h) => HeaderRx::Ok(h),
+                            None => HeaderRx::Bad,
+                        };
+                    }
+                }
+                FlipTarget::Slot(s) => {
+                    let Slot::Data(w) = frame.words[s] else {
+                        if frame.words[s] == Slot::Void {
+                            frame.words[s] = Slot::Bad;
+                        }
+                        continue;
+                    };
+                    let next = match frame.words.get(s + 1) {
+                        Some(Slot::Data(nw)) => Some(*nw),
+                        _ => None,
+                    };
+                    let (r, r2) = line::flip_and_decode(&w, next.as_ref(), ext, bit as usize);
+                    frame.words[s] = rx_slot(r);
+                    if let Some(r2) = r2 {
+                        frame.words[s + 1] = rx_slot(r2);
+                    }
+                }
+            }
+        }
+    }
+
+    /// A node's processing of the frame at its INPUT. Returns whether the
+    /// header was valid.
+    fn process(&mut self, k: usize, frame: &mut Frame, ev: &mut Vec<Event>) -> bool {
+        let HeaderRx::Ok(mut h) = frame.hdr else {
+            // Frame ignored; forwarded as it is. Words are still decoded.
+            self.count_errors(k, frame);
+            return false;
+        };
+        if h.fs {
+            self.enter_failsafe(ev, k, At::Hdr, FsCause::Header);
+        }
+        let wrapped = self.nodes[k].mode != Mode::N;
+        self.nodes[k].rw = h.rwc || h.rwp || wrapped;
+        h.hop = (h.hop + 1) & 0xfff;
+        h.rwc |= wrapped;
+        self.nodes[k].hop = Some(h.hop);
+        if self.nodes[k].failsafe {
+            h.fs = true;
+            frame.hdr = HeaderRx::Ok(h);
+            self.count_errors(k, frame);
+            return true;
+        }
+        frame.hdr = HeaderRx::Ok(h);
+        for s in 0..frame.words.len() {
+            self.read_slot(k, s, frame.words[s], ev);
+            if !self.nodes[k].failsafe {
+                self.write_slot(k, s, &mut frame.words[s], ev);
+            }
+        }
+        true
+    }
+
+    fn count_errors(&mut self, k: usize, frame: &Frame) {
+        let bad = frame.words.iter().filter(|w| **w == Slot::Bad).count() as u32;
+        self.nodes[k].perr += bad;
+    }
+
+    /// The special master receives the returning frame.
+    fn sm_return(&mut self, returned: Option<Frame>, ev: &mut Vec<Event>) -> bool {
+        let sm = self.cfg.sm;
+        let s_count = self.cfg.slots;
+        let Some(frame) = returned else {
+            self.store = vec![Slot::Void; s_count];
+            self.nodes[sm].hop = None;
+            return false;
+        };
+        let HeaderRx::Ok(h) = frame.hdr else {
+            self.count_errors(sm, &frame);
+            self.store = vec![Slot::Void; s_count];
+            self.nodes[sm].hop = None;
+            return false;
+        };
+        self.returned_rwc = h.rwc;
+        self.nodes[sm].hop = Some(h.hop);
+        self.nodes[sm].rw = h.rwc || h.rwp || self.nodes[sm].mode != Mode::N;
+        if h.fs {
+            self.enter_failsafe(ev, sm, At::Hdr, FsCause::Header);
+        }
+        let failsafe = self.nodes[sm].failsafe;
+        if failsafe {
+            self.count_errors(sm, &frame);
+        }
+        for s in 0..s_count {
+            let w = frame.words[s];
+            if !failsafe {
+                self.read_slot(sm, s, w, ev);
+            }
+            self.store[s] = match w {
+                Slot::Data(d) => {
+                    // An alarm word is retransmitted once: if it comes back
+                    // unchanged from a retransmission, its owner did not
+                    // replace it, so it is not sent a third time.
+                    if d.alarm && self.emitted[s] == w {
+                        Slot::Void
+                    } else {
+                        w
+                    }
+                }
+                _ => Slot::Void,
+            };
+        }
+        true
+    }
+
+    fn read_slot(&mut self, k: usize, s: usize, w: Slot, ev: &mut Vec<Event>) {
+        let c = self.cycle;
+        let ext = self.cfg.ext;
+        let kind = self.cfg.nodes[k].kind;
+        match w {
+            Slot::Bad => {
+                self.nodes[k].perr += 1;
+            }
+            Slot::Data(d) => {
+                if kind == Kind::Actuator && s == self.cfg.nodes[k].address && (ext || !d.alarm) {
+                    self.nodes[k].output = d.data;
+                }
+                if kind.is_master() {
+                    let own = self.cfg.writer[s] == k;
+                    let (is_alarm, r, arg) = if ext {
+                        (d.alarm, d.reason, (d.data & 0xff) as u8)
+                    } else {
+                        (d.alarm, (d.data >> 12) as u8, (d.data & 0xff) as u8)
+                    };
+                    // A master never re-delivers its own alarm coming back.
+                    if is_alarm && s != self.cfg.nodes[k].address {
+                        self.event(ev, c, At::Slot(s), k, EventKind::Irq { slot: s, reason: r, arg });
+                        if r == reason::FAILSAFE {
+                            self.enter_failsafe(ev, k, At::Slot(s), FsCause::Request);
+                        }
+                    }
+                    if !own && (ext || !d.alarm) {
+                        self.nodes[k].db[s] = d.data;
+                    }
+                    let check = self.cfg.nodes[k].alive_check
+                        && !matches!(self.cfg.slot_kind[s], SlotKind::Local if own);
+                    if check {
+                        if let Some(prev) = self.nodes[k].last_alive[s] {
+                            if prev == d.alive {
+                                self.nodes[k].aerr += 1;
+                                if !self.nodes[k].alive_lost[s] {
+                                    self.nodes[k].alive_lost[s] = true;
+                                    self.event(ev, c, At::Slot(s), k, EventKind::AliveLost { slot: s });
+                                }
+                            } else if self.nodes[k].alive_lost[s] {
+                                self.nodes[k].alive_lost[s] = false;
+                                self.event(ev, c, At::Slot(s), k, EventKind::AliveRestored { slot: s });
+                            }
+                        }
+                        self.nodes[k].last_alive[s] = Some(d.alive);
+                    }
+                }
+            }
+            Slot::Void | Slot::Missing => {
+                if kind.is_master() {
+                    self.nodes[k].last_alive[s] = None;
+                }
+            }
+        }
+    }
+
+    /// Picks the alarm to send in the home slot this cycle, if any.
+    fn take_alarm(&mut self, k: usize, ev: &mut Vec<Event>) -> Option<Pending> {
+        let ext = self.cfg.ext;
+        let nd = &mut self.nodes[k];
+        let p = if !nd.pending.is_empty() && (ext || !nd.prev_home_alarm) {
+            nd.pending.pop_first()
+        } else {
+            None
+        };
+        nd.prev_home_alarm = p.is_some() && !ext;
+        if let Some(p) = p {
+            let c = self.cycle;
+            let at = At::Slot(self.cfg.nodes[k].address);
+            self.event(ev, c, at, k, EventKind::AlarmTx { reason: p.reason, arg: p.arg });
+            if p.reason == reason::FAILSAFE {
+                self.enter_failsafe(ev, k, at, FsCause::Request);
+            }
+        }
+        p
+    }
+
+    fn alarm_word(&self, k: usize, p: Pending, data: u16) -> Word {
+        if self.cfg.ext {
+            Word {
+                data,
+                alive: self.nodes[k].toggle,
+                alarm: true,
+                reason: p.reason,
+            }
+        } else {
+            Word {
+                data: ((p.reason as u16) << 12) | p.arg as u16,
+                alive: self.nodes[k].toggle,
+                alarm: true,
+                reason: 0,
+            }
+        }
+    }
+
+    fn write_slot(&mut self, k: usize, s: usize, w: &mut Slot, ev: &mut Vec<Event>) {
+        if *w == Slot::Missing {
+            return;
+        }
+        let cfgn = &self.cfg.nodes[k];
+        let home = s == cfgn.address;
+        let c = self.cycle;
+        match (cfgn.kind, self.cfg.slot_kind[s]) {
+            (Kind::Sensor, SlotKind::Sensor) if home => {
+                let v = sensor_value(&self.cfg, s, c);
+                *w = Slot::Data(self.fresh_word(k, v, ev, true));
+            }
+            (Kind::Master | Kind::SpecialMaster, SlotKind::Local) if self.cfg.writer[s] == k => {
+                let v = self.nodes[k].db[s];
+                *w = Slot::Data(self.fresh_word(k, v, ev, home));
+            }
+            (Kind::Master | Kind::SpecialMaster, SlotKind::Act { .. }) if self.cfg.writer[s] == k => {
+                if let Slot::Data(d) = w {
+                    if self.cfg.ext || !d.alarm {
+                        d.data = self.nodes[k].db[s];
+                    }
+                }
+            }
+            (Kind::Actuator, SlotKind::Act { actuator }) if actuator == k => {
+                let v = self.nodes[k].output;
+                *w = Slot::Data(self.fresh_word(k, v, ev, true));
+            }
+            _ => {}
+        }
+    }
+
+    fn fresh_word(&mut self, k: usize, v: u16, ev: &mut Vec<Event>, home: bool) -> Word {
+        if home {
+            if let Some(p) = self.take_alarm(k, ev) {
+                return self.alarm_word(k, p, v);
+            }
+        }
+        Word {
+            data: v,
+            alive: self.nodes[k].toggle,
+            alarm: false,
+            reason: 0,
+        }
+    }
+
+    /// End-of-cycle resolution of every stream controller into switchbox
+    /// changes, failsafe entries and reintegrations (protocol §9, §10, §12).
+    fn resolve(&mut self, ev: &mut Vec<Event>) {
+        let n = self.n();
+        let c = self.cycle;
+        let start: Vec<Mode> = self.nodes.iter().map(|x| x.mode).collect();
+        let rw: Vec<bool> = self.nodes.iter().map(|x| x.rw || x.mode != Mode::N).collect();
+        let mut changed = true;
+        let mut guard = 0;
+        while changed && guard < 4 * n + 4 {
+            changed = false;
+            guard += 1;
+            for k in 0..n {
+                if !self.nodes[k].up {
+                    continue;
+                }
+                let mode = self.nodes[k].mode;
+                let (inp, _, bsr, _) = table1(mode);
+                let fi = self.in_fibre(k, inp);
+                let fb = self.in_fibre(k, bsr);
+                let in_fail = !self.lit(fi) || (mode == Mode::N && self.carries_tst(fi));
+                let bsr_fail = !self.lit(fb) || (mode == Mode::N && self.carries_tst(fb));
+                let new = match mode {
+                    Mode::N if in_fail => Some(Mode::Wu),
+                    Mode::N if bsr_fail => Some(Mode::Wd),
+                    _ => None,
+                };
+                let second = match mode {
+                    Mode::N => (in_fail && bsr_fail) || ((in_fail || bsr_fail) && rw[k]),
+                    _ => in_fail,
+                };
+                if second && start[k] == mode {
+                    self.enter_failsafe(ev, k, At::End, FsCause::SecondFault);
+                }
+                if let Some(m) = new {
+                    self.nodes[k].mode = m;
+                    changed = true;
+                }
+            }
+        }
+        // Reintegration of links repaired before this cycle.
+        for link in 0..n {
+            let Some(rc) = self.repaired[link] else { continue };
+            if rc >= c {
+                continue;
+            }
+            let a = link;
+            let b = (link + 1) % n;
+            let ok = self.lit(Fibre::P(link))
+                && self.lit(Fibre::S(link))
+                && self.nodes[a].mode == Mode::Wd
+                && self.nodes[b].mode == Mode::Wu
+                && !self.nodes[a].failsafe
+                && !self.nodes[b].failsafe;
+            if ok {
+                self.nodes[a].mode = Mode::N;
+                self.nodes[b].mode = Mode::N;
+            }
+            if ok || (self.lit(Fibre::P(link)) && self.lit(Fibre::S(link))) {
+                self.repaired[link] = None;
+            }
+        }
+        for k in 0..n {
+            let (from, to) = (start[k], self.nodes[k].mode);
+            if from != to {
+                self.event(ev, c, At::End, k, EventKind::Mode { from, to });
+                let nd = &mut self.nodes[k];
+                nd.pending.retain(|p| p.reason != reason::RECONFIG);
+                nd.pending.insert(Pending {
+                    prio: prio(reason::RECONFIG),
+                    reason: reason::RECONFIG,
+                    arg: to.code() as u8,
+                });
+            }
+        }
+    }
+}
+
+fn truncate(frame: &mut Frame, from: usize) {
+    for w in frame.words.iter_mut().skip(from) {
+        *w = Slot::Missing;
+    }
+}
+
+fn rx_slot(r: Rx) -> Slot {
+    match r {
+        Rx::Ok(w) => Slot::Data(w),
+        Rx::Void => Slot::Void,
+        Rx::Bad => Slot::Bad,
+    }
+}
+
+/// Recovery windows the spec promises (docs/protocol.md §13): for each
+/// structural fault at cycle c, cycles c..=c+2 (break, kill) or c..=c+3
+/// (repair). Bit flips have none. Returned as (first, last, description),
+/// clipped to the run.
+pub fn windows(cfg: &Config) -> Vec<(u32, u32, String)> {
+    let last = cfg.cycles.saturating_sub(1);
+    cfg.faults
+        .iter()
+        .filter_map(|(c, f)| {
+            let len = match f {
+                Fault::Break { .. } | Fault::Kill { .. } => 2,
+                Fault::Repair { .. } => 3,
+                Fault::Flip { .. } => return None,
+            };
+            Some((*c, (*c + len).min(last), f.to_string()))
+        })
+        .collect()
+}
+
+/// Runs a whole scenario.
+pub fn run(cfg: &Config) -> Vec<CycleRecord> {
+    let mut ring = Ring::new(cfg.clone());
+    (0..cfg.cycles).map(|_| ring.step()).collect()
+}
