@@ -22,6 +22,18 @@ fn delivered(cfg: &Config, r: &CycleRecord) -> Vec<u16> {
     v
 }
 
+fn reason_name(r: u8) -> String {
+    match r {
+        1 => "IRQ1".into(),
+        2 => "IRQ2".into(),
+        3 => "FAILSAFE".into(),
+        4 => "RECONFIG(N)".into(),
+        5 => "RECONFIG(WU)".into(),
+        6 => "RECONFIG(WD)".into(),
+        r => format!("reason {r}"),
+    }
+}
+
 pub fn run() -> Result<(), String> {
     let cfg = config::load("tb-data/demo_8_break.toml", SCENARIO).map_err(|e| e.to_string())?;
     let mut clean = cfg.clone();
@@ -70,11 +82,14 @@ pub fn run() -> Result<(), String> {
                     from.name(),
                     to.name()
                 ),
-                EventKind::AlarmTx { reason, arg } => {
-                    format!("sends alarm reason {reason} arg {arg} in its slot")
+                EventKind::AlarmTx { reason } => {
+                    format!("sends alarm {} in its slot", reason_name(*reason))
                 }
-                EventKind::Irq { slot, reason, arg } => {
-                    format!("raises host interrupt: alarm reason {reason} arg {arg} from slot {slot}")
+                EventKind::Irq { slot, reason } => {
+                    format!(
+                        "raises host interrupt: {} from slot {slot}",
+                        reason_name(*reason)
+                    )
                 }
                 EventKind::Failsafe(c) => format!("enters FAILSAFE ({c})"),
                 EventKind::AliveLost { slot } => format!("alive lost in slot {slot}"),

@@ -62,7 +62,11 @@ fn write_atomic(path: &Path, data: &str) -> Result<(), String> {
     let fname = path
         .file_name()
         .ok_or_else(|| format!("error: --output {} is not a file name", path.display()))?;
-    let tmp = dir.join(format!(".{}.{}.tmp", fname.to_string_lossy(), std::process::id()));
+    let tmp = dir.join(format!(
+        ".{}.{}.tmp",
+        fname.to_string_lossy(),
+        std::process::id()
+    ));
     std::fs::write(&tmp, data).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         format!("error: cannot write {}: {e}", path.display())
@@ -99,9 +103,17 @@ fn check(path: &Path, line_rate: Option<f64>) -> Result<(), String> {
     println!(
         "frame      {} slots, {} words, {} bit times{}",
         cfg.slots,
-        if cfg.ext { "30-bit (extended alarm)" } else { "25-bit" },
+        if cfg.ext {
+            "30-bit (extended alarm)"
+        } else {
+            "25-bit"
+        },
         cfg.frame_bits(),
-        if cfg.ext { ", alarms carried beside the data" } else { "" }
+        if cfg.ext {
+            ", alarms carried beside the data"
+        } else {
+            ""
+        }
     );
     println!(
         "cycle      {} bit times = {:.2} us at {} Mbit/s (minimum legal period {})",

@@ -5,8 +5,8 @@
 use crate::line::word_bits;
 use crate::scenario::*;
 use std::collections::BTreeMap;
-use toml::Spanned;
 use std::fmt;
+use toml::Spanned;
 
 /// Bits of the start delimiter JK.
 pub const JK_BITS: u32 = 10;
@@ -247,7 +247,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
     let n = raw.node.len();
     if n < 2 {
         return Err(m.error(
-            None,
+            raw.node.first().map(|x| x.kind.span().start),
             format!("node: a ring needs at least 2 [[node]] entries, found {n}"),
         ));
     }
@@ -270,8 +270,8 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         .collect();
     if sms.is_empty() {
         return Err(m.error(
-            None,
-            "node: the ring has no special master; exactly one node needs kind = \"special_master\"",
+            Some(raw.node[0].kind.span().start),
+            "node[0].kind: the ring has no special master; exactly one node needs kind = \"special_master\"",
         ));
     }
     if sms.len() > 1 {
@@ -292,7 +292,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         if v >= MAX_SLOTS {
             Err(m.at(
                 s,
-                format!("{field} = {v} is out of range: slots are 0..{}", MAX_SLOTS - 1),
+                format!(
+                    "{field} = {v} is out of range: slots are 0..{}",
+                    MAX_SLOTS - 1
+                ),
             ))
         } else {
             Ok(v)
@@ -359,7 +362,13 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         };
         match kind {
             Kind::Sensor => {
-                claim(address, &rn.address, i, format!("node[{i}].address"), &mut writer)?;
+                claim(
+                    address,
+                    &rn.address,
+                    i,
+                    format!("node[{i}].address"),
+                    &mut writer,
+                )?;
                 kinds.insert(address, SlotKind::Sensor);
             }
             Kind::Actuator => {
@@ -425,7 +434,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
     if let Some(gap) = (0..slots).find(|s| !writer.contains_key(s)) {
         return Err(m.error(
             None,
-            format!("node: slot {gap} has no writer; slots must be numbered 0..{} without gaps", slots - 1),
+            format!(
+                "node: slot {gap} has no writer; slots must be numbered 0..{} without gaps",
+                slots - 1
+            ),
         ));
     }
     let ext = raw.frame.alarm_bits;
@@ -481,10 +493,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
     let check_node = |d: &Spanned<u32>, field: String| -> Result<usize, ScenarioError> {
         let v = *d.get_ref() as usize;
         if v >= n {
-            Err(m.at(
-                d,
-                format!("{field} = {v}: the ring has nodes 0..{}", n - 1),
-            ))
+            Err(m.at(d, format!("{field} = {v}: the ring has nodes 0..{}", n - 1)))
         } else {
             Ok(v)
         }
@@ -509,7 +518,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         if !nodes[nd].kind.is_master() {
             return Err(m.at(
                 &w.node,
-                format!("host_write[{j}].node = {nd} is a {}, only masters have a host", nodes[nd].kind.name()),
+                format!(
+                    "host_write[{j}].node = {nd} is a {}, only masters have a host",
+                    nodes[nd].kind.name()
+                ),
             ));
         }
         let s = *w.slot.get_ref() as usize;
@@ -571,7 +583,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                     if v >= slots {
                         Err(m.at(
                             s,
-                            format!("fault[{j}].slot = {v}: the frame has slots 0..{}", slots - 1),
+                            format!(
+                                "fault[{j}].slot = {v}: the frame has slots 0..{}",
+                                slots - 1
+                            ),
                         ))
                     } else {
                         Ok(Some(v))
@@ -640,11 +655,24 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                     }
                 };
                 let b = f.bit.as_ref().expect("checked");
-                let max = if target == FlipTarget::Cs { JK_BITS } else { word_bits(ext) };
+                let max = if target == FlipTarget::Cs {
+                    JK_BITS
+                } else {
+                    word_bits(ext)
+                };
                 if *b.get_ref() >= max {
                     return Err(m.at(
                         b,
-                        format!("fault[{j}].bit = {}: a {} has line bits 0..{}", b.get_ref(), if target == FlipTarget::Cs { "start delimiter" } else { "word" }, max - 1),
+                        format!(
+                            "fault[{j}].bit = {}: a {} has line bits 0..{}",
+                            b.get_ref(),
+                            if target == FlipTarget::Cs {
+                                "start delimiter"
+                            } else {
+                                "word"
+                            },
+                            max - 1
+                        ),
                     ));
                 }
                 Fault::Flip {
@@ -675,4 +703,3 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         faults,
     })
 }
-

@@ -97,7 +97,9 @@ impl Header {
     /// Header word 0 for a frame of `slots` slots.
     pub fn h0(&self, slots: usize) -> Word {
         Word {
-            data: ((self.fs as u16) << 13) | ((self.rwc as u16) << 12) | ((slots as u16 - 1) & 0xfff),
+            data: ((self.fs as u16) << 13)
+                | ((self.rwc as u16) << 12)
+                | ((slots as u16 - 1) & 0xfff),
             ..Word::default()
         }
     }
@@ -196,8 +198,16 @@ pub mod reason {
     pub const IRQ2: u8 = 2;
     /// Failsafe request.
     pub const FAILSAFE: u8 = 3;
-    /// Switchbox reconfiguration; argument = new mode code.
-    pub const RECONFIG: u8 = 4;
+    /// Switchbox reconfiguration to mode N (reintegrated).
+    pub const RECONFIG_N: u8 = 4;
+    /// Switchbox reconfiguration to mode WU (Table 1 row 2).
+    pub const RECONFIG_WU: u8 = 5;
+    /// Switchbox reconfiguration to mode WD (Table 1 row 3).
+    pub const RECONFIG_WD: u8 = 6;
+    /// The RECONFIG reason for a new mode.
+    pub fn reconfig(m: super::Mode) -> u8 {
+        RECONFIG_N + m.code() as u8
+    }
 }
 
 /// Where in a cycle an event happened.
@@ -237,8 +247,6 @@ pub enum EventKind {
     AlarmTx {
         /// Reason code.
         reason: u8,
-        /// Argument (RECONFIG: mode code).
-        arg: u8,
     },
     /// A master received an alarm and raised it to its host.
     Irq {
@@ -246,8 +254,6 @@ pub enum EventKind {
         slot: usize,
         /// Reason code.
         reason: u8,
-        /// Argument.
-        arg: u8,
     },
     /// A master saw the Alive bit of a slot stop toggling.
     AliveLost {
@@ -281,13 +287,12 @@ pub struct Event {
 struct Pending {
     prio: u8,
     reason: u8,
-    arg: u8,
 }
 
 fn prio(reason: u8) -> u8 {
     match reason {
         reason::FAILSAFE => 0,
-        reason::RECONFIG => 1,
+        reason::RECONFIG_N..=reason::RECONFIG_WD => 1,
         reason::IRQ1 => 2,
         _ => 3,
     }
@@ -326,6 +331,7 @@ pub struct NodeState {
     pub toggle: bool,
     last_alive: Vec<Option<bool>>,
     alive_lost: Vec<bool>,
+    act_alive: Vec<bool>,
     prev_home_alarm: bool,
     pending: BTreeSet<Pending>,
 }
@@ -386,7 +392,9 @@ pub fn sensor_value(cfg: &Config, slot: usize, cycle: u32) -> u16 {
         return *v.1;
     }
     match cfg.generator {
-        Generator::Counter => ((slot as u32).wrapping_mul(0x0101).wrapping_add(cycle) & 0xffff) as u16,
+        Generator::Counter => {
+            ((slot as u32).wrapping_mul(0x0101).wrapping_add(cycle) & 0xffff) as u16
+        }
         Generator::Random => {
             (splitmix(cfg.seed ^ splitmix(((slot as u64) << 32) | cycle as u64)) & 0xffff) as u16
         }
@@ -414,11 +422,16 @@ impl Ring {
                 aerr: 0,
                 serr: 0,
                 hop: None,
-                db: if nc.kind.is_master() { vec![0; s] } else { vec![] },
+                db: if nc.kind.is_master() {
+                    vec![0; s]
+                } else {
+                    vec![]
+                },
                 output: 0,
                 toggle: false,
                 last_alive: vec![None; if nc.kind.is_master() { s } else { 0 }],
                 alive_lost: vec![false; if nc.kind.is_master() { s } else { 0 }],
+                act_alive: vec![false; if nc.kind.is_master() { s } else { 0 }],
                 prev_home_alarm: false,
                 pending: BTreeSet::new(),
             })
@@ -535,7 +548,6 @@ impl Ring {
                 self.nodes[node].pending.insert(Pending {
                     prio: prio(r),
                     reason: r,
-                    arg: 0,
                 });
             }
         }
@@ -554,9 +566,15 @@ impl Ring {
                 Fault::Break { fibre, slot: None } => {
                     self.broken.insert(fibre);
                 }
-                Fault::Break { fibre, slot: Some(s) } => cut_fibre.push((fibre, s)),
+                Fault::Break {
+                    fibre,
+                    slot: Some(s),
+                } => cut_fibre.push((fibre, s)),
                 Fault::Kill { node, slot: None } => self.nodes[node].up = false,
-                Fault::Kill { node, slot: Some(s) } => cut_node.push((node, s)),
+                Fault::Kill {
+                    node,
+                    slot: Some(s),
+                } => cut_node.push((node, s)),
                 _ => {}
             }
         }
@@ -571,10 +589,18 @@ impl Ring {
 
         let mut fibres: Vec<Carry> = Vec::with_capacity(2 * n);
         for k in 0..n {
-            fibres.push(if self.lit(Fibre::P(k)) { Carry::Idle } else { Carry::Silent });
+            fibres.push(if self.lit(Fibre::P(k)) {
+                Carry::Idle
+            } else {
+                Carry::Silent
+            });
         }
         for k in 0..n {
-            fibres.push(if self.lit(Fibre::S(k)) { Carry::Idle } else { Carry::Silent });
+            fibres.push(if self.lit(Fibre::S(k)) {
+                Carry::Idle
+            } else {
+                Carry::Silent
+            });
         }
         let mut got_frame = vec![false; n];
         let mut path = vec![];
@@ -707,6 +733,11 @@ impl Ring {
         for (k, &got) in got_frame.iter().enumerate() {
             if !self.nodes[k].up {
                 continue;
+            }
+            if !got {
+                // No frame read this cycle: the next Alive check has nothing
+                // to compare with.
+                self.nodes[k].last_alive.iter_mut().for_each(|a| *a = None);
             }
             if got {
                 self.nodes[k].armed = true;
@@ -916,6 +947,9 @@ impl Ring {
         match w {
             Slot::Bad => {
                 self.nodes[k].perr += 1;
+                if kind.is_master() {
+                    self.nodes[k].last_alive[s] = None;
+                }
             }
             Slot::Data(d) => {
                 if kind == Kind::Actuator && s == self.cfg.nodes[k].address && (ext || !d.alarm) {
@@ -923,14 +957,14 @@ impl Ring {
                 }
                 if kind.is_master() {
                     let own = self.cfg.writer[s] == k;
-                    let (is_alarm, r, arg) = if ext {
-                        (d.alarm, d.reason, (d.data & 0xff) as u8)
+                    let (is_alarm, r) = if ext {
+                        (d.alarm, d.reason)
                     } else {
-                        (d.alarm, (d.data >> 12) as u8, (d.data & 0xff) as u8)
+                        (d.alarm, (d.data >> 12) as u8)
                     };
                     // A master never re-delivers its own alarm coming back.
                     if is_alarm && s != self.cfg.nodes[k].address {
-                        self.event(ev, c, At::Slot(s), k, EventKind::Irq { slot: s, reason: r, arg });
+                        self.event(ev, c, At::Slot(s), k, EventKind::Irq { slot: s, reason: r });
                         if r == reason::FAILSAFE {
                             self.enter_failsafe(ev, k, At::Slot(s), FsCause::Request);
                         }
@@ -946,11 +980,23 @@ impl Ring {
                                 self.nodes[k].aerr += 1;
                                 if !self.nodes[k].alive_lost[s] {
                                     self.nodes[k].alive_lost[s] = true;
-                                    self.event(ev, c, At::Slot(s), k, EventKind::AliveLost { slot: s });
+                                    self.event(
+                                        ev,
+                                        c,
+                                        At::Slot(s),
+                                        k,
+                                        EventKind::AliveLost { slot: s },
+                                    );
                                 }
                             } else if self.nodes[k].alive_lost[s] {
                                 self.nodes[k].alive_lost[s] = false;
-                                self.event(ev, c, At::Slot(s), k, EventKind::AliveRestored { slot: s });
+                                self.event(
+                                    ev,
+                                    c,
+                                    At::Slot(s),
+                                    k,
+                                    EventKind::AliveRestored { slot: s },
+                                );
                             }
                         }
                         self.nodes[k].last_alive[s] = Some(d.alive);
@@ -978,7 +1024,7 @@ impl Ring {
         if let Some(p) = p {
             let c = self.cycle;
             let at = At::Slot(self.cfg.nodes[k].address);
-            self.event(ev, c, at, k, EventKind::AlarmTx { reason: p.reason, arg: p.arg });
+            self.event(ev, c, at, k, EventKind::AlarmTx { reason: p.reason });
             if p.reason == reason::FAILSAFE {
                 self.enter_failsafe(ev, k, at, FsCause::Request);
             }
@@ -996,7 +1042,7 @@ impl Ring {
             }
         } else {
             Word {
-                data: ((p.reason as u16) << 12) | p.arg as u16,
+                data: (p.reason as u16) << 12,
                 alive: self.nodes[k].toggle,
                 alarm: true,
                 reason: 0,
@@ -1020,11 +1066,31 @@ impl Ring {
                 let v = self.nodes[k].db[s];
                 *w = Slot::Data(self.fresh_word(k, v, ev, home));
             }
-            (Kind::Master | Kind::SpecialMaster, SlotKind::Act { .. }) if self.cfg.writer[s] == k => {
-                if let Slot::Data(d) = w {
-                    if self.cfg.ext || !d.alarm {
-                        d.data = self.nodes[k].db[s];
+            (Kind::Master | Kind::SpecialMaster, SlotKind::Act { .. })
+                if self.cfg.writer[s] == k =>
+            {
+                // Data goes in, the actuator's Alive passes through. A VOID
+                // (slot not returned last cycle) is regenerated with the
+                // Alive the actuator would toggle to, so a dead actuator's
+                // Alive still stops toggling and every master notices.
+                match w {
+                    Slot::Data(d) => {
+                        self.nodes[k].act_alive[s] = d.alive;
+                        if self.cfg.ext || !d.alarm {
+                            d.data = self.nodes[k].db[s];
+                        }
                     }
+                    Slot::Void => {
+                        let alive = !self.nodes[k].act_alive[s];
+                        self.nodes[k].act_alive[s] = alive;
+                        *w = Slot::Data(Word {
+                            data: self.nodes[k].db[s],
+                            alive,
+                            alarm: false,
+                            reason: 0,
+                        });
+                    }
+                    _ => {}
                 }
             }
             (Kind::Actuator, SlotKind::Act { actuator }) if actuator == k => {
@@ -1055,7 +1121,11 @@ impl Ring {
         let n = self.n();
         let c = self.cycle;
         let start: Vec<Mode> = self.nodes.iter().map(|x| x.mode).collect();
-        let rw: Vec<bool> = self.nodes.iter().map(|x| x.rw || x.mode != Mode::N).collect();
+        let rw: Vec<bool> = self
+            .nodes
+            .iter()
+            .map(|x| x.rw || x.mode != Mode::N)
+            .collect();
         let mut changed = true;
         let mut guard = 0;
         while changed && guard < 4 * n + 4 {
@@ -1091,7 +1161,9 @@ impl Ring {
         }
         // Reintegration of links repaired before this cycle.
         for link in 0..n {
-            let Some(rc) = self.repaired[link] else { continue };
+            let Some(rc) = self.repaired[link] else {
+                continue;
+            };
             if rc >= c {
                 continue;
             }
@@ -1111,16 +1183,17 @@ impl Ring {
                 self.repaired[link] = None;
             }
         }
-        for k in 0..n {
-            let (from, to) = (start[k], self.nodes[k].mode);
+        for (k, &from) in start.iter().enumerate() {
+            let to = self.nodes[k].mode;
             if from != to {
                 self.event(ev, c, At::End, k, EventKind::Mode { from, to });
                 let nd = &mut self.nodes[k];
-                nd.pending.retain(|p| p.reason != reason::RECONFIG);
+                nd.pending
+                    .retain(|p| prio(p.reason) != prio(reason::RECONFIG_N));
+                let r = reason::reconfig(to);
                 nd.pending.insert(Pending {
-                    prio: prio(reason::RECONFIG),
-                    reason: reason::RECONFIG,
-                    arg: to.code() as u8,
+                    prio: prio(r),
+                    reason: r,
                 });
             }
         }

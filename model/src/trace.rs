@@ -37,8 +37,8 @@ fn event_text(k: &EventKind) -> String {
     match k {
         EventKind::Mode { from, to } => format!("mode {}>{}", from.name(), to.name()),
         EventKind::Failsafe(c) => format!("failsafe {c}"),
-        EventKind::AlarmTx { reason, arg } => format!("alarm-tx r{reason} a{arg}"),
-        EventKind::Irq { slot, reason, arg } => format!("irq s{slot} r{reason} a{arg}"),
+        EventKind::AlarmTx { reason } => format!("alarm-tx r{reason}"),
+        EventKind::Irq { slot, reason } => format!("irq s{slot} r{reason}"),
         EventKind::AliveLost { slot } => format!("alive-lost s{slot}"),
         EventKind::AliveRestored { slot } => format!("alive-ok s{slot}"),
         EventKind::SecFail => "sec-fail".to_string(),
@@ -79,7 +79,11 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
         let src: Vec<String> = r.produced.iter().map(|v| format!("{v:04x}")).collect();
         let _ = writeln!(o, " src {}", src.join(" "));
         for (i, f) in r.fibres.iter().enumerate() {
-            let name = if i < n { format!("P{i}") } else { format!("S{}", i - n) };
+            let name = if i < n {
+                format!("P{i}")
+            } else {
+                format!("S{}", i - n)
+            };
             let _ = write!(o, " {name} ");
             match f {
                 Carry::Silent => o.push('-'),
@@ -142,7 +146,13 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
                 At::Slot(s) => format!("s{s}"),
                 At::End => "end".to_string(),
             };
-            let _ = writeln!(o, " ev {} {at} node{} {}", e.cycle, e.node, event_text(&e.kind));
+            let _ = writeln!(
+                o,
+                " ev {} {at} node{} {}",
+                e.cycle,
+                e.node,
+                event_text(&e.kind)
+            );
         }
     }
     o

@@ -1,0 +1,203 @@
+//! The `merkur` tool end to end: help, check, trace, demo, and clear errors
+//! on every broken scenario in tb-data/bad/ with nothing half-written left.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn merkur(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_merkur"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("merkur runs")
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+fn text(o: &[u8]) -> String {
+    String::from_utf8_lossy(o).to_string()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("merkur-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn every_subcommand_has_help() {
+    for sub in [
+        vec!["--help"],
+        vec!["check", "--help"],
+        vec!["trace", "--help"],
+        vec!["demo", "--help"],
+    ] {
+        let o = merkur(&sub);
+        assert!(o.status.success(), "{sub:?}");
+        assert!(
+            text(&o.stdout).contains("Usage"),
+            "{sub:?}: {}",
+            text(&o.stdout)
+        );
+    }
+    // Only working subcommands exist.
+    let o = merkur(&["--help"]);
+    let help = text(&o.stdout);
+    for absent in ["simulate", "synth", "verilog"] {
+        assert!(
+            !help.contains(absent),
+            "{absent} is listed but does not exist yet"
+        );
+    }
+}
+
+#[test]
+fn check_summarises_every_starter_scenario() {
+    for e in std::fs::read_dir(root().join("tb-data")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let o = merkur(&["check", p.to_str().unwrap()]);
+        let out = text(&o.stdout);
+        assert!(o.status.success(), "{}: {}", p.display(), text(&o.stderr));
+        assert!(out.contains("frame ") && out.ends_with("ok\n"), "{out}");
+    }
+    // 100 nodes x 16 bits: 2560-bit frame, 51.6 us at 50 Mbit/s (BRIEF §6: <= 60 us).
+    let o = merkur(&["check", "tb-data/ring100.toml"]);
+    let out = text(&o.stdout);
+    assert!(
+        out.contains("100 slots, 25-bit words, 2560 bit times"),
+        "{out}"
+    );
+    assert!(
+        out.contains("2580 bit times = 51.60 us at 50 Mbit/s"),
+        "{out}"
+    );
+    let o = merkur(&["check", "tb-data/ring100.toml", "--line-rate", "100"]);
+    assert!(text(&o.stdout).contains("= 25.80 us at 100 Mbit/s"));
+    let o = merkur(&["check", "tb-data/ring100.toml", "--line-rate=-3"]);
+    assert!(!o.status.success());
+    assert!(
+        text(&o.stderr).contains("--line-rate -3 must be above 0"),
+        "{}",
+        text(&o.stderr)
+    );
+}
+
+#[test]
+fn trace_writes_the_committed_golden_trace() {
+    let d = scratch("trace");
+    let out = d.join("ring8_kill.trace");
+    let o = merkur(&[
+        "trace",
+        "tb-data/ring8_kill.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let got = std::fs::read_to_string(&out).unwrap();
+    let want = std::fs::read_to_string(root().join("tb-data/ring8_kill.trace")).unwrap();
+    assert_eq!(got, want);
+    let _ = std::fs::remove_dir_all(d);
+}
+
+fn expectations(p: &Path) -> (String, String) {
+    let t = std::fs::read_to_string(p).unwrap();
+    let mut lines = t.lines();
+    let expect = lines
+        .next()
+        .and_then(|l| l.strip_prefix("# expect: "))
+        .expect("# expect:")
+        .to_string();
+    let at = lines
+        .next()
+        .and_then(|l| l.strip_prefix("# at: "))
+        .expect("# at:")
+        .to_string();
+    (expect, at)
+}
+
+#[test]
+fn broken_scenarios_get_clear_errors_and_no_output() {
+    let d = scratch("bad");
+    let mut n = 0;
+    for e in std::fs::read_dir(root().join("tb-data/bad")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        n += 1;
+        let (expect, at) = expectations(&p);
+        let rel = format!("tb-data/bad/{}", p.file_name().unwrap().to_string_lossy());
+        for cmd in ["check", "trace"] {
+            let out = d.join("out.trace");
+            let mut args = vec![cmd, rel.as_str()];
+            if cmd == "trace" {
+                args.extend(["-o", out.to_str().unwrap()]);
+            }
+            let o = merkur(&args);
+            let err = text(&o.stderr);
+            assert_eq!(
+                o.status.code(),
+                Some(1),
+                "{rel}: {cmd} must fail cleanly\n{err}"
+            );
+            assert!(!err.contains("panicked"), "{rel}: panic\n{err}");
+            assert!(
+                err.contains(&expect),
+                "{rel}: expected {expect:?} in\n{err}"
+            );
+            assert!(
+                err.contains(&format!("{rel}:{at}")),
+                "{rel}: expected position {at} in\n{err}"
+            );
+            assert!(!out.exists(), "{rel}: {cmd} left {} behind", out.display());
+            let leftovers = std::fs::read_dir(&d).unwrap().count();
+            assert_eq!(leftovers, 0, "{rel}: temporary files left behind");
+        }
+    }
+    assert!(n >= 12, "broken-scenario corpus present");
+    let _ = std::fs::remove_dir_all(d);
+}
+
+#[test]
+fn missing_file_and_bad_arguments() {
+    let o = merkur(&["check", "no/such/file.toml"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o.stderr).contains("cannot read scenario no/such/file.toml"));
+    let o = merkur(&["frobnicate"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("unrecognized subcommand"));
+    // Output into a directory that does not exist: error, nothing written.
+    let o = merkur(&[
+        "trace",
+        "tb-data/ring3.toml",
+        "-o",
+        "/nonexistent-dir/x.trace",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o.stderr).contains("cannot write /nonexistent-dir/x.trace"));
+}
+
+#[test]
+fn demo_explains_the_line_break() {
+    let o = merkur(&["demo"]);
+    let out = text(&o.stdout);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(out.contains("fault: cycle 4: break P3 at s2"), "{out}");
+    assert!(out.contains("node 4 at end: switchbox N -> WU"), "{out}");
+    assert!(out.contains("node 3 at end: switchbox N -> WD"), "{out}");
+    assert!(
+        out.contains(
+            "every memory equals the fault-free ring's from cycle 7 on; 0 nodes in failsafe"
+        ),
+        "{out}"
+    );
+}

@@ -1,0 +1,70 @@
+//! Drift guard: every committed golden trace in tb-data/ is regenerated from
+//! its scenario and must match byte for byte. A change to the model that
+//! changes a trace must regenerate it on purpose:
+//! `cargo run -p merkur -- trace tb-data/X.toml -o tb-data/X.trace`.
+
+use merkur_model::{config, ring, trace};
+use std::path::PathBuf;
+
+fn tb_data() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tb-data")
+}
+
+#[test]
+fn committed_traces_match_the_model() {
+    let mut scenarios: Vec<PathBuf> = std::fs::read_dir(tb_data())
+        .expect("tb-data exists")
+        .map(|e| e.expect("dir entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    scenarios.sort();
+    assert!(scenarios.len() >= 12, "starter set present: {scenarios:?}");
+    let mut drift = vec![];
+    for sc in &scenarios {
+        let text = std::fs::read_to_string(sc).unwrap();
+        let name = format!("tb-data/{}", sc.file_name().unwrap().to_string_lossy());
+        let cfg = config::load(&name, &text).unwrap_or_else(|e| panic!("{e}"));
+        let got = trace::render(&cfg, &text, &ring::run(&cfg));
+        let tr = sc.with_extension("trace");
+        let want = std::fs::read_to_string(&tr)
+            .unwrap_or_else(|_| panic!("{} has no committed trace {}", sc.display(), tr.display()));
+        if got != want {
+            let line = got
+                .lines()
+                .zip(want.lines())
+                .position(|(a, b)| a != b)
+                .map(|i| i + 1)
+                .unwrap_or(got.lines().count().min(want.lines().count()) + 1);
+            drift.push(format!(
+                "{} (first difference at line {line})",
+                tr.display()
+            ));
+        }
+    }
+    assert!(
+        drift.is_empty(),
+        "golden traces drifted from the model:\n{}",
+        drift.join("\n")
+    );
+}
+
+#[test]
+fn trace_header_names_version_hash_and_seed() {
+    let text = std::fs::read_to_string(tb_data().join("ring3.toml")).unwrap();
+    let cfg = config::load("ring3.toml", &text).unwrap();
+    let t = trace::render(&cfg, &text, &ring::run(&cfg));
+    assert!(t.contains(&format!(
+        "# generator merkur-model {}\n",
+        env!("CARGO_PKG_VERSION")
+    )));
+    assert!(t.contains(&format!(
+        "# scenario-sha256 {}\n",
+        trace::scenario_hash(&text)
+    )));
+    assert!(t.contains("# seed 3\n"));
+    // sha256 of "abc", the FIPS 180-2 test vector.
+    assert_eq!(
+        trace::scenario_hash("abc"),
+        "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
+    );
+}

@@ -1,0 +1,52 @@
+//! The pinned tools of scripts/tools.lock are installed at exactly those
+//! versions and run. `./run test` installs them first when missing.
+
+use merkur_testbenches::pinned_tools;
+use std::process::Command;
+
+#[test]
+fn pinned_tools_are_installed_at_their_versions() {
+    let tools = pinned_tools().expect("tools.lock parses");
+    assert!(tools.len() >= 5, "tools.lock lists the five tools");
+    for t in &tools {
+        let out = Command::new("dpkg-query")
+            .args(["-W", "-f=${Version}", &t.package])
+            .output()
+            .unwrap_or_else(|e| {
+                panic!(
+                    "dpkg-query not runnable ({e}); install {} {} by hand",
+                    t.package, t.version
+                )
+            });
+        let got = String::from_utf8_lossy(&out.stdout).to_string();
+        assert_eq!(
+            got, t.version,
+            "package {} is at {got:?}, tools.lock pins {:?}: run scripts/install-tools.sh",
+            t.package, t.version
+        );
+    }
+}
+
+#[test]
+fn pinned_tools_run() {
+    for (cmd, arg, expect) in [
+        ("verilator", "--version", "Verilator 5.006"),
+        ("yosys", "-V", "Yosys 0.23"),
+        ("nextpnr-ice40", "--version", "nextpnr-ice40"),
+        ("iverilog", "-V", "Icarus Verilog version 11.0"),
+    ] {
+        let out = Command::new(cmd)
+            .arg(arg)
+            .output()
+            .unwrap_or_else(|e| panic!("{cmd} does not run: {e}"));
+        let text = format!(
+            "{}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(
+            text.contains(expect),
+            "{cmd} {arg} printed {text:?}, expected {expect:?}"
+        );
+    }
+}
