@@ -207,3 +207,23 @@ fn table1_rows_are_chosen_by_the_defective_port() {
         (Mode::Wd, Mode::Wu)
     );
 }
+
+#[test]
+fn a_4096_slot_frame_runs_and_4097_is_refused() {
+    let slots: Vec<String> = (2..4096).map(|s| s.to_string()).collect();
+    let text = format!(
+        "cycles = 3\n[[node]]\nkind = \"special_master\"\naddress = 0\nslots = [0]\n\n[[node]]\nkind = \"master\"\naddress = 1\nslots = [1, {}]\nppm = -1000\n\n[[host_write]]\ncycle = 0\nnode = 1\nslot = 4095\ndata = 0xfeed\n",
+        slots.join(", ")
+    );
+    let cfg = load(&text);
+    assert_eq!(cfg.slots, 4096);
+    assert_eq!(cfg.frame_bits(), 10 + 4098 * 25);
+    let r = ring::run(&cfg);
+    assert_eq!(r[2].nodes[0].db[4095], 0xfeed, "the SM holds slot 4095");
+    let bad = text.replace("slots = [1, ", "slots = [1, 4096, ");
+    let e = merkur_model::config::load("t.toml", &bad).unwrap_err();
+    assert!(
+        e.msg.contains("node[1].slots = 4096 is out of range"),
+        "{e}"
+    );
+}
