@@ -1,11 +1,19 @@
 //! # merkur-rtl
 //!
-//! The MERKUR hardware blocks in rust-hdl (pinned 0.46). Empty until issue 3
-//! (the slave node's blocks); it depends on `merkur-model` only for the
-//! protocol constants the RTL must share with the reference model.
+//! The MERKUR hardware blocks in rust-hdl (pinned 0.46), one file per block.
+//! Each block's doc comment gives its purpose, a port table (width, clock
+//! domain), its latency and a timing diagram. Protocol tables come from
+//! `merkur-model`, the one source of truth (docs/protocol.md).
+//!
+//! Port names carry their side: `i_*` inputs, `o_*` outputs; `clock` is the
+//! node's core clock.
+//!
+//! Blocks so far (issue 3 is in progress):
+//! - [`enc4b5b`]: symbol → 4B/5B code group
+//! - [`dec5b4b`]: code group → nibble / control flags
+//! - [`nrzi_tx`]: serializer with NRZI
 
-/// Re-export of the line-code constants the RTL encoders use.
-pub use merkur_model::line::{CODE_I, CODE_J, CODE_K, CODE_S, DATA_CODES};
-
-// rust-hdl is linked so the pinned version is built and checked in CI.
-pub use rust_hdl;
+pub mod dec5b4b;
+pub mod enc4b5b;
+pub mod nrzi_tx;
+pub mod verilog;

@@ -52,3 +52,34 @@ pub fn pinned_tools() -> Result<Vec<PinnedTool>, String> {
     }
     Ok(out)
 }
+
+pub mod verilator;
+
+/// A small seeded generator for stimulus (xorshift64*). Tests print the seed
+/// on failure; `MERKUR_SEED` overrides the default.
+pub struct Rng(u64);
+
+impl Rng {
+    /// From a seed (0 is mapped to a fixed non-zero state).
+    pub fn new(seed: u64) -> Rng {
+        Rng(seed ^ 0x9e37_79b9_7f4a_7c15 | 1)
+    }
+    /// The seed to use: `MERKUR_SEED` if set, else `default`.
+    pub fn seed(default: u64) -> u64 {
+        std::env::var("MERKUR_SEED")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(default)
+    }
+    /// Next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    /// Uniform in 0..n.
+    pub fn below(&mut self, n: u64) -> u64 {
+        self.next_u64() % n
+    }
+}
