@@ -9,10 +9,12 @@
 //! node's core clock.
 //!
 //! Blocks so far (issue 3 is in progress):
+//! - [`cdr`]: 4×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
 //! - [`nrzi_tx`]: serializer with NRZI
 
+pub mod cdr;
 pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod nrzi_tx;

@@ -14,6 +14,7 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
     vec![
         ("enc4b5b", block_verilog(crate::enc4b5b::Enc4b5b::default())),
         ("dec5b4b", block_verilog(crate::dec5b4b::Dec5b4b::default())),
+        ("cdr", block_verilog(crate::cdr::Cdr::default())),
         ("nrzi_tx", block_verilog(crate::nrzi_tx::NrziTx::default())),
     ]
 }

@@ -192,7 +192,9 @@ pub fn build_library(verilog: &str) -> Result<(PathBuf, Vec<Port>), String> {
     }
     // Build in a private temporary folder, then rename into place, so a
     // concurrent or interrupted build never leaves a half-built cache entry.
-    let tmp = cache_root().join(format!("{hash}.tmp{}", std::process::id()));
+    static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let tmp = cache_root().join(format!("{hash}.tmp{}-{n}", std::process::id()));
     let _ = std::fs::remove_dir_all(&tmp);
     std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
     std::fs::write(tmp.join("top.v"), verilog).map_err(|e| e.to_string())?;

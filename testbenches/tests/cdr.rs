@@ -1,0 +1,148 @@
+//! Clock and data recovery in Verilator: locks to a stream whose bit clock is
+//! off by up to ±2000 ppm from the receiver's (two nodes at ±1000 ppm), with
+//! random phase and edge jitter, and never slips a bit over 10^6 bits; loss
+//! of signal within 16 bit times of a dark line and never on a live one.
+
+use merkur_model::line::{nrzi_encode, push_group, DATA_CODES};
+use merkur_rtl::{cdr::Cdr, verilog::block_verilog};
+use merkur_testbenches::{verilator::Model, Rng};
+
+/// Line levels of `bits` NRZI bits of random data groups.
+fn line_levels(rng: &mut Rng, bits: usize) -> Vec<u8> {
+    let mut code = vec![];
+    while code.len() < bits {
+        push_group(&mut code, DATA_CODES[rng.below(16) as usize]);
+    }
+    code.truncate(bits);
+    let mut level = 0;
+    nrzi_encode(&code, &mut level)
+}
+
+/// Samples (4 per nominal bit) of a sender whose bit period is 4·(1+δ)
+/// samples, starting at phase `phase`, each bit boundary moved by uniform
+/// jitter in ±`jitter` samples.
+fn sample(levels: &[u8], delta: f64, phase: f64, jitter: f64, rng: &mut Rng) -> Vec<u8> {
+    let period = 4.0 * (1.0 + delta);
+    let bounds: Vec<f64> = (0..=levels.len())
+        .map(|k| {
+            let j = (rng.below(1 << 20) as f64 / (1u64 << 20) as f64 * 2.0 - 1.0) * jitter;
+            phase + k as f64 * period + j
+        })
+        .collect();
+    let end = bounds[levels.len()].floor() as usize;
+    let mut out = Vec::with_capacity(end);
+    let mut k = 0;
+    for n in 0..end {
+        let t = n as f64;
+        while k + 1 < levels.len() && t >= bounds[k + 1] {
+            k += 1;
+        }
+        out.push(if t < bounds[0] { 0 } else { levels[k] });
+    }
+    out
+}
+
+struct Run {
+    bits: Vec<u8>,
+    los_seen: bool,
+}
+
+fn run(m: &mut Model, samples: &[u8]) -> Run {
+    let (clk, s, v, b, los) = (
+        m.port("clock"),
+        m.port("i_samples"),
+        m.port("o_valid"),
+        m.port("o_bit"),
+        m.port("o_los"),
+    );
+    let mut bits = vec![];
+    let mut los_seen = false;
+    for pair in samples.chunks_exact(2) {
+        m.set(s, (pair[0] | pair[1] << 1) as u64);
+        m.tick(clk);
+        if m.get(v) == 1 {
+            bits.push(m.get(b) as u8);
+        }
+        los_seen |= m.get(los) == 1;
+    }
+    Run { bits, los_seen }
+}
+
+/// Finds where `got` (after skipping the first 16 bits) starts in `sent`.
+fn align(sent: &[u8], got: &[u8]) -> Option<(usize, usize)> {
+    let skip = 16;
+    (0..64).find_map(|off| {
+        let ok =
+            (0..256).all(|i| got.get(skip + i).is_some() && sent.get(off + i) == got.get(skip + i));
+        ok.then_some((off, skip))
+    })
+}
+
+#[test]
+fn locks_and_never_slips_at_2000_ppm_with_jitter() {
+    let seed = Rng::seed(0xcd5);
+    let mut m = Model::build(&block_verilog(Cdr::default())).unwrap();
+    for (delta_ppm, nbits) in [
+        (-2000.0, 1_000_000),
+        (2000.0, 1_000_000),
+        (-1000.0, 200_000),
+        (0.0, 200_000),
+        (1000.0, 200_000),
+    ] {
+        let mut rng = Rng::new(seed ^ (delta_ppm as i64 as u64));
+        let levels = line_levels(&mut rng, nbits);
+        let phase = rng.below(400) as f64 / 100.0;
+        let samples = sample(&levels, delta_ppm * 1e-6, phase, 0.45, &mut rng);
+        let r = run(&mut m, &samples);
+        let ctx = format!("seed {seed} (MERKUR_SEED), {delta_ppm} ppm, phase {phase}");
+        assert!(!r.los_seen, "{ctx}: loss of signal on a live line");
+        let (off, skip) = align(&levels, &r.bits).unwrap_or_else(|| panic!("{ctx}: never locked"));
+        let got = &r.bits[skip..];
+        let sent = &levels[off..];
+        let n = got.len().min(sent.len());
+        assert!(
+            n + off + skip + 8 >= nbits,
+            "{ctx}: recovered {} of {nbits} bits",
+            r.bits.len()
+        );
+        if let Some(i) = (0..n).find(|&i| got[i] != sent[i]) {
+            panic!(
+                "{ctx}: bit {} recovered wrong (slip or error) after {} good bits",
+                off + i,
+                i
+            );
+        }
+    }
+}
+
+#[test]
+fn loss_of_signal_within_16_bit_times() {
+    let seed = Rng::seed(0x105);
+    let mut rng = Rng::new(seed);
+    let mut m = Model::build(&block_verilog(Cdr::default())).unwrap();
+    let levels = line_levels(&mut rng, 2000);
+    let mut samples = sample(&levels, 0.0, 1.3, 0.2, &mut rng);
+    samples.truncate(samples.len() & !1);
+    let r = run(&mut m, &samples);
+    assert!(!r.los_seen, "seed {seed}: no loss of signal on a live line");
+    // Now the line goes dark (stays at its level).
+    let (clk, s, los) = (m.port("clock"), m.port("i_samples"), m.port("o_los"));
+    let last = *samples.last().unwrap() as u64;
+    let mut clocks = 0;
+    while m.get(los) == 0 {
+        m.set(s, last | last << 1);
+        m.tick(clk);
+        clocks += 1;
+        assert!(
+            clocks <= 40,
+            "seed {seed}: no loss of signal after {clocks} clocks"
+        );
+    }
+    // 16 bit times = 32 clocks, plus the register stage.
+    assert!(clocks >= 30, "loss of signal too early: {clocks} clocks");
+    // The next edge clears it.
+    m.set(s, (last ^ 1) | (last ^ 1) << 1);
+    m.tick(clk);
+    m.tick(clk);
+    assert_eq!(m.get(los), 0);
+}
