@@ -13,9 +13,11 @@
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
 //! - [`nrzi_tx`]: serializer with NRZI
+//! - [`rx_framer`]: NRZI decode, J K detection, group alignment
 
 pub mod cdr;
 pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod nrzi_tx;
+pub mod rx_framer;
 pub mod verilog;

@@ -16,6 +16,10 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ("dec5b4b", block_verilog(crate::dec5b4b::Dec5b4b::default())),
         ("cdr", block_verilog(crate::cdr::Cdr::default())),
         ("nrzi_tx", block_verilog(crate::nrzi_tx::NrziTx::default())),
+        (
+            "rx_framer",
+            block_verilog(crate::rx_framer::RxFramer::new()),
+        ),
     ]
 }
 
