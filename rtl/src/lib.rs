@@ -14,10 +14,12 @@
 //! - [`dec5b4b`]: code group → nibble / control flags
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
+//! - [`rx_word`]: word assembly, parity check, header check, slot counter
 
 pub mod cdr;
 pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod nrzi_tx;
 pub mod rx_framer;
+pub mod rx_word;
 pub mod verilog;

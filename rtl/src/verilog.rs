@@ -20,6 +20,11 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             "rx_framer",
             block_verilog(crate::rx_framer::RxFramer::new()),
         ),
+        ("rx_word", block_verilog(crate::rx_word::RxWord::new(false))),
+        (
+            "rx_word_ext",
+            block_verilog(crate::rx_word::RxWord::new(true)),
+        ),
     ]
 }
 
