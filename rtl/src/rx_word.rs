@@ -266,12 +266,10 @@ impl Logic for RxWord {
                     // H0: type and slot count.
                     self.wcount.d.next = 1.into();
                     self.ptype.d.next = self.w_data.val().get_bits::<2>(14);
-                    if !self.w_ok.val() | self.nib.val().get_bit(1) {
-                        self.hdr_bad_r.d.next = true;
-                        self.end_r.d.next = true;
-                        self.active.d.next = false;
-                    } else if (self.w_data.val().get_bits::<2>(14) == 0)
-                        & (self.w_data.val().get_bits::<12>(0) != self.i_slots_m1.val())
+                    if !self.w_ok.val()
+                        | self.nib.val().get_bit(1)
+                        | ((self.w_data.val().get_bits::<2>(14) == 0)
+                            & (self.w_data.val().get_bits::<12>(0) != self.i_slots_m1.val()))
                     {
                         self.hdr_bad_r.d.next = true;
                         self.end_r.d.next = true;
