@@ -12,6 +12,7 @@
 //! - [`cdr`]: 4×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
+//! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
@@ -19,6 +20,7 @@
 pub mod cdr;
 pub mod dec5b4b;
 pub mod enc4b5b;
+pub mod monitor;
 pub mod nrzi_tx;
 pub mod rx_framer;
 pub mod rx_word;

@@ -25,6 +25,10 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             "rx_word_ext",
             block_verilog(crate::rx_word::RxWord::new(true)),
         ),
+        (
+            "monitor",
+            block_verilog(crate::monitor::Monitor::new(false)),
+        ),
     ]
 }
 
