@@ -34,7 +34,7 @@ fn encode_packet(
     flips: &mut Vec<usize>,
     rng: &mut Rng,
 ) -> Option<Packet> {
-    if fr.words.iter().any(|w| *w == Slot::Missing) {
+    if fr.words.contains(&Slot::Missing) {
         return None;
     }
     let jk = code.len();
