@@ -99,29 +99,52 @@ pub struct Word {
     pub reason: u8,
 }
 
-/// Flags nibble (last nibble of every word): `{P_A, ALIVE, ALARM, P_B}`.
-fn flags_nibble(alive: bool, alarm: bool, pa: bool, pb: bool) -> u8 {
-    ((pa as u8) << 3) | ((alive as u8) << 2) | ((alarm as u8) << 1) | pb as u8
-}
-
-/// Nibbles of a word in transmission order (least significant data nibble
-/// first, then the reason nibble if `ext`, then the flags nibble) with both
-/// odd parities filled in.
+/// Nibbles of a word in transmission order (protocol §4), with both odd
+/// parities filled in:
+///
+/// ```text
+/// N0 = {ALARM, ALIVE, D1, D0}   first on the line: a node knows what the
+///                                word is before it must forward the rest
+/// [ext: REASON]                  extended-alarm variant only
+/// D[5:2], D[9:6], D[13:10]
+/// last = {PA, D15, D14, PB}      parities last: fixed up by a node that
+///                                changed bits on the way
+/// ```
 pub fn word_nibbles(w: &Word, ext: bool) -> Vec<u8> {
-    let mut n: Vec<u8> = (0..4).map(|i| ((w.data >> (4 * i)) & 0xf) as u8).collect();
+    let d = w.data;
+    let mut n: Vec<u8> = vec![((w.alarm as u8) << 3) | ((w.alive as u8) << 2) | (d & 3) as u8];
     if ext {
         n.push(w.reason & 0xf);
     }
+    n.push(((d >> 2) & 0xf) as u8);
+    n.push(((d >> 6) & 0xf) as u8);
+    n.push(((d >> 10) & 0xf) as u8);
+    n.push((((d >> 14) & 3) as u8) << 1);
     // Parity A: odd over bits 3,2 of every nibble; parity B: odd over bits
-    // 2,1,0 of every nibble. Compute with parity bits 0, then fix up.
-    n.push(flags_nibble(w.alive, w.alarm, false, false));
+    // 2,1,0 of every nibble. Computed with both parity bits 0, then set.
     let ones_a: u32 = n.iter().map(|x| (x & 0b1100).count_ones()).sum();
     let ones_b: u32 = n.iter().map(|x| (x & 0b0111).count_ones()).sum();
-    let pa = ones_a % 2 == 0;
-    let pb = ones_b % 2 == 0;
     let last = n.len() - 1;
-    n[last] = flags_nibble(w.alive, w.alarm, pa, pb);
+    n[last] |= ((ones_a % 2 == 0) as u8) << 3 | (ones_b % 2 == 0) as u8;
     n
+}
+
+/// The word a nibble sequence (in transmission order) carries; parity is not
+/// checked here.
+pub fn word_from_nibbles(n: &[u8], ext: bool) -> Word {
+    let k = if ext { 2 } else { 1 };
+    let last = n[n.len() - 1];
+    let data = (n[0] & 3) as u16
+        | (n[k] as u16) << 2
+        | (n[k + 1] as u16) << 6
+        | (n[k + 2] as u16) << 10
+        | (((last >> 1) & 3) as u16) << 14;
+    Word {
+        data,
+        alive: n[0] & 0b0100 != 0,
+        alarm: n[0] & 0b1000 != 0,
+        reason: if ext { n[1] } else { 0 },
+    }
 }
 
 /// Both parities of a received nibble sequence hold.
@@ -183,14 +206,7 @@ pub fn decode_word(code_bits: &[u8], ext: bool) -> Rx {
     if nibs.len() != groups || !parity_ok(&nibs) {
         return Rx::Bad;
     }
-    let data = (0..4).fold(0u16, |a, i| a | ((nibs[i] as u16) << (4 * i)));
-    let f = nibs[groups - 1];
-    Rx::Ok(Word {
-        data,
-        alive: f & 0b0100 != 0,
-        alarm: f & 0b0010 != 0,
-        reason: if ext { nibs[4] } else { 0 },
-    })
+    Rx::Ok(word_from_nibbles(&nibs, ext))
 }
 
 /// Sends `w` (followed by `next`, or an idle group when it is the last word)

@@ -1094,8 +1094,21 @@ impl Ring {
                 }
             }
             (Kind::Actuator, SlotKind::Act { actuator }) if actuator == k => {
+                // The actuator decides from the word's first group (protocol
+                // §4, §7): an alarm of its own replaces the word; a bad word
+                // passes on bad (its data has already been forwarded);
+                // anything else leaves as {output register, its Alive}.
                 let v = self.nodes[k].output;
-                *w = Slot::Data(self.fresh_word(k, v, ev, true));
+                if let Some(p) = self.take_alarm(k, ev) {
+                    *w = Slot::Data(self.alarm_word(k, p, v));
+                } else if *w != Slot::Bad {
+                    *w = Slot::Data(Word {
+                        data: v,
+                        alive: self.nodes[k].toggle,
+                        alarm: false,
+                        reason: 0,
+                    });
+                }
             }
             _ => {}
         }

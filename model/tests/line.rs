@@ -34,34 +34,39 @@ fn nrzi_hand_vector() {
 
 #[test]
 fn word_hand_vectors() {
-    // All-zero word: parity A over bits 3,2 sees no ones -> P_A = 1;
-    // parity B over bits 2,1,0 sees none -> P_B = 1. Flags 1001.
+    // All-zero word: parity A over bits 3,2 sees no ones -> PA = 1;
+    // parity B over bits 2,1,0 sees none -> PB = 1. Last nibble 1001.
     let z = Word::default();
     assert_eq!(word_nibbles(&z, false), vec![0, 0, 0, 0, 0b1001]);
-    // 0x1234 with Alive: nibbles sent 4,3,2,1 (least significant first).
-    // A: 4(0100)->1, 3->0, 2->0, 1->0, Alive->1: 2 ones, even -> P_A = 1.
-    // B: 4->1, 3(011)->2, 2->1, 1->1, Alive->1: 6 ones, even -> P_B = 1.
+    // 0x1234 with Alive (protocol §4 layout, worked by hand):
+    // N0 = {ALARM 0, ALIVE 1, D1 0, D0 0} = 0100; D[5:2] = 1101; D[9:6] = 1000;
+    // D[13:10] = 0100; last = {PA, D15 0, D14 0, PB}.
+    // A (bits 3,2): 1 + 2 + 1 + 1 = 5, odd -> PA = 0.
+    // B (bits 2,1,0): 1 + 2 + 0 + 1 = 4, even -> PB = 1. Last = 0001.
     let w = Word {
         data: 0x1234,
         alive: true,
         alarm: false,
         reason: 0,
     };
-    assert_eq!(word_nibbles(&w, false), vec![4, 3, 2, 1, 0b1101]);
+    assert_eq!(word_nibbles(&w, false), vec![0x4, 0xD, 0x8, 0x4, 0x1]);
     let bits = word_code_bits(&w, false);
     let s: String = bits.iter().map(|b| char::from(b'0' + b)).collect();
-    assert_eq!(s, "01010101011010001001".to_string() + "11011");
+    assert_eq!(
+        s,
+        "01010".to_string() + "11011" + "10010" + "01010" + "01001"
+    );
     assert_eq!(decode_word(&bits, false), Rx::Ok(w));
-    // Alarm word, reason 4 (RECONFIG) to mode 2: data 0x4002, Alarm set.
-    // A: 2->0,0,0, 4(0100)->1, flags: Alarm bit1 not in A -> 1 one, odd -> P_A = 0.
-    // B: 2(010)->1, 4(100)->1, Alarm->1: 3, odd -> P_B = 0.
+    // RECONFIG(WU) alarm, reason 5 in D[15:12]: data 0x5000, Alarm set.
+    // N0 = 1000; D[5:2] = 0; D[9:6] = 0; D[13:10] = 0100; D15 0, D14 1.
+    // A: 1 + 0 + 0 + 1 + 0 = 2, even -> PA = 1. B: 0 + 0 + 0 + 1 + 1 = 2 -> PB = 1.
     let a = Word {
-        data: 0x4002,
+        data: 0x5000,
         alive: false,
         alarm: true,
         reason: 0,
     };
-    assert_eq!(word_nibbles(&a, false), vec![2, 0, 0, 4, 0b0010]);
+    assert_eq!(word_nibbles(&a, false), vec![0x8, 0x0, 0x0, 0x4, 0b1011]);
     // VOID: five S groups.
     let mut v = vec![];
     for _ in 0..5 {

@@ -91,11 +91,15 @@ pub struct RxWord {
     // The nibble moved to bits 15:12 (a wiring table: rust-hdl has no
     // lint-clean zero-extending concatenation).
     nib_top: ROM<Bits<16>, 4>,
+    lo_top: ROM<Bits<16>, 2>,
+    hi_top: ROM<Bits<16>, 2>,
     last_group: Constant<Bits<3>>,
     // Word being assembled.
     gcount: DFF<Bits<3>>,
     data: DFF<Bits<16>>,
     reason: DFF<Bits<4>>,
+    alarm0: DFF<Bit>,
+    alive0: DFF<Bit>,
     par_a: DFF<Bit>,
     par_b: DFF<Bit>,
     all_data: DFF<Bit>,
@@ -158,10 +162,22 @@ impl RxWord {
                     .map(|n| (n.to_bits(), (n << 12).to_bits()))
                     .collect::<BTreeMap<Bits<4>, Bits<16>>>(),
             ),
+            lo_top: ROM::new(
+                (0..4u64)
+                    .map(|n| (n.to_bits(), (n << 14).to_bits()))
+                    .collect::<BTreeMap<Bits<2>, Bits<16>>>(),
+            ),
+            hi_top: ROM::new(
+                (0..4u64)
+                    .map(|n| (n.to_bits(), (n << 14).to_bits()))
+                    .collect::<BTreeMap<Bits<2>, Bits<16>>>(),
+            ),
             last_group: Constant::new(if ext { 5u64 } else { 4u64 }.to_bits()),
             gcount: Default::default(),
             data: Default::default(),
             reason: Default::default(),
+            alarm0: Default::default(),
+            alive0: Default::default(),
             par_a: Default::default(),
             par_b: Default::default(),
             all_data: Default::default(),
@@ -197,17 +213,27 @@ impl Logic for RxWord {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, gcount, data, reason, par_a, par_b, all_data, all_s, active, wcount, slot,
-            ptype, end_r, wvalid_r, kind_r, slot_r, data_r, alive_r, alarm_r, reason_r, ok_r,
-            void_r, own_r, hdr_bad_r
+            self, clock, gcount, data, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
+            active, wcount, slot, ptype, end_r, wvalid_r, kind_r, slot_r, data_r, alive_r, alarm_r,
+            reason_r, ok_r, void_r, own_r, hdr_bad_r
         );
         self.dec.i_code.next = self.i_group.val();
         self.nib.next = self.dec.o_nibble.val();
         self.nib_top.address.next = self.dec.o_nibble.val();
-        // The word including this group.
-        self.w_data.next = self.data.q.val();
-        if self.gcount.q.val() < 4 {
-            self.w_data.next = (self.data.q.val() >> 4) | self.nib_top.data.val();
+        // The word including this group (protocol §4): N0 = {ALARM, ALIVE,
+        // D1, D0}, [ext: REASON], D[5:2], D[9:6], D[13:10], last = {PA, D15,
+        // D14, PB}. Data bits are shifted in from the top.
+        self.lo_top.address.next = self.dec.o_nibble.val().get_bits::<2>(0);
+        self.hi_top.address.next = self.dec.o_nibble.val().get_bits::<2>(1);
+        self.w_data.next = (self.data.q.val() >> 4) | self.nib_top.data.val();
+        if self.gcount.q.val() == 0 {
+            self.w_data.next = (self.data.q.val() >> 2) | self.lo_top.data.val();
+        }
+        if self.gcount.q.val() == self.last_group.val() {
+            self.w_data.next = (self.data.q.val() >> 2) | self.hi_top.data.val();
+        }
+        if (self.gcount.q.val() == 1) & (self.last_group.val() == 5) {
+            self.w_data.next = self.data.q.val();
         }
         self.w_pa.next = self.par_a.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
         self.w_pb.next = self.par_b.q.val()
@@ -233,7 +259,11 @@ impl Logic for RxWord {
             self.all_s.d.next = true;
         } else if self.i_gvalid.val() & self.active.q.val() {
             self.data.d.next = self.w_data.val();
-            if self.gcount.q.val() == 4 {
+            if self.gcount.q.val() == 0 {
+                self.alarm0.d.next = self.nib.val().get_bit(3);
+                self.alive0.d.next = self.nib.val().get_bit(2);
+            }
+            if self.gcount.q.val() == 1 {
                 self.reason.d.next = self.nib.val();
             }
             self.par_a.d.next = self.w_pa.val();
@@ -252,8 +282,8 @@ impl Logic for RxWord {
                 self.kind_r.d.next = self.wcount.q.val();
                 self.slot_r.d.next = self.slot.q.val();
                 self.data_r.d.next = self.w_data.val();
-                self.alive_r.d.next = self.nib.val().get_bit(2);
-                self.alarm_r.d.next = self.nib.val().get_bit(1);
+                self.alive_r.d.next = self.alive0.q.val();
+                self.alarm_r.d.next = self.alarm0.q.val();
                 self.reason_r.d.next = 0.into();
                 if self.last_group.val() == 5 {
                     self.reason_r.d.next = self.reason.q.val();
@@ -267,7 +297,7 @@ impl Logic for RxWord {
                     self.wcount.d.next = 1.into();
                     self.ptype.d.next = self.w_data.val().get_bits::<2>(14);
                     if !self.w_ok.val()
-                        | self.nib.val().get_bit(1)
+                        | self.alarm0.q.val()
                         | ((self.w_data.val().get_bits::<2>(14) == 0)
                             & (self.w_data.val().get_bits::<12>(0) != self.i_slots_m1.val()))
                     {
@@ -278,7 +308,7 @@ impl Logic for RxWord {
                 } else if self.wcount.q.val() == 1 {
                     // H1; SEC and TST packets end here.
                     self.wcount.d.next = 2.into();
-                    if !self.w_ok.val() | self.nib.val().get_bit(1) {
+                    if !self.w_ok.val() | self.alarm0.q.val() {
                         self.hdr_bad_r.d.next = self.ptype.q.val() == 0;
                         self.end_r.d.next = true;
                         self.active.d.next = false;
