@@ -15,6 +15,7 @@
 //! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
+//! - [`switchbox`]: the paper's Table 1
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
 
 pub mod cdr;
@@ -24,4 +25,5 @@ pub mod monitor;
 pub mod nrzi_tx;
 pub mod rx_framer;
 pub mod rx_word;
+pub mod switchbox;
 pub mod verilog;
