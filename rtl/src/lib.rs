@@ -15,6 +15,8 @@
 //! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
+//! - [`stream_ctrl`]: channel failure (pcf/scf) and test signal (ptst/stst)
+//! - [`port_rx`]: monitor + stream controller, one per logical input
 //! - [`switchbox`]: the paper's Table 1
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
 
@@ -23,7 +25,9 @@ pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod monitor;
 pub mod nrzi_tx;
+pub mod port_rx;
 pub mod rx_framer;
 pub mod rx_word;
+pub mod stream_ctrl;
 pub mod switchbox;
 pub mod verilog;

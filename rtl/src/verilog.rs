@@ -11,24 +11,22 @@ pub fn block_verilog<U: Block>(mut uut: U) -> String {
 
 /// Every block with its default parameters: (name = file name in `rtl/src`, Verilog).
 pub fn all_blocks() -> Vec<(&'static str, String)> {
+    use crate::*;
     vec![
-        ("enc4b5b", block_verilog(crate::enc4b5b::Enc4b5b::default())),
-        ("dec5b4b", block_verilog(crate::dec5b4b::Dec5b4b::default())),
-        ("cdr", block_verilog(crate::cdr::Cdr::default())),
-        ("nrzi_tx", block_verilog(crate::nrzi_tx::NrziTx::default())),
+        ("enc4b5b", block_verilog(enc4b5b::Enc4b5b::default())),
+        ("dec5b4b", block_verilog(dec5b4b::Dec5b4b::default())),
+        ("cdr", block_verilog(cdr::Cdr::default())),
+        ("nrzi_tx", block_verilog(nrzi_tx::NrziTx::default())),
+        ("rx_framer", block_verilog(rx_framer::RxFramer::new())),
+        ("rx_word", block_verilog(rx_word::RxWord::new(false))),
+        ("rx_word_ext", block_verilog(rx_word::RxWord::new(true))),
+        ("monitor", block_verilog(monitor::Monitor::new(false))),
+        ("switchbox", block_verilog(switchbox::Switchbox::default())),
         (
-            "rx_framer",
-            block_verilog(crate::rx_framer::RxFramer::new()),
+            "stream_ctrl",
+            block_verilog(stream_ctrl::StreamCtrl::default()),
         ),
-        ("rx_word", block_verilog(crate::rx_word::RxWord::new(false))),
-        (
-            "rx_word_ext",
-            block_verilog(crate::rx_word::RxWord::new(true)),
-        ),
-        (
-            "monitor",
-            block_verilog(crate::monitor::Monitor::new(false)),
-        ),
+        ("port_rx", block_verilog(port_rx::PortRx::new(false))),
     ]
 }
 

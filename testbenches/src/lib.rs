@@ -83,3 +83,41 @@ impl Rng {
         self.next_u64() % n
     }
 }
+
+/// Line samples of NRZI `levels` sent by a node whose bit period is 4·(1+δ)
+/// receiver samples (δ = `delta_ppm`·10⁻⁶), starting at `phase` samples, with
+/// every bit boundary moved by uniform jitter in ±`jitter` samples. The
+/// first bit is stretched by the phase: lead a stream with idles.
+pub fn line_samples(
+    levels: &[u8],
+    delta_ppm: f64,
+    phase: f64,
+    jitter: f64,
+    rng: &mut Rng,
+) -> Vec<u8> {
+    let period = 4.0 * (1.0 + delta_ppm * 1e-6);
+    let mut out = Vec::with_capacity(levels.len() * 4 + 8);
+    let mut k = 0usize;
+    let mut next = phase + period;
+    let mut t = 0.0;
+    while k < levels.len() {
+        while t >= next && k < levels.len() {
+            k += 1;
+            let j = (rng.below(1 << 16) as f64 / 65536.0 * 2.0 - 1.0) * jitter;
+            next = phase + (k + 1) as f64 * period + j;
+        }
+        if k < levels.len() {
+            out.push(levels[k]);
+        }
+        t += 1.0;
+    }
+    out
+}
+
+/// Sample pairs as the DDR input port value (bit 0 first in time).
+pub fn ddr_pairs(samples: &[u8]) -> Vec<u64> {
+    samples
+        .chunks_exact(2)
+        .map(|p| (p[0] | p[1] << 1) as u64)
+        .collect()
+}

@@ -9,8 +9,19 @@ use merkur_testbenches::verilator::Model;
 fn table1_exhaustively() {
     let mut m = Model::build(&block_verilog(Switchbox::default())).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
-    let (mode, pi, si, out, bss) = (p(&m, "i_mode"), p(&m, "i_pi"), p(&m, "i_si"), p(&m, "i_output"), p(&m, "i_bss"));
-    let (inp, bsr, po, so) = (p(&m, "o_input"), p(&m, "o_bsr"), p(&m, "o_po"), p(&m, "o_so"));
+    let (mode, pi, si, out, bss) = (
+        p(&m, "i_mode"),
+        p(&m, "i_pi"),
+        p(&m, "i_si"),
+        p(&m, "i_output"),
+        p(&m, "i_bss"),
+    );
+    let (inp, bsr, po, so) = (
+        p(&m, "o_input"),
+        p(&m, "o_bsr"),
+        p(&m, "o_po"),
+        p(&m, "o_so"),
+    );
     for (code, md) in [(0u64, Mode::N), (1, Mode::Wu), (2, Mode::Wd), (3, Mode::N)] {
         let (t_in, t_out, t_bsr, t_bss) = table1(md);
         for v in 0..256u64 {
@@ -25,7 +36,15 @@ fn table1_exhaustively() {
             assert_eq!(m.get(inp), phys_in(t_in), "mode {code}: INPUT");
             assert_eq!(m.get(bsr), phys_in(t_bsr), "mode {code}: BSR");
             // A physical output carries the logical stream mapped to it.
-            let at = |port: Port| if t_out == port { vout } else if t_bss == port { vbss } else { u64::MAX };
+            let at = |port: Port| {
+                if t_out == port {
+                    vout
+                } else if t_bss == port {
+                    vbss
+                } else {
+                    u64::MAX
+                }
+            };
             assert_eq!(m.get(po), at(Port::Po), "mode {code}: PO");
             assert_eq!(m.get(so), at(Port::So), "mode {code}: SO");
         }

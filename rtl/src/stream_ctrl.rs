@@ -1,0 +1,114 @@
+//! # stream_ctrl — stream controller: channel failure and test signal (protocol §9)
+//!
+//! Purpose: supervises one logical input (INPUT: the primary controller,
+//! `pcf`/`ptst`; BSR: the secondary one, `scf`/`stst`) from the words its
+//! receive chain ([`crate::monitor`]) decodes.
+//!
+//! Channel failure `o_cf` is any of:
+//! - loss of signal (no line transition for 16 bit times, from the CDR);
+//! - 8 consecutive bad words (parity or code errors; VOID words are not bad),
+//!   until the next good word;
+//! - a test signal while `i_tst_fail` (mode N on INPUT: a TST where DATA is
+//!   expected means the upstream neighbour has wrapped).
+//!
+//! Test signal `o_tst`: a good TST packet (H0 type 10, H1 = NOT H0) was
+//! received within the last 130 bit times (2 TST periods); `o_ack` is the
+//! ACK bit of the last one.
+//!
+//! | port | dir | width | clock domain | meaning |
+//! |---|---|---|---|---|
+//! | `clock` | in | 1 | — | core clock, 2× line rate |
+//! | `i_los` | in | 1 | clock | loss of signal |
+//! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_data`, `i_ptype` | in | | clock | word outputs of the receive chain |
+//! | `i_tst_fail` | in | 1 | static | a test signal counts as channel failure |
+//! | `o_cf` | out | 1 | clock | channel failure |
+//! | `o_tst` | out | 1 | clock | test signal |
+//! | `o_ack` | out | 1 | clock | ACK of the last TST |
+//!
+//! Latency: registered, one clock after the word or LOS that decides.
+//!
+//! ```text
+//! words      TST   TST   TST   (idle ...............................)
+//! o_tst      __/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\____   130 bit times after the last
+//! o_cf       __/‾‾‾‾ ... (only with i_tst_fail) ‾‾‾‾‾‾‾‾‾‾‾‾\____
+//! ```
+
+use rust_hdl::prelude::*;
+
+/// Clocks a test signal is held after the last TST (130 bit times).
+pub const TST_HOLD_CLOCKS: u64 = 260;
+/// Consecutive bad words that make a channel failure.
+pub const BAD_WORDS: u64 = 8;
+
+/// Stream controller.
+#[derive(LogicBlock, Default)]
+pub struct StreamCtrl {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// Loss of signal.
+    pub i_los: Signal<In, Bit>,
+    /// Word complete.
+    pub i_wvalid: Signal<In, Bit>,
+    /// 0 H0, 1 H1, 2 slot.
+    pub i_kind: Signal<In, Bits<2>>,
+    /// Word good.
+    pub i_ok: Signal<In, Bit>,
+    /// VOID word.
+    pub i_void: Signal<In, Bit>,
+    /// Word data.
+    pub i_data: Signal<In, Bits<16>>,
+    /// Packet type.
+    pub i_ptype: Signal<In, Bits<2>>,
+    /// A test signal counts as channel failure.
+    pub i_tst_fail: Signal<In, Bit>,
+    /// Channel failure.
+    pub o_cf: Signal<Out, Bit>,
+    /// Test signal.
+    pub o_tst: Signal<Out, Bit>,
+    /// ACK bit of the last TST.
+    pub o_ack: Signal<Out, Bit>,
+    h0: DFF<Bits<16>>,
+    bad: DFF<Bits<4>>,
+    hold: DFF<Bits<9>>,
+    tst: DFF<Bit>,
+    ack: DFF<Bit>,
+    cf: DFF<Bit>,
+}
+
+impl Logic for StreamCtrl {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, h0, bad, hold, tst, ack, cf);
+        if self.i_wvalid.val() {
+            if self.i_ok.val() {
+                self.bad.d.next = 0.into();
+            } else if !self.i_void.val() & (self.bad.q.val() != 8) {
+                self.bad.d.next = self.bad.q.val() + 1;
+            }
+            if (self.i_kind.val() == 0) & self.i_ok.val() {
+                self.h0.d.next = self.i_data.val();
+            }
+        }
+        // A good TST packet: H1 completes good, type 10, H1 = NOT H0.
+        if self.hold.q.val() != 0 {
+            self.hold.d.next = self.hold.q.val() - 1;
+        } else {
+            self.tst.d.next = false;
+        }
+        if self.i_wvalid.val()
+            & (self.i_kind.val() == 1)
+            & self.i_ok.val()
+            & (self.i_ptype.val() == 2)
+            & (self.i_data.val() == !self.h0.q.val())
+        {
+            self.tst.d.next = true;
+            self.ack.d.next = self.h0.q.val().get_bit(12);
+            self.hold.d.next = 259.into();
+        }
+        self.cf.d.next =
+            self.i_los.val() | (self.bad.q.val() == 8) | (self.tst.q.val() & self.i_tst_fail.val());
+        self.o_cf.next = self.cf.q.val();
+        self.o_tst.next = self.tst.q.val();
+        self.o_ack.next = self.ack.q.val();
+    }
+}
