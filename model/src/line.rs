@@ -170,23 +170,59 @@ pub fn push_group(bits: &mut Vec<u8>, g: u8) {
     }
 }
 
+/// What the first group of a word shows: cut-through nodes decide from it
+/// alone (protocol §4, §7), so a bad word's first group still matters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Lead {
+    /// A data nibble with ALARM = 0.
+    Data,
+    /// A data nibble with ALARM = 1.
+    Alarm,
+    /// An S group (the start of a VOID word).
+    S,
+    /// Anything else.
+    Other,
+}
+
+/// Classifies a word's first code group.
+pub fn lead_of(group: u8) -> Lead {
+    match decode_group(group) {
+        Symbol::Data(n) if n & 0b1000 != 0 => Lead::Alarm,
+        Symbol::Data(_) => Lead::Data,
+        Symbol::S => Lead::S,
+        _ => Lead::Other,
+    }
+}
+
 /// What a receiver makes of one word's worth of code groups.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Rx {
     /// All groups are data and both parities hold.
     Ok(Word),
-    /// Five S groups: the special master could not refresh this slot.
+    /// All groups S: the special master could not refresh this slot.
     Void,
-    /// Anything else: parity error or invalid/control group.
-    Bad,
+    /// Anything else: parity error or invalid/control group; what its first
+    /// group showed.
+    Bad(Lead),
+}
+
+/// Code bits of a VOID word.
+pub fn void_code_bits(ext: bool) -> Vec<u8> {
+    let mut v = vec![];
+    for _ in 0..if ext { 6 } else { 5 } {
+        push_group(&mut v, CODE_S);
+    }
+    v
 }
 
 /// Decodes the code bits of one word (25 bits, 30 with `ext`).
 pub fn decode_word(code_bits: &[u8], ext: bool) -> Rx {
     let groups = if ext { 6 } else { 5 };
     if code_bits.len() != groups * GROUP_BITS as usize {
-        return Rx::Bad;
+        return Rx::Bad(Lead::Other);
     }
+    let first = code_bits[..5].iter().fold(0u8, |a, &b| (a << 1) | (b & 1));
+    let lead = lead_of(first);
     let mut nibs = Vec::with_capacity(groups);
     let mut all_s = true;
     for g in code_bits.chunks(GROUP_BITS as usize) {
@@ -197,14 +233,14 @@ pub fn decode_word(code_bits: &[u8], ext: bool) -> Rx {
                 all_s = false;
             }
             Symbol::S => {}
-            _ => return Rx::Bad,
+            _ => return Rx::Bad(lead),
         }
     }
     if all_s && nibs.is_empty() {
         return Rx::Void;
     }
     if nibs.len() != groups || !parity_ok(&nibs) {
-        return Rx::Bad;
+        return Rx::Bad(lead);
     }
     Rx::Ok(word_from_nibbles(&nibs, ext))
 }
@@ -215,10 +251,20 @@ pub fn decode_word(code_bits: &[u8], ext: bool) -> Rx {
 /// adjacent code-bit flips, so a flip of the last bit of `w` also damages the
 /// first bit of `next`. This is how the model applies an injected bit error.
 pub fn flip_and_decode(w: &Word, next: Option<&Word>, ext: bool, bit: usize) -> (Rx, Option<Rx>) {
-    let code = word_code_bits(w, ext);
-    let mut full = code.clone();
+    let n = next.map(|n| word_code_bits(n, ext));
+    flip_code_and_decode(&word_code_bits(w, ext), n.as_deref(), ext, bit)
+}
+
+/// As [`flip_and_decode`], on the code bits of a word (a data word or a VOID).
+pub fn flip_code_and_decode(
+    code: &[u8],
+    next: Option<&[u8]>,
+    ext: bool,
+    bit: usize,
+) -> (Rx, Option<Rx>) {
+    let mut full = code.to_vec();
     match next {
-        Some(n) => full.extend(word_code_bits(n, ext)),
+        Some(n) => full.extend_from_slice(n),
         None => push_group(&mut full, CODE_I),
     }
     let mut level = 0;

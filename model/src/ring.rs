@@ -8,7 +8,7 @@
 //! failsafe entries and reintegrations, which take effect from the next cycle.
 
 use crate::config::*;
-use crate::line::{self, Rx, Word};
+use crate::line::{self, Lead, Rx, Word};
 use crate::scenario::{Generator, IrqLine, Kind};
 use std::collections::BTreeSet;
 use std::fmt;
@@ -72,8 +72,9 @@ pub enum Slot {
     Data(Word),
     /// The VOID word (five S groups).
     Void,
-    /// A word that failed parity or held a non-data group.
-    Bad,
+    /// A word that failed parity or held a non-data group; what its first
+    /// group showed (cut-through nodes decide from it).
+    Bad(Lead),
     /// Nothing: the line went dark before this slot.
     Missing,
 }
@@ -768,8 +769,12 @@ impl Ring {
         }
         // 7. Stream controllers and switchboxes.
         self.resolve(&mut ev);
-        for nd in self.nodes.iter_mut() {
-            nd.toggle = !nd.toggle;
+        // Alive flip-flops toggle after each frame a node processed (the
+        // special master after each frame it sent).
+        for (k, nd) in self.nodes.iter_mut().enumerate() {
+            if got_frame[k] || k == sm {
+                nd.toggle = !nd.toggle;
+            }
         }
         self.cycle += 1;
         CycleRecord {
@@ -836,17 +841,18 @@ impl Ring {
                     }
                 }
                 FlipTarget::Slot(s) => {
-                    let Slot::Data(w) = frame.words[s] else {
-                        if frame.words[s] == Slot::Void {
-                            frame.words[s] = Slot::Bad;
-                        }
-                        continue;
-                    };
-                    let next = match frame.words.get(s + 1) {
-                        Some(Slot::Data(nw)) => Some(*nw),
+                    let code = |w: &Slot| match w {
+                        Slot::Data(d) => Some(line::word_code_bits(d, ext)),
+                        Slot::Void => Some(line::void_code_bits(ext)),
                         _ => None,
                     };
-                    let (r, r2) = line::flip_and_decode(&w, next.as_ref(), ext, bit as usize);
+                    // A word already bad or missing stays as it is.
+                    let Some(this) = code(&frame.words[s]) else {
+                        continue;
+                    };
+                    let next = frame.words.get(s + 1).and_then(code);
+                    let (r, r2) =
+                        line::flip_code_and_decode(&this, next.as_deref(), ext, bit as usize);
                     frame.words[s] = rx_slot(r);
                     if let Some(r2) = r2 {
                         frame.words[s + 1] = rx_slot(r2);
@@ -889,7 +895,11 @@ impl Ring {
     }
 
     fn count_errors(&mut self, k: usize, frame: &Frame) {
-        let bad = frame.words.iter().filter(|w| **w == Slot::Bad).count() as u32;
+        let bad = frame
+            .words
+            .iter()
+            .filter(|w| matches!(w, Slot::Bad(_)))
+            .count() as u32;
         self.nodes[k].perr += bad;
     }
 
@@ -945,7 +955,7 @@ impl Ring {
         let ext = self.cfg.ext;
         let kind = self.cfg.nodes[k].kind;
         match w {
-            Slot::Bad => {
+            Slot::Bad(_) => {
                 self.nodes[k].perr += 1;
                 if kind.is_master() {
                     self.nodes[k].last_alive[s] = None;
@@ -1080,7 +1090,9 @@ impl Ring {
                             d.data = self.nodes[k].db[s];
                         }
                     }
-                    Slot::Void => {
+                    // Data replaced from the first group on; still bad.
+                    Slot::Bad(Lead::Data) => {}
+                    Slot::Void | Slot::Bad(Lead::S) => {
                         let alive = !self.nodes[k].act_alive[s];
                         self.nodes[k].act_alive[s] = alive;
                         *w = Slot::Data(Word {
@@ -1101,7 +1113,7 @@ impl Ring {
                 let v = self.nodes[k].output;
                 if let Some(p) = self.take_alarm(k, ev) {
                     *w = Slot::Data(self.alarm_word(k, p, v));
-                } else if *w != Slot::Bad {
+                } else if !matches!(*w, Slot::Bad(Lead::Data | Lead::Other)) {
                     *w = Slot::Data(Word {
                         data: v,
                         alive: self.nodes[k].toggle,
@@ -1223,7 +1235,7 @@ fn rx_slot(r: Rx) -> Slot {
     match r {
         Rx::Ok(w) => Slot::Data(w),
         Rx::Void => Slot::Void,
-        Rx::Bad => Slot::Bad,
+        Rx::Bad(l) => Slot::Bad(l),
     }
 }
 

@@ -28,7 +28,7 @@ fn word_token(out: &mut String, w: &Slot) {
             }
         }
         Slot::Void => out.push('v'),
-        Slot::Bad => out.push('x'),
+        Slot::Bad(_) => out.push('x'),
         Slot::Missing => out.push('.'),
     }
 }

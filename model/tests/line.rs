@@ -112,7 +112,10 @@ fn every_single_line_bit_flip_is_detected() {
             };
             for bit in 0..25 {
                 let (a, b) = flip_and_decode(&w, Some(&next), false, bit);
-                assert_eq!(a, Rx::Bad, "flip of bit {bit} in {w:?} not detected");
+                assert!(
+                    matches!(a, Rx::Bad(_)),
+                    "flip of bit {bit} in {w:?} not detected"
+                );
                 if let Some(Rx::Ok(b)) = b {
                     assert_eq!(b, next, "flip of bit {bit} in {w:?} changed the next word");
                 }
@@ -140,7 +143,10 @@ fn extended_word_flips_are_detected() {
         assert_eq!(decode_word(&word_code_bits(&w, true), true), Rx::Ok(w));
         for bit in 0..30 {
             let (a, _) = flip_and_decode(&w, None, true, bit);
-            assert_eq!(a, Rx::Bad, "seed 0x5eed0001: flip of bit {bit} in {w:?}");
+            assert!(
+                matches!(a, Rx::Bad(_)),
+                "seed 0x5eed0001: flip of bit {bit} in {w:?}"
+            );
         }
     }
 }

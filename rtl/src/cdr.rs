@@ -26,6 +26,7 @@
 //! | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
 //! | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
 //! | `o_los` | out | 1 | clock | loss of signal (no edge for 16 bit times) |
+//! | `o_phase` | out | 1 | clock | the bit's centre was sample 0 or 1 of its clock |
 //!
 //! Latency: `o_valid`/`o_bit` are registered: a bit appears one clock after
 //! the clock whose samples contained its centre (2 samples after its edge).
@@ -56,7 +57,11 @@ pub struct Cdr {
     pub o_bit: Signal<Out, Bit>,
     /// Loss of signal.
     pub o_los: Signal<Out, Bit>,
+    /// Which sample of its clock was the bit's centre (0 first, 1 second):
+    /// lets a transmitter repeat the edge with half-clock resolution.
+    pub o_phase: Signal<Out, Bit>,
     last: DFF<Bit>,
+    phase: DFF<Bit>,
     count: DFF<Bits<2>>,
     quiet: DFF<Bits<7>>,
     rx_valid: DFF<Bit>,
@@ -71,7 +76,7 @@ pub struct Cdr {
 impl Logic for Cdr {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, last, count, quiet, rx_valid, rx_bit, los_flag);
+        dff_setup!(self, clock, last, phase, count, quiet, rx_valid, rx_bit, los_flag);
         // First sample of this clock.
         self.edge_a.next = self.i_samples.val().get_bit(0) ^ self.last.q.val();
         self.count_a.next = self.count.q.val() + 1;
@@ -91,10 +96,12 @@ impl Logic for Cdr {
         if self.count_a.val() == 2 {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(0);
+            self.phase.d.next = false;
         }
         if self.count_b.val() == 2 {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(1);
+            self.phase.d.next = true;
         }
         // Loss of signal: 64 samples (32 clocks) without an edge.
         if self.edge_a.val() | self.edge_b.val() {
@@ -108,5 +115,6 @@ impl Logic for Cdr {
         self.o_valid.next = self.rx_valid.q.val();
         self.o_bit.next = self.rx_bit.q.val();
         self.o_los.next = self.los_flag.q.val();
+        self.o_phase.next = self.phase.q.val();
     }
 }

@@ -12,6 +12,7 @@
 //! - [`cdr`]: 4×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
+//! - [`fwd`]: cut-through forwarder, the slave's slot shift register
 //! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
@@ -23,6 +24,7 @@
 pub mod cdr;
 pub mod dec5b4b;
 pub mod enc4b5b;
+pub mod fwd;
 pub mod monitor;
 pub mod nrzi_tx;
 pub mod port_rx;

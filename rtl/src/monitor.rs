@@ -14,6 +14,7 @@
 //! | `i_samples` | in | 2 | clock | line samples (DDR), bit 0 first |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`RxWord`] |
 //! | `o_los` | out | 1 | clock | loss of signal |
+//! | `o_bvalid`, `o_level`, `o_phase` | out | 1 | clock | recovered bit stream (from the CDR) |
 //! | `o_start` | out | 1 | clock | J K found |
 //! | `o_inpkt` | out | 1 | clock | inside a packet |
 //! | `o_wvalid` … `o_ptype` | out | | clock | as [`RxWord`] |
@@ -45,6 +46,12 @@ pub struct Monitor {
     pub i_address: Signal<In, Bits<12>>,
     /// Loss of signal.
     pub o_los: Signal<Out, Bit>,
+    /// Recovered bit valid (from the CDR).
+    pub o_bvalid: Signal<Out, Bit>,
+    /// Recovered line level.
+    pub o_level: Signal<Out, Bit>,
+    /// Sample phase of the recovered bit.
+    pub o_phase: Signal<Out, Bit>,
     /// Packet start.
     pub o_start: Signal<Out, Bit>,
     /// Inside a packet.
@@ -87,6 +94,9 @@ impl Monitor {
             i_slots_m1: Default::default(),
             i_address: Default::default(),
             o_los: Default::default(),
+            o_bvalid: Default::default(),
+            o_level: Default::default(),
+            o_phase: Default::default(),
             o_start: Default::default(),
             o_inpkt: Default::default(),
             o_wvalid: Default::default(),
@@ -124,6 +134,9 @@ impl Logic for Monitor {
         self.word.i_slots_m1.next = self.i_slots_m1.val();
         self.word.i_address.next = self.i_address.val();
         self.o_los.next = self.cdr.o_los.val();
+        self.o_bvalid.next = self.cdr.o_valid.val();
+        self.o_level.next = self.cdr.o_bit.val();
+        self.o_phase.next = self.cdr.o_phase.val();
         self.o_start.next = self.framer.o_start.val();
         self.o_inpkt.next = self.framer.o_inpkt.val();
         self.o_wvalid.next = self.word.o_wvalid.val();

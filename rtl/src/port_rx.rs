@@ -11,6 +11,7 @@
 //! | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
 //! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
 //! | `o_los`, `o_cf`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
+//! | `o_bvalid`, `o_level`, `o_phase` | out | 1 | clock | recovered bit stream (from the CDR) |
 //!
 //! Latency: as [`Monitor`]; stream-controller outputs one clock later.
 //!
@@ -67,6 +68,12 @@ pub struct PortRx {
     pub o_ptype: Signal<Out, Bits<2>>,
     /// Loss of signal.
     pub o_los: Signal<Out, Bit>,
+    /// Recovered bit valid (from the CDR).
+    pub o_bvalid: Signal<Out, Bit>,
+    /// Recovered line level.
+    pub o_level: Signal<Out, Bit>,
+    /// Sample phase of the recovered bit.
+    pub o_phase: Signal<Out, Bit>,
     /// Channel failure.
     pub o_cf: Signal<Out, Bit>,
     /// Test signal.
@@ -101,6 +108,9 @@ impl PortRx {
             o_hdr_bad: Default::default(),
             o_ptype: Default::default(),
             o_los: Default::default(),
+            o_bvalid: Default::default(),
+            o_level: Default::default(),
+            o_phase: Default::default(),
             o_cf: Default::default(),
             o_tst: Default::default(),
             o_ack: Default::default(),
@@ -141,6 +151,9 @@ impl Logic for PortRx {
         self.o_hdr_bad.next = self.mon.o_hdr_bad.val();
         self.o_ptype.next = self.mon.o_ptype.val();
         self.o_los.next = self.mon.o_los.val();
+        self.o_bvalid.next = self.mon.o_bvalid.val();
+        self.o_level.next = self.mon.o_level.val();
+        self.o_phase.next = self.mon.o_phase.val();
         self.o_cf.next = self.ctrl.o_cf.val();
         self.o_tst.next = self.ctrl.o_tst.val();
         self.o_ack.next = self.ctrl.o_ack.val();

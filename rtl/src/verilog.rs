@@ -27,6 +27,7 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(stream_ctrl::StreamCtrl::default()),
         ),
         ("port_rx", block_verilog(port_rx::PortRx::new(false))),
+        ("fwd", block_verilog(fwd::Fwd::new())),
     ]
 }
 

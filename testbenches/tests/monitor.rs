@@ -64,7 +64,7 @@ fn encode_packet(
                 (0..5).for_each(|_| push_group(code, CODE_S));
                 seen.push(Seen::Void);
             }
-            Slot::Bad => {
+            Slot::Bad(_) => {
                 // The model keeps only "bad"; any single error inside the word
                 // (not its last bit, which would also hit the next word) is one.
                 code.extend(word_code_bits(
