@@ -9,6 +9,7 @@
 //! node's core clock.
 //!
 //! Blocks so far (issue 3 is in progress):
+//! - [`chain8`]: eight slaves in a row (test top)
 //! - [`cdr`]: 4×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
@@ -19,9 +20,12 @@
 //! - [`stream_ctrl`]: channel failure (pcf/scf) and test signal (ptst/stst)
 //! - [`port_rx`]: monitor + stream controller, one per logical input
 //! - [`switchbox`]: the paper's Table 1
+//! - [`slave`]: the slave node top (Figure 6)
+//! - [`tst_tx`]: link test packets of a wrapped node
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
 
 pub mod cdr;
+pub mod chain8;
 pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod fwd;
@@ -30,6 +34,8 @@ pub mod nrzi_tx;
 pub mod port_rx;
 pub mod rx_framer;
 pub mod rx_word;
+pub mod slave;
 pub mod stream_ctrl;
 pub mod switchbox;
+pub mod tst_tx;
 pub mod verilog;

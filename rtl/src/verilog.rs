@@ -28,6 +28,9 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ),
         ("port_rx", block_verilog(port_rx::PortRx::new(false))),
         ("fwd", block_verilog(fwd::Fwd::new())),
+        ("tst_tx", block_verilog(tst_tx::TstTx::default())),
+        ("slave", block_verilog(slave::Slave::new())),
+        ("chain8", block_verilog(chain8::Chain8::default())),
     ]
 }
 

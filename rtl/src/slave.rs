@@ -1,0 +1,416 @@
+//! # slave — the MERKUR slave node (the paper's Figure 6)
+//!
+//! Purpose: one sensor or actuator node: the switchbox (Table 1), a
+//! supervised receive port on INPUT and on BSR (clock recovery, framer,
+//! words, stream controllers), the cut-through forwarder (slot shift
+//! register) from INPUT to OUTPUT, the secondary pass-through (BSR → BSS in
+//! mode N) or the link-test generator (BSS in modes WU, WD), the mode and
+//! failsafe logic (protocol §10, §12), the interrupt/alarm queue (§11), the
+//! actuator's output register and the error counters.
+//!
+//! | port | dir | width | clock domain | meaning |
+//! |---|---|---|---|---|
+//! | `clock` | in | 1 | — | core clock, 2× line rate |
+//! | `i_pi`, `i_si` | in | 2 | clock | physical inputs, DDR sample pairs |
+//! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
+//! | `i_address` | in | 12 | static (DIP switches) | home slot |
+//! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
+//! | `i_actuator` | in | 1 | static | 1 actuator, 0 sensor |
+//! | `i_cs_timeout` | in | 16 | static | clocks without a good frame before failsafe (2 cycle periods) |
+//! | `i_sensor_data` | in | 16 | clock | sensor value |
+//! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (a high clock queues the alarm) |
+//! | `o_act_data` | out | 16 | clock | actuator output register |
+//! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD) |
+//! | `o_failsafe` | out | 1 | clock | failsafe (terminal) |
+//! | `o_perr` | out | 16 | clock | bad words seen at INPUT (saturating) |
+//! | `o_ferr` | out | 16 | clock | frame errors: rejected headers at INPUT (saturating) |
+//!
+//! Latency: INPUT to OUTPUT ≈ 6.5 bit times (CDR + one group, [`Fwd`]);
+//! BSR to BSS ≈ 1.5 bit times (bit repeater).
+//!
+//! ```text
+//! PI ─┐            ┌─ port_rx (INPUT) ── fwd ── OUTPUT ─┐            ┌─ PO
+//!     ├─ switchbox ┤                                     ├─ switchbox ┤
+//! SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ SO
+//! ```
+
+use crate::fwd::Fwd;
+use crate::port_rx::PortRx;
+use crate::switchbox::Switchbox;
+use crate::tst_tx::TstTx;
+use rust_hdl::prelude::*;
+
+/// Clocks a repaired link must show ACKed TST before a WD node unwraps (2 TST periods).
+pub const REINTEGRATE_CLOCKS: u64 = 260;
+
+/// Slave node.
+#[derive(LogicBlock)]
+pub struct Slave {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// Primary input.
+    pub i_pi: Signal<In, Bits<2>>,
+    /// Secondary input.
+    pub i_si: Signal<In, Bits<2>>,
+    /// Primary output.
+    pub o_po: Signal<Out, Bits<2>>,
+    /// Secondary output.
+    pub o_so: Signal<Out, Bits<2>>,
+    /// Home slot.
+    pub i_address: Signal<In, Bits<12>>,
+    /// Slots − 1.
+    pub i_slots_m1: Signal<In, Bits<12>>,
+    /// Actuator (1) or sensor (0).
+    pub i_actuator: Signal<In, Bit>,
+    /// CS timeout in clocks.
+    pub i_cs_timeout: Signal<In, Bits<16>>,
+    /// Sensor value.
+    pub i_sensor_data: Signal<In, Bits<16>>,
+    /// User interrupt 1 request.
+    pub i_irq1: Signal<In, Bit>,
+    /// User interrupt 2 request.
+    pub i_irq2: Signal<In, Bit>,
+    /// User failsafe request.
+    pub i_fs_req: Signal<In, Bit>,
+    /// Actuator output register.
+    pub o_act_data: Signal<Out, Bits<16>>,
+    /// Mode.
+    pub o_mode: Signal<Out, Bits<2>>,
+    /// Failsafe.
+    pub o_failsafe: Signal<Out, Bit>,
+    /// Bad words at INPUT.
+    pub o_perr: Signal<Out, Bits<16>>,
+    /// Rejected headers at INPUT.
+    pub o_ferr: Signal<Out, Bits<16>>,
+    sbox: Switchbox,
+    rx_in: PortRx,
+    rx_bsr: PortRx,
+    fwd: Fwd,
+    tst: TstTx,
+    mode: DFF<Bits<2>>,
+    failsafe: DFF<Bit>,
+    rw: DFF<Bit>,
+    armed: DFF<Bit>,
+    quiet: DFF<Bits<16>>,
+    grace: DFF<Bits<16>>,
+    ack_time: DFF<Bits<9>>,
+    seen_ack: DFF<Bit>,
+    pend_fs: DFF<Bit>,
+    pend_rc: DFF<Bit>,
+    pend_i1: DFF<Bit>,
+    pend_i2: DFF<Bit>,
+    act_data: DFF<Bits<16>>,
+    perr: DFF<Bits<16>>,
+    ferr: DFF<Bits<16>>,
+    rep_level: DFF<Bit>,
+    rep_pair: DFF<Bits<2>>,
+    idle_level: DFF<Bit>,
+    idle_half: DFF<Bit>,
+    reason: Signal<Local, Bits<4>>,
+    wrapped: Signal<Local, Bit>,
+    out_pair: Signal<Local, Bits<2>>,
+    bss_pair: Signal<Local, Bits<2>>,
+    new_mode: Signal<Local, Bits<2>>,
+}
+
+impl Default for Slave {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Slave {
+    /// A slave node (basic 25-bit words).
+    pub fn new() -> Self {
+        Self {
+            clock: Default::default(),
+            i_pi: Default::default(),
+            i_si: Default::default(),
+            o_po: Default::default(),
+            o_so: Default::default(),
+            i_address: Default::default(),
+            i_slots_m1: Default::default(),
+            i_actuator: Default::default(),
+            i_cs_timeout: Default::default(),
+            i_sensor_data: Default::default(),
+            i_irq1: Default::default(),
+            i_irq2: Default::default(),
+            i_fs_req: Default::default(),
+            o_act_data: Default::default(),
+            o_mode: Default::default(),
+            o_failsafe: Default::default(),
+            o_perr: Default::default(),
+            o_ferr: Default::default(),
+            sbox: Default::default(),
+            rx_in: PortRx::new(false),
+            rx_bsr: PortRx::new(false),
+            fwd: Fwd::new(),
+            tst: Default::default(),
+            mode: Default::default(),
+            failsafe: Default::default(),
+            rw: Default::default(),
+            armed: Default::default(),
+            quiet: Default::default(),
+            grace: Default::default(),
+            ack_time: Default::default(),
+            seen_ack: Default::default(),
+            pend_fs: Default::default(),
+            pend_rc: Default::default(),
+            pend_i1: Default::default(),
+            pend_i2: Default::default(),
+            act_data: Default::default(),
+            perr: Default::default(),
+            ferr: Default::default(),
+            rep_level: Default::default(),
+            rep_pair: Default::default(),
+            idle_level: Default::default(),
+            idle_half: Default::default(),
+            reason: Default::default(),
+            wrapped: Default::default(),
+            out_pair: Default::default(),
+            bss_pair: Default::default(),
+            new_mode: Default::default(),
+        }
+    }
+}
+
+impl Logic for Slave {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, mode, failsafe, rw, armed, quiet, grace, ack_time, seen_ack, pend_fs,
+            pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_level, rep_pair, idle_level,
+            idle_half
+        );
+        self.rx_in.clock.next = self.clock.val();
+        self.rx_bsr.clock.next = self.clock.val();
+        self.fwd.clock.next = self.clock.val();
+        self.tst.clock.next = self.clock.val();
+        self.wrapped.next = self.mode.q.val() != 0;
+
+        // Switchbox.
+        self.sbox.i_mode.next = self.mode.q.val();
+        self.sbox.i_pi.next = self.i_pi.val();
+        self.sbox.i_si.next = self.i_si.val();
+        self.rx_in.i_samples.next = self.sbox.o_input.val();
+        self.rx_bsr.i_samples.next = self.sbox.o_bsr.val();
+        self.rx_in.i_slots_m1.next = self.i_slots_m1.val();
+        self.rx_in.i_address.next = self.i_address.val();
+        self.rx_bsr.i_slots_m1.next = self.i_slots_m1.val();
+        self.rx_bsr.i_address.next = self.i_address.val();
+        // In mode N a TST where DATA is expected is a failure; not during
+        // the grace period after unwrapping.
+        self.rx_in.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
+        self.rx_bsr.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
+
+        // Forwarder INPUT -> OUTPUT.
+        self.fwd.i_bvalid.next = self.rx_in.o_bvalid.val();
+        self.fwd.i_level.next = self.rx_in.o_level.val();
+        self.fwd.i_phase.next = self.rx_in.o_phase.val();
+        self.fwd.i_hdr_bad.next = self.rx_in.o_hdr_bad.val();
+        self.fwd.i_slots_m1.next = self.i_slots_m1.val();
+        self.fwd.i_address.next = self.i_address.val();
+        self.fwd.i_actuator.next = self.i_actuator.val();
+        self.fwd.i_sensor_data.next = self.i_sensor_data.val();
+        self.fwd.i_act_out.next = self.act_data.q.val();
+        self.fwd.i_fs.next = self.failsafe.q.val();
+        self.fwd.i_wrapped.next = self.wrapped.val();
+
+        // Alarm queue: FAILSAFE > RECONFIG > IRQ1 > IRQ2 (protocol §11).
+        self.reason.next = 2.into();
+        if self.pend_i1.q.val() {
+            self.reason.next = 1.into();
+        }
+        if self.pend_rc.q.val() {
+            self.reason.next = 4.into();
+            if self.mode.q.val() == 1 {
+                self.reason.next = 5.into();
+            }
+            if self.mode.q.val() == 2 {
+                self.reason.next = 6.into();
+            }
+        }
+        if self.pend_fs.q.val() {
+            self.reason.next = 3.into();
+        }
+        self.fwd.i_alarm_req.next = self.pend_fs.q.val()
+            | self.pend_rc.q.val()
+            | self.pend_i1.q.val()
+            | self.pend_i2.q.val();
+        self.fwd.i_alarm_reason.next = self.reason.val();
+        if self.i_irq1.val() {
+            self.pend_i1.d.next = true;
+        }
+        if self.i_irq2.val() {
+            self.pend_i2.d.next = true;
+        }
+        if self.i_fs_req.val() {
+            self.pend_fs.d.next = true;
+        }
+        if self.fwd.o_alarm_sent.val() {
+            if self.reason.val() == 3 {
+                self.pend_fs.d.next = false;
+                self.failsafe.d.next = true;
+            } else if self.reason.val() == 1 {
+                self.pend_i1.d.next = false;
+            } else if self.reason.val() == 2 {
+                self.pend_i2.d.next = false;
+            } else {
+                self.pend_rc.d.next = false;
+            }
+        }
+
+        // CS timeout: no good DATA header for i_cs_timeout clocks (the
+        // counter restarts below at every good header).
+        if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
+            self.quiet.d.next = self.quiet.q.val() + 1;
+        }
+        // What INPUT's headers say: FS, ring wrapped (RWC in H0, RWP in H1).
+        if self.rx_in.o_wvalid.val() & self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 0) {
+            if self.rx_in.o_kind.val() == 0 {
+                self.rw.d.next = self.rx_in.o_data.val().get_bit(12) | self.wrapped.val();
+                if self.rx_in.o_data.val().get_bit(13) {
+                    self.failsafe.d.next = true;
+                }
+            }
+            if self.rx_in.o_kind.val() == 1 {
+                self.armed.d.next = true;
+                self.quiet.d.next = 0.into();
+                if self.rx_in.o_data.val().get_bit(15) {
+                    self.rw.d.next = true;
+                }
+            }
+            // Actuator output register: its own slot, good data.
+            if (self.rx_in.o_kind.val() == 2)
+                & self.rx_in.o_own.val()
+                & !self.rx_in.o_alarm.val()
+                & self.i_actuator.val()
+                & !self.failsafe.q.val()
+            {
+                self.act_data.d.next = self.rx_in.o_data.val();
+            }
+        }
+        // Error counters (saturating).
+        if self.rx_in.o_wvalid.val()
+            & !self.rx_in.o_ok.val()
+            & !self.rx_in.o_void.val()
+            & (self.perr.q.val() != 0xffff)
+        {
+            self.perr.d.next = self.perr.q.val() + 1;
+        }
+        if self.rx_in.o_hdr_bad.val() & (self.ferr.q.val() != 0xffff) {
+            self.ferr.d.next = self.ferr.q.val() + 1;
+        }
+        if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
+            self.failsafe.d.next = true;
+        }
+        if self.grace.q.val() != 0 {
+            self.grace.d.next = self.grace.q.val() - 1;
+        }
+
+        // Switchbox decisions (protocol §10, §12).
+        // Stream controllers act only once the node is armed (its first good
+        // frame): at power-up every line is dark.
+        self.new_mode.next = self.mode.q.val();
+        if !self.armed.q.val() {
+        } else if !self.wrapped.val() {
+            if self.rx_in.o_cf.val() {
+                self.new_mode.next = 1.into();
+                if self.rx_bsr.o_cf.val() | self.rw.q.val() {
+                    self.failsafe.d.next = true;
+                }
+            } else if self.rx_bsr.o_cf.val() {
+                self.new_mode.next = 2.into();
+                if self.rw.q.val() {
+                    self.failsafe.d.next = true;
+                }
+            }
+        } else {
+            if self.rx_in.o_cf.val() {
+                self.failsafe.d.next = true;
+            }
+            // Reintegration: the partner's TST with ACK heard on BSR.
+            if self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val() {
+                self.seen_ack.d.next = true;
+                if self.ack_time.q.val() != 511 {
+                    self.ack_time.d.next = self.ack_time.q.val() + 1;
+                }
+            }
+            if !self.failsafe.q.val() {
+                if (self.mode.q.val() == 2)
+                    & (self.ack_time.q.val() >= 260)
+                    & self.rx_in.o_start.val()
+                {
+                    self.new_mode.next = 0.into();
+                }
+                if (self.mode.q.val() == 1)
+                    & self.seen_ack.q.val()
+                    & self.rx_bsr.o_wvalid.val()
+                    & (self.rx_bsr.o_kind.val() == 0)
+                    & self.rx_bsr.o_ok.val()
+                    & (self.rx_bsr.o_ptype.val() == 0)
+                {
+                    self.new_mode.next = 0.into();
+                }
+            }
+        }
+        if self.new_mode.val() != self.mode.q.val() {
+            self.mode.d.next = self.new_mode.val();
+            self.pend_rc.d.next = true;
+            self.ack_time.d.next = 0.into();
+            self.seen_ack.d.next = false;
+            if self.new_mode.val() == 0 {
+                self.grace.d.next = self.i_cs_timeout.val() >> 1;
+            }
+        }
+
+        // OUTPUT: the forwarded stream; idles on the node's own timing while
+        // INPUT is dark, so a break stays a break of one link.
+        self.idle_half.d.next = !self.idle_half.q.val();
+        if self.idle_half.q.val() {
+            self.idle_level.d.next = !self.idle_level.q.val();
+        }
+        self.out_pair.next = self.fwd.o_line.val();
+        if self.rx_in.o_los.val() {
+            self.out_pair.next = 0.into();
+            if self.idle_level.q.val() {
+                self.out_pair.next = 3.into();
+            }
+        }
+        // BSS: in mode N the BSR stream repeated bit for bit; wrapped: TST.
+        if self.rx_bsr.o_bvalid.val() {
+            self.rep_level.d.next = self.rx_bsr.o_level.val();
+            self.rep_pair.d.next = 0.into();
+            if self.rx_bsr.o_level.val() {
+                self.rep_pair.d.next = 3.into();
+            }
+            if self.rx_bsr.o_phase.val() & (self.rx_bsr.o_level.val() != self.rep_level.q.val()) {
+                self.rep_pair.d.next = 1.into();
+                if self.rx_bsr.o_level.val() {
+                    self.rep_pair.d.next = 2.into();
+                }
+            }
+        } else {
+            self.rep_pair.d.next = 0.into();
+            if self.rep_level.q.val() {
+                self.rep_pair.d.next = 3.into();
+            }
+        }
+        self.tst.i_ack.next = self.rx_bsr.o_tst.val();
+        self.tst.i_address.next = self.i_address.val();
+        self.bss_pair.next = self.rep_pair.q.val();
+        if self.wrapped.val() {
+            self.bss_pair.next = self.tst.o_line.val();
+        }
+        self.sbox.i_output.next = self.out_pair.val();
+        self.sbox.i_bss.next = self.bss_pair.val();
+        self.o_po.next = self.sbox.o_po.val();
+        self.o_so.next = self.sbox.o_so.val();
+
+        self.o_act_data.next = self.act_data.q.val();
+        self.o_mode.next = self.mode.q.val();
+        self.o_failsafe.next = self.failsafe.q.val();
+        self.o_perr.next = self.perr.q.val();
+        self.o_ferr.next = self.ferr.q.val();
+    }
+}
