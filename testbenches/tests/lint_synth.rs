@@ -37,7 +37,8 @@ fn every_block_is_lint_clean() {
 #[test]
 fn every_block_synthesizes_for_ice40() {
     let d = scratch();
-    for (name, v) in all_blocks() {
+    // chain8 is a test top (eight slaves), not a block anyone synthesizes.
+    for (name, v) in all_blocks().into_iter().filter(|(n, _)| *n != "chain8") {
         let f = d.join(format!("{name}_synth.v"));
         std::fs::write(&f, &v).unwrap();
         let o = Command::new("yosys")
