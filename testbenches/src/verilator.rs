@@ -291,7 +291,9 @@ pub struct Model {
 
 impl Model {
     /// Builds (or reuses) and instantiates the model of `verilog`.
-    /// With `MERKUR_WAVE=<file.fst>` set, the model writes an FST waveform.
+    /// With `MERKUR_WAVE=<file.fst>` set, the model writes an FST waveform
+    /// (the first model of the process to that file, later ones to
+    /// `<file>.<n>.fst`).
     pub fn build(verilog: &str) -> Result<Model, String> {
         let (lib, ports) = build_library(verilog)?;
         Model::load(&lib, ports)
@@ -328,6 +330,26 @@ impl Model {
             }
             let h = new();
             if let Ok(w) = std::env::var("MERKUR_WAVE") {
+                // The first model of the process writes the file as named,
+                // later ones `<stem>.<n>.<ext>`, so none overwrites another.
+                static WAVES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+                let n = WAVES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let w = if n == 0 {
+                    w
+                } else {
+                    let p = Path::new(&w);
+                    let stem = p
+                        .file_stem()
+                        .map(|s| s.to_string_lossy().to_string())
+                        .unwrap_or_default();
+                    let ext = p
+                        .extension()
+                        .map(|s| s.to_string_lossy().to_string())
+                        .unwrap_or_else(|| "fst".into());
+                    p.with_file_name(format!("{stem}.{n}.{ext}"))
+                        .to_string_lossy()
+                        .to_string()
+                };
                 let c = std::ffi::CString::new(w.clone()).map_err(|e| e.to_string())?;
                 if trace(h, c.as_ptr()) != 0 {
                     del(h);
