@@ -53,6 +53,7 @@ pub fn pinned_tools() -> Result<Vec<PinnedTool>, String> {
     Ok(out)
 }
 
+pub mod stim;
 pub mod verilator;
 
 /// A small seeded generator for stimulus (xorshift64*). Tests print the seed

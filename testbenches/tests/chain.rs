@@ -8,49 +8,12 @@
 //! and every node's parity-error count equal the model's.
 
 use merkur_model::config;
-use merkur_model::line::{
-    lead_of, nrzi_encode, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_I, CODE_J,
-    CODE_K,
-};
-use merkur_model::ring::{self, sensor_value, Carry, HeaderRx, Slot};
+use merkur_model::line::{nrzi_encode, push_group, CODE_I};
+use merkur_model::ring::{self, sensor_value, Carry, HeaderRx};
 use merkur_model::scenario::Kind;
 use merkur_rtl::{chain8::Chain8, monitor::Monitor, verilog::block_verilog};
+use merkur_testbenches::stim::{frame_code, seen, PacketReader, Seen};
 use merkur_testbenches::{ddr_pairs, line_samples, repo_root, verilator::Model, Rng};
-
-fn bad_word(lead: Lead, rng: &mut Rng) -> Vec<u8> {
-    let mut c = match lead {
-        Lead::S => void_code_bits(false),
-        Lead::Alarm => word_code_bits(
-            &Word {
-                data: 0x1000,
-                alarm: true,
-                ..Word::default()
-            },
-            false,
-        ),
-        Lead::Data | Lead::Other => word_code_bits(
-            &Word {
-                data: rng.next_u64() as u16,
-                ..Word::default()
-            },
-            false,
-        ),
-    };
-    if lead == Lead::Other {
-        c[..5].copy_from_slice(&[0, 0, 0, 0, 0]);
-    }
-    assert_eq!(lead_of(c[..5].iter().fold(0, |a, &b| a << 1 | b)), lead);
-    c[11] ^= 1;
-    c[12] ^= 1;
-    c
-}
-
-#[derive(Debug, PartialEq)]
-enum Seen {
-    Word(u16, bool, bool),
-    Void,
-    Bad,
-}
 
 #[test]
 fn eight_slaves_carry_the_models_frames() {
@@ -70,23 +33,9 @@ fn eight_slaves_carry_the_models_frames() {
             let Carry::Data(f) = &r.fibres[0] else {
                 panic!("P0 carries the frame")
             };
-            let HeaderRx::Ok(h) = f.hdr else {
-                panic!("good headers on P0")
-            };
             let start = code.len();
             starts.push(start);
-            push_group(&mut code, CODE_J);
-            push_group(&mut code, CODE_K);
-            code.extend(word_code_bits(&h.h0(cfg.slots), false));
-            code.extend(word_code_bits(&h.h1(), false));
-            for w in &f.words {
-                match w {
-                    Slot::Data(d) => code.extend(word_code_bits(d, false)),
-                    Slot::Void => code.extend(void_code_bits(false)),
-                    Slot::Bad(l) => code.extend(bad_word(*l, &mut rng)),
-                    Slot::Missing => unreachable!(),
-                }
-            }
+            frame_code(&mut code, f, cfg.slots, &mut rng);
             while code.len() < start + cfg.period as usize || code.len() % 5 != 0 {
                 push_group(&mut code, CODE_I);
             }
@@ -128,19 +77,8 @@ fn eight_slaves_carry_the_models_frames() {
             p(&c8, "i_si"),
             p(&c8, "o_po"),
         );
-        let (oclk, osmp, owv, okind, odata, oalive, oalarm, ook, ovoid, ostart) = (
-            p(&mo, "clock"),
-            p(&mo, "i_samples"),
-            p(&mo, "o_wvalid"),
-            p(&mo, "o_kind"),
-            p(&mo, "o_data"),
-            p(&mo, "o_alive"),
-            p(&mo, "o_alarm"),
-            p(&mo, "o_ok"),
-            p(&mo, "o_void"),
-            p(&mo, "o_start"),
-        );
-        let mut got: Vec<(Vec<u16>, Vec<Seen>)> = vec![];
+        let (oclk, osmp) = (p(&mo, "clock"), p(&mo, "i_samples"));
+        let mut reader = PacketReader::new(&mo);
         for (t, &pair) in pairs.iter().enumerate() {
             // Node k's inputs belong to the frame that has reached it: the
             // frame enters the chain at `starts[c]` and needs about 7 bit
@@ -165,32 +103,9 @@ fn eight_slaves_carry_the_models_frames() {
             c8.tick(clk);
             mo.set(osmp, c8.get(po));
             mo.tick(oclk);
-            if mo.get(ostart) == 1 {
-                got.push((vec![], vec![]));
-            }
-            if mo.get(owv) == 1 {
-                let Some(cur) = got.last_mut() else { continue };
-                if mo.get(okind) < 2 {
-                    cur.0.push(if mo.get(ook) == 1 {
-                        mo.get(odata) as u16
-                    } else {
-                        0xdead
-                    });
-                } else {
-                    cur.1.push(if mo.get(ook) == 1 {
-                        Seen::Word(
-                            mo.get(odata) as u16,
-                            mo.get(oalive) == 1,
-                            mo.get(oalarm) == 1,
-                        )
-                    } else if mo.get(ovoid) == 1 {
-                        Seen::Void
-                    } else {
-                        Seen::Bad
-                    });
-                }
-            }
+            reader.sample(&mo);
         }
+        let got = reader.packets;
         let ctx = format!("{ppm} ppm, seed {seed} (MERKUR_SEED)");
         assert_eq!(got.len(), recs.len(), "{ctx}: frames out of the chain");
         for (r, (hdr, slots)) in recs.iter().zip(&got) {
@@ -204,15 +119,7 @@ fn eight_slaves_carry_the_models_frames() {
                 "{ctx}: cycle {}: header (HOP)",
                 r.cycle
             );
-            let want: Vec<Seen> = f
-                .words
-                .iter()
-                .map(|w| match w {
-                    Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm),
-                    Slot::Void => Seen::Void,
-                    _ => Seen::Bad,
-                })
-                .collect();
+            let want: Vec<Seen> = f.words.iter().map(seen).collect();
             assert_eq!(
                 slots, &want,
                 "{ctx}: cycle {}: slots leaving the chain",

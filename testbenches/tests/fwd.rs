@@ -7,77 +7,12 @@
 //! bad words still bad.
 
 use merkur_model::config::{self, Config};
-use merkur_model::line::{
-    lead_of, nrzi_encode, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_I, CODE_J,
-    CODE_K,
-};
+use merkur_model::line::{nrzi_encode, push_group, CODE_I};
 use merkur_model::ring::{self, sensor_value, Carry, CycleRecord, EventKind, HeaderRx, Slot};
 use merkur_model::scenario::Kind;
 use merkur_rtl::{fwd::Fwd, monitor::Monitor, verilog::block_verilog};
+use merkur_testbenches::stim::{frame_code, seen, PacketReader, Seen};
 use merkur_testbenches::{ddr_pairs, line_samples, repo_root, verilator::Model, Rng};
-
-/// Code bits of a bad word whose first group shows `lead`.
-fn bad_word(lead: Lead, rng: &mut Rng) -> Vec<u8> {
-    let mut c = match lead {
-        Lead::S => void_code_bits(false),
-        Lead::Alarm => word_code_bits(
-            &Word {
-                data: 0x1000,
-                alarm: true,
-                ..Word::default()
-            },
-            false,
-        ),
-        Lead::Data | Lead::Other => word_code_bits(
-            &Word {
-                data: rng.next_u64() as u16,
-                ..Word::default()
-            },
-            false,
-        ),
-    };
-    if lead == Lead::Other {
-        c[..5].copy_from_slice(&[0, 0, 0, 0, 0]);
-    }
-    assert_eq!(lead_of(c[..5].iter().fold(0, |a, &b| a << 1 | b)), lead);
-    // Break a later group: two adjacent code bits of group 2 (an NRZI error).
-    c[11] ^= 1;
-    c[12] ^= 1;
-    c
-}
-
-fn frame_code(code: &mut Vec<u8>, f: &ring::Frame, slots: usize, rng: &mut Rng) {
-    push_group(code, CODE_J);
-    push_group(code, CODE_K);
-    let HeaderRx::Ok(h) = f.hdr else {
-        panic!("test uses frames with good headers")
-    };
-    code.extend(word_code_bits(&h.h0(slots), false));
-    code.extend(word_code_bits(&h.h1(), false));
-    for w in &f.words {
-        match w {
-            Slot::Data(d) => code.extend(word_code_bits(d, false)),
-            Slot::Void => code.extend(void_code_bits(false)),
-            Slot::Bad(l) => code.extend(bad_word(*l, rng)),
-            Slot::Missing => panic!("test uses complete frames"),
-        }
-    }
-}
-
-#[derive(Debug, PartialEq)]
-enum Seen {
-    Word(u16, bool, bool),
-    Void,
-    Bad,
-}
-
-fn seen(s: &Slot) -> Seen {
-    match s {
-        Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm),
-        Slot::Void => Seen::Void,
-        _ => Seen::Bad,
-    }
-}
 
 fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64) {
     let n = cfg.nodes.len();
@@ -149,20 +84,9 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         p(&mi, "o_phase"),
         p(&mi, "o_hdr_bad"),
     );
-    let (oclk, osmp, owv, okind, odata, oalive, oalarm, ook, ovoid, ostart) = (
-        p(&mo, "clock"),
-        p(&mo, "i_samples"),
-        p(&mo, "o_wvalid"),
-        p(&mo, "o_kind"),
-        p(&mo, "o_data"),
-        p(&mo, "o_alive"),
-        p(&mo, "o_alarm"),
-        p(&mo, "o_ok"),
-        p(&mo, "o_void"),
-        p(&mo, "o_start"),
-    );
+    let (oclk, osmp) = (p(&mo, "clock"), p(&mo, "i_samples"));
+    let mut reader = PacketReader::new(&mo);
     let slot = cfg.nodes[k].address;
-    let mut got: Vec<(Vec<u16>, Vec<Seen>)> = vec![];
     let mut ci = 0usize;
     for (clock, &pair) in pairs.iter().enumerate() {
         // Which cycle's frame is on the line now (for the sensor value and
@@ -195,32 +119,9 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         f.tick(fclk);
         mo.set(osmp, f.get(fline));
         mo.tick(oclk);
-        if mo.get(ostart) == 1 {
-            got.push((vec![], vec![]));
-        }
-        if mo.get(owv) == 1 {
-            let Some(cur) = got.last_mut() else { continue };
-            if mo.get(okind) < 2 {
-                cur.0.push(if mo.get(ook) == 1 {
-                    mo.get(odata) as u16
-                } else {
-                    0xdead
-                });
-            } else {
-                cur.1.push(if mo.get(ook) == 1 {
-                    Seen::Word(
-                        mo.get(odata) as u16,
-                        mo.get(oalive) == 1,
-                        mo.get(oalarm) == 1,
-                    )
-                } else if mo.get(ovoid) == 1 {
-                    Seen::Void
-                } else {
-                    Seen::Bad
-                });
-            }
-        }
+        reader.sample(&mo);
     }
+    let got = reader.packets;
     let ctx = format!(
         "node {k} of {n} ({}), {ppm} ppm, seed {seed} (MERKUR_SEED)",
         cfg.nodes[k].kind.name()

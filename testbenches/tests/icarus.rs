@@ -3,11 +3,10 @@
 //! Verilator, for the model's frames of tb-data/chain9.toml (node 1).
 
 use merkur_model::config;
-use merkur_model::line::{
-    nrzi_encode, push_group, void_code_bits, word_code_bits, CODE_I, CODE_J, CODE_K,
-};
-use merkur_model::ring::{self, sensor_value, Carry, HeaderRx, Slot};
+use merkur_model::line::{nrzi_encode, push_group, CODE_I};
+use merkur_model::ring::{self, sensor_value, Carry};
 use merkur_rtl::{slave::Slave, verilog::block_verilog};
+use merkur_testbenches::stim::frame_code;
 use merkur_testbenches::{ddr_pairs, line_samples, repo_root, verilator::Model, Rng};
 use std::process::Command;
 
@@ -24,20 +23,8 @@ fn slave_under_icarus_matches_verilator() {
         let Carry::Data(f) = &r.fibres[0] else {
             unreachable!()
         };
-        let HeaderRx::Ok(h) = f.hdr else {
-            unreachable!()
-        };
         let start = code.len();
-        push_group(&mut code, CODE_J);
-        push_group(&mut code, CODE_K);
-        code.extend(word_code_bits(&h.h0(cfg.slots), false));
-        code.extend(word_code_bits(&h.h1(), false));
-        for w in &f.words {
-            match w {
-                Slot::Data(d) => code.extend(word_code_bits(d, false)),
-                _ => code.extend(void_code_bits(false)),
-            }
-        }
+        frame_code(&mut code, f, cfg.slots, &mut rng);
         while code.len() < start + cfg.period as usize || code.len() % 5 != 0 {
             push_group(&mut code, CODE_I);
         }

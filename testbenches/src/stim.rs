@@ -1,0 +1,143 @@
+//! Stimulus from the model and reading back what a monitor decodes: shared by
+//! the node and chain tests.
+
+use crate::verilator::Model;
+use crate::Rng;
+use merkur_model::line::{
+    lead_of, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_J, CODE_K,
+};
+use merkur_model::ring::{Frame, HeaderRx, Slot};
+
+/// Code bits of a bad word whose first group shows `lead` (the model keeps
+/// only that of a bad word): a word with that first group and an error in
+/// its third group.
+pub fn bad_word(lead: Lead, rng: &mut Rng) -> Vec<u8> {
+    let mut c = match lead {
+        Lead::S => void_code_bits(false),
+        Lead::Alarm => word_code_bits(
+            &Word {
+                data: 0x1000,
+                alarm: true,
+                ..Word::default()
+            },
+            false,
+        ),
+        Lead::Data | Lead::Other => word_code_bits(
+            &Word {
+                data: rng.next_u64() as u16,
+                ..Word::default()
+            },
+            false,
+        ),
+    };
+    if lead == Lead::Other {
+        c[..5].copy_from_slice(&[0, 0, 0, 0, 0]);
+    }
+    assert_eq!(lead_of(c[..5].iter().fold(0, |a, &b| a << 1 | b)), lead);
+    // Two adjacent code bits of group 2: what one NRZI line-bit error does.
+    c[11] ^= 1;
+    c[12] ^= 1;
+    c
+}
+
+/// Appends the code bits of a model frame with a good header (J K, H0, H1,
+/// slots; bad slots rebuilt by [`bad_word`]). Panics on frames the model
+/// shows with a bad header or missing words: callers pick complete frames.
+pub fn frame_code(code: &mut Vec<u8>, f: &Frame, slots: usize, rng: &mut Rng) {
+    push_group(code, CODE_J);
+    push_group(code, CODE_K);
+    let HeaderRx::Ok(h) = f.hdr else {
+        panic!("frame_code needs a good header")
+    };
+    code.extend(word_code_bits(&h.h0(slots), false));
+    code.extend(word_code_bits(&h.h1(), false));
+    for w in &f.words {
+        match w {
+            Slot::Data(d) => code.extend(word_code_bits(d, false)),
+            Slot::Void => code.extend(void_code_bits(false)),
+            Slot::Bad(l) => code.extend(bad_word(*l, rng)),
+            Slot::Missing => panic!("frame_code needs a complete frame"),
+        }
+    }
+}
+
+/// A slot as a monitor reports it (bad words by class only).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Seen {
+    /// Good word: data, Alive, Alarm.
+    Word(u16, bool, bool),
+    /// VOID.
+    Void,
+    /// Bad.
+    Bad,
+}
+
+/// How the model's slot must look to a monitor.
+pub fn seen(s: &Slot) -> Seen {
+    match s {
+        Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm),
+        Slot::Void => Seen::Void,
+        _ => Seen::Bad,
+    }
+}
+
+/// Collects packets from a Verilated [`merkur_rtl::monitor::Monitor`]:
+/// header words (0xdead when bad) and slots.
+pub struct PacketReader {
+    start: usize,
+    wvalid: usize,
+    kind: usize,
+    data: usize,
+    alive: usize,
+    alarm: usize,
+    ok: usize,
+    void: usize,
+    /// Packets so far: (header words, slots).
+    pub packets: Vec<(Vec<u16>, Vec<Seen>)>,
+}
+
+impl PacketReader {
+    /// Looks up the monitor's ports.
+    pub fn new(m: &Model) -> PacketReader {
+        PacketReader {
+            start: m.port("o_start"),
+            wvalid: m.port("o_wvalid"),
+            kind: m.port("o_kind"),
+            data: m.port("o_data"),
+            alive: m.port("o_alive"),
+            alarm: m.port("o_alarm"),
+            ok: m.port("o_ok"),
+            void: m.port("o_void"),
+            packets: vec![],
+        }
+    }
+
+    /// Reads the monitor's outputs after a clock.
+    pub fn sample(&mut self, m: &Model) {
+        if m.get(self.start) == 1 {
+            self.packets.push((vec![], vec![]));
+        }
+        if m.get(self.wvalid) == 1 {
+            let Some(cur) = self.packets.last_mut() else {
+                return;
+            };
+            let ok = m.get(self.ok) == 1;
+            if m.get(self.kind) < 2 {
+                cur.0
+                    .push(if ok { m.get(self.data) as u16 } else { 0xdead });
+            } else {
+                cur.1.push(if ok {
+                    Seen::Word(
+                        m.get(self.data) as u16,
+                        m.get(self.alive) == 1,
+                        m.get(self.alarm) == 1,
+                    )
+                } else if m.get(self.void) == 1 {
+                    Seen::Void
+                } else {
+                    Seen::Bad
+                });
+            }
+        }
+    }
+}
