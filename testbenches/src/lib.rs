@@ -1,8 +1,12 @@
 //! # merkur-testbenches
 //!
-//! The Verilator harness and the block and ring tests live here (issue 3 on).
-//! For now this crate holds the toolchain check: the system tools the
-//! project pins in `scripts/tools.lock` are installed at those versions.
+//! - [`verilator`]: our Verilator binding (build at run time, cache by hash,
+//!   load, drive ports from Rust, FST waveforms with `MERKUR_WAVE`);
+//! - [`stim`]: line stimulus from the model's frames, reading monitors back;
+//! - line sampling with clock offsets and jitter ([`line_samples`]), seeded
+//!   random numbers ([`Rng`]), the pinned tool list ([`pinned_tools`]).
+//!
+//! The tests in `tests/` check every RTL block against the reference model.
 
 use std::path::PathBuf;
 
