@@ -93,6 +93,7 @@ pub struct Slave {
     armed: DFF<Bit>,
     quiet: DFF<Bits<16>>,
     grace: DFF<Bits<16>>,
+    settle: DFF<Bits<7>>,
     ack_time: DFF<Bits<9>>,
     seen_ack: DFF<Bit>,
     pend_fs: DFF<Bit>,
@@ -152,6 +153,7 @@ impl Slave {
             armed: Default::default(),
             quiet: Default::default(),
             grace: Default::default(),
+            settle: Default::default(),
             ack_time: Default::default(),
             seen_ack: Default::default(),
             pend_fs: Default::default(),
@@ -178,9 +180,9 @@ impl Logic for Slave {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, mode, failsafe, rw, armed, quiet, grace, ack_time, seen_ack, pend_fs,
-            pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_level, rep_pair, idle_level,
-            idle_half
+            self, clock, mode, failsafe, rw, armed, quiet, grace, settle, ack_time, seen_ack,
+            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_level, rep_pair,
+            idle_level, idle_half
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -307,12 +309,17 @@ impl Logic for Slave {
         if self.grace.q.val() != 0 {
             self.grace.d.next = self.grace.q.val() - 1;
         }
+        if self.settle.q.val() != 0 {
+            self.settle.d.next = self.settle.q.val() - 1;
+        }
 
         // Switchbox decisions (protocol §10, §12).
         // Stream controllers act only once the node is armed (its first good
-        // frame): at power-up every line is dark.
+        // frame): at power-up every line is dark. After a switchbox change
+        // the receive ports need 50 bit times to lock to their new lines;
+        // their verdicts about the old lines are not acted on.
         self.new_mode.next = self.mode.q.val();
-        if !self.armed.q.val() {
+        if !self.armed.q.val() | (self.settle.q.val() != 0) {
         } else if !self.wrapped.val() {
             if self.rx_in.o_cf.val() {
                 self.new_mode.next = 1.into();
@@ -356,6 +363,7 @@ impl Logic for Slave {
         }
         if self.new_mode.val() != self.mode.q.val() {
             self.mode.d.next = self.new_mode.val();
+            self.settle.d.next = 100.into();
             self.pend_rc.d.next = true;
             self.ack_time.d.next = 0.into();
             self.seen_ack.d.next = false;

@@ -7,7 +7,7 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_ack` | in | 1 | clock | ACK bit (partner's TST heard) |
+//! | `i_ack` | in | 1 | clock | ACK bit (partner's TST heard), taken at each packet start |
 //! | `i_address` | in | 12 | static | node address |
 //! | `o_line` | out | 2 | clock | line, DDR pair |
 //!
@@ -36,6 +36,7 @@ pub struct TstTx {
     tx: NrziTx,
     half: DFF<Bit>,
     gnum: DFF<Bits<4>>,
+    ack: DFF<Bit>,
     word: Signal<Local, Bits<16>>,
     nib: Signal<Local, Bits<4>>,
     p_a: Signal<Local, Bit>,
@@ -46,13 +47,14 @@ pub struct TstTx {
 impl Logic for TstTx {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, half, gnum);
+        dff_setup!(self, clock, half, gnum, ack);
         self.tx.clock.next = self.clock.val();
         self.half.d.next = !self.half.q.val();
         self.tx.i_bit_en.next = self.half.q.val();
         // H0 = {10, 0, ACK, ADDR}; H1 = NOT H0.
         self.word.next = bit_cast::<16, 12>(self.i_address.val()) | 0x8000;
-        if self.i_ack.val() {
+        // ACK is taken once per packet, so H0 and H1 always agree.
+        if self.ack.q.val() {
             self.word.next = self.word.val() | 0x1000;
         }
         if self.gnum.q.val() >= 7 {
@@ -127,6 +129,7 @@ impl Logic for TstTx {
             self.gnum.d.next = self.gnum.q.val() + 1;
             if self.gnum.q.val() == 12 {
                 self.gnum.d.next = 0.into();
+                self.ack.d.next = self.i_ack.val();
             }
         }
         self.o_line.next = 0.into();
