@@ -34,7 +34,7 @@
 //! | `i_act_out` | in | 16 | clock | actuator output register |
 //! | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
 //! | `i_alarm_req`, `i_alarm_reason` | in | 1, 4 | clock | alarm to send |
-//! | `o_alarm_sent` | out | 1 | clock | the alarm went out |
+//! | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 //! | `o_pkt_done` | out | 1 | clock | a DATA packet's last slot went through |
 //! | `o_toggle` | out | 1 | clock | the Alive flip-flop |
 //! | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
@@ -85,6 +85,8 @@ pub struct Fwd {
     pub i_alarm_reason: Signal<In, Bits<4>>,
     /// Alarm sent.
     pub o_alarm_sent: Signal<Out, Bit>,
+    /// The reason of the alarm sent (valid with `o_alarm_sent`).
+    pub o_sent_reason: Signal<Out, Bits<4>>,
     /// DATA packet done.
     pub o_pkt_done: Signal<Out, Bit>,
     /// Alive flip-flop.
@@ -113,6 +115,7 @@ pub struct Fwd {
     out_level: DFF<Bit>,
     pair: DFF<Bits<2>>,
     sent: DFF<Bit>,
+    sent_reason: DFF<Bits<4>>,
     done: DFF<Bit>,
     code: Signal<Local, Bit>,
     shifted: Signal<Local, Bits<10>>,
@@ -161,6 +164,7 @@ impl Fwd {
             i_alarm_req: Default::default(),
             i_alarm_reason: Default::default(),
             o_alarm_sent: Default::default(),
+            o_sent_reason: Default::default(),
             o_pkt_done: Default::default(),
             o_toggle: Default::default(),
             o_line: Default::default(),
@@ -186,6 +190,7 @@ impl Fwd {
             out_level: Default::default(),
             pair: Default::default(),
             sent: Default::default(),
+            sent_reason: Default::default(),
             done: Default::default(),
             code: Default::default(),
             shifted: Default::default(),
@@ -215,8 +220,31 @@ impl Logic for Fwd {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, prev, window, delay, inpkt, bitc, gidx, wcount, slot, dead, action, d_a,
-            d_b, carry, f_data, f_alive, f_alarm, toggle, prev_alarm, out_level, pair, sent, done
+            self,
+            clock,
+            prev,
+            window,
+            delay,
+            inpkt,
+            bitc,
+            gidx,
+            wcount,
+            slot,
+            dead,
+            action,
+            d_a,
+            d_b,
+            carry,
+            f_data,
+            f_alive,
+            f_alarm,
+            toggle,
+            prev_alarm,
+            out_level,
+            pair,
+            sent,
+            sent_reason,
+            done
         );
         // NRZI decode and the group that completes with this bit.
         self.code.next = self.i_level.val() ^ self.prev.q.val();
@@ -533,6 +561,7 @@ impl Logic for Fwd {
                         if self.own.val() {
                             self.prev_alarm.d.next = self.send_alarm.val();
                             self.sent.d.next = self.send_alarm.val();
+                            self.sent_reason.d.next = self.i_alarm_reason.val();
                         }
                     }
                     self.d_a.d.next =
@@ -599,6 +628,7 @@ impl Logic for Fwd {
             self.dead.d.next = true;
         }
         self.o_alarm_sent.next = self.sent.q.val();
+        self.o_sent_reason.next = self.sent_reason.q.val();
         self.o_pkt_done.next = self.done.q.val();
         self.o_toggle.next = self.toggle.q.val();
         self.o_line.next = self.pair.q.val();

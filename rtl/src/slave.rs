@@ -240,22 +240,15 @@ impl Logic for Slave {
             | self.pend_i1.q.val()
             | self.pend_i2.q.val();
         self.fwd.i_alarm_reason.next = self.reason.val();
-        if self.i_irq1.val() {
-            self.pend_i1.d.next = true;
-        }
-        if self.i_irq2.val() {
-            self.pend_i2.d.next = true;
-        }
-        if self.i_fs_req.val() {
-            self.pend_fs.d.next = true;
-        }
+        // Clear what was sent (by the reason the forwarder took, even if
+        // the queue changed since).
         if self.fwd.o_alarm_sent.val() {
-            if self.reason.val() == 3 {
+            if self.fwd.o_sent_reason.val() == 3 {
                 self.pend_fs.d.next = false;
                 self.failsafe.d.next = true;
-            } else if self.reason.val() == 1 {
+            } else if self.fwd.o_sent_reason.val() == 1 {
                 self.pend_i1.d.next = false;
-            } else if self.reason.val() == 2 {
+            } else if self.fwd.o_sent_reason.val() == 2 {
                 self.pend_i2.d.next = false;
             } else {
                 self.pend_rc.d.next = false;
@@ -266,6 +259,17 @@ impl Logic for Slave {
         // counter restarts below at every good header).
         if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
             self.quiet.d.next = self.quiet.q.val() + 1;
+        }
+        // New requests after the clearing: a request in the clock its
+        // predecessor went out is kept.
+        if self.i_irq1.val() {
+            self.pend_i1.d.next = true;
+        }
+        if self.i_irq2.val() {
+            self.pend_i2.d.next = true;
+        }
+        if self.i_fs_req.val() {
+            self.pend_fs.d.next = true;
         }
         // What INPUT's headers say: FS, ring wrapped (RWC in H0, RWP in H1).
         if self.rx_in.o_wvalid.val() & self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 0) {
