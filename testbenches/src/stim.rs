@@ -4,7 +4,7 @@
 use crate::verilator::Model;
 use crate::Rng;
 use merkur_model::line::{
-    lead_of, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_J, CODE_K,
+    lead_of, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_I, CODE_J, CODE_K,
 };
 use merkur_model::ring::{Frame, HeaderRx, Slot};
 
@@ -59,6 +59,28 @@ pub fn frame_code(code: &mut Vec<u8>, f: &Frame, slots: usize, rng: &mut Rng) {
             Slot::Missing => panic!("frame_code needs a complete frame"),
         }
     }
+}
+
+/// Appends one TST packet (protocol §5) and its idle group: 65 bit times.
+pub fn tst_code(code: &mut Vec<u8>, ack: bool, addr: u16) {
+    push_group(code, CODE_J);
+    push_group(code, CODE_K);
+    let d = 0x8000 | (ack as u16) << 12 | (addr & 0xfff);
+    code.extend(word_code_bits(
+        &Word {
+            data: d,
+            ..Word::default()
+        },
+        false,
+    ));
+    code.extend(word_code_bits(
+        &Word {
+            data: !d,
+            ..Word::default()
+        },
+        false,
+    ));
+    push_group(code, CODE_I);
 }
 
 /// A slot as a monitor reports it (bad words by class only).

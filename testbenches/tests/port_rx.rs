@@ -8,6 +8,7 @@
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::Header;
 use merkur_rtl::{port_rx::PortRx, verilog::block_verilog};
+use merkur_testbenches::stim::tst_code;
 use merkur_testbenches::{ddr_pairs, line_samples, verilator::Model, Rng};
 
 const SLOTS: usize = 16;
@@ -40,27 +41,6 @@ fn data_frame(code: &mut Vec<u8>, rng: &mut Rng, bad_from: usize, bad_count: usi
         ));
     }
     flips
-}
-
-fn tst(code: &mut Vec<u8>, ack: bool, addr: u16) {
-    push_group(code, CODE_J);
-    push_group(code, CODE_K);
-    let d = 0x8000 | (ack as u16) << 12 | addr;
-    code.extend(word_code_bits(
-        &Word {
-            data: d,
-            ..Word::default()
-        },
-        false,
-    ));
-    code.extend(word_code_bits(
-        &Word {
-            data: !d,
-            ..Word::default()
-        },
-        false,
-    ));
-    idles(code, 1);
 }
 
 struct Probe {
@@ -166,7 +146,7 @@ fn test_signal_and_its_end() {
         let mut code = vec![];
         idles(&mut code, 8);
         for _ in 0..20 {
-            tst(&mut code, ack, 0x123);
+            tst_code(&mut code, ack, 0x123);
         }
         let n_tst = code.len();
         idles(&mut code, 80);

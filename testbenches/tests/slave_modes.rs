@@ -6,10 +6,10 @@
 //! is a second fault → failsafe, FS set in the headers it forwards and its
 //! slot no longer written.
 
-use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
+use merkur_model::line::{nrzi_encode, push_group, Word, CODE_I};
 use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
 use merkur_rtl::{monitor::Monitor, slave::Slave, verilog::block_verilog};
-use merkur_testbenches::stim::{frame_code, PacketReader, Seen};
+use merkur_testbenches::stim::{frame_code, tst_code, PacketReader, Seen};
 use merkur_testbenches::{ddr_pairs, line_samples, verilator::Model, Rng};
 
 const SLOTS: usize = 4;
@@ -50,24 +50,7 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
         }
         Seg::Tst { ack } => {
             while code.len() < start + PERIOD - 65 {
-                push_group(code, CODE_J);
-                push_group(code, CODE_K);
-                let d = 0x8000 | (ack as u16) << 12 | 3;
-                code.extend(word_code_bits(
-                    &Word {
-                        data: d,
-                        ..Word::default()
-                    },
-                    false,
-                ));
-                code.extend(word_code_bits(
-                    &Word {
-                        data: !d,
-                        ..Word::default()
-                    },
-                    false,
-                ));
-                push_group(code, CODE_I);
+                tst_code(code, ack, 3);
             }
         }
         Seg::Idle | Seg::Dark => {}
