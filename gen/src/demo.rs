@@ -23,13 +23,14 @@ fn delivered(cfg: &Config, r: &CycleRecord) -> Vec<u16> {
 }
 
 fn reason_name(r: u8) -> String {
+    use merkur_model::ring::reason::*;
     match r {
-        1 => "IRQ1".into(),
-        2 => "IRQ2".into(),
-        3 => "FAILSAFE".into(),
-        4 => "RECONFIG(N)".into(),
-        5 => "RECONFIG(WU)".into(),
-        6 => "RECONFIG(WD)".into(),
+        IRQ1 => "IRQ1".into(),
+        IRQ2 => "IRQ2".into(),
+        FAILSAFE => "FAILSAFE".into(),
+        RECONFIG_N => "RECONFIG(N)".into(),
+        RECONFIG_WU => "RECONFIG(WU)".into(),
+        RECONFIG_WD => "RECONFIG(WD)".into(),
         r => format!("reason {r}"),
     }
 }

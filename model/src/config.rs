@@ -16,8 +16,6 @@ pub const MIN_GAP_BITS: u32 = 20;
 pub const NODE_DELAY_BITS: u32 = 12;
 /// Upper bound of one node's delay on the secondary pass-through, in bit times.
 pub const PASS_DELAY_BITS: u32 = 12;
-/// Period of TST packets on a wrapped link, in bit times.
-pub const TST_PERIOD_BITS: u32 = 65;
 /// Reintegration needs this many TST periods inside one cycle.
 pub const MIN_PERIOD_BITS: u32 = 300;
 

@@ -539,18 +539,23 @@ impl Ring {
                 self.nodes[node].db[slot] = data;
             }
         }
-        for &(qc, node, line) in &self.cfg.irqs.clone() {
-            if qc == c {
-                let r = match line {
-                    IrqLine::Irq1 => reason::IRQ1,
-                    IrqLine::Irq2 => reason::IRQ2,
-                    IrqLine::Failsafe => reason::FAILSAFE,
-                };
-                self.nodes[node].pending.insert(Pending {
-                    prio: prio(r),
-                    reason: r,
-                });
-            }
+        let irqs: Vec<(usize, IrqLine)> = self
+            .cfg
+            .irqs
+            .iter()
+            .filter(|(qc, _, _)| *qc == c)
+            .map(|&(_, node, line)| (node, line))
+            .collect();
+        for (node, line) in irqs {
+            let r = match line {
+                IrqLine::Irq1 => reason::IRQ1,
+                IrqLine::Irq2 => reason::IRQ2,
+                IrqLine::Failsafe => reason::FAILSAFE,
+            };
+            self.nodes[node].pending.insert(Pending {
+                prio: prio(r),
+                reason: r,
+            });
         }
         // 2. Faults of this cycle.
         let faults: Vec<Fault> = self

@@ -45,7 +45,7 @@ use rust_hdl::prelude::*;
 pub const LOS_SAMPLES: u64 = 64;
 
 /// Oversampling clock and data recovery.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct Cdr {
     /// Core clock (2× line rate).
     pub clock: Signal<In, Clock>,
@@ -60,6 +60,7 @@ pub struct Cdr {
     /// Which sample of its clock was the bit's centre (0 first, 1 second):
     /// lets a transmitter repeat the edge with half-clock resolution.
     pub o_phase: Signal<Out, Bit>,
+    quiet_last: Constant<Bits<7>>,
     last: DFF<Bit>,
     phase: DFF<Bit>,
     count: DFF<Bits<2>>,
@@ -71,6 +72,32 @@ pub struct Cdr {
     edge_b: Signal<Local, Bit>,
     count_a: Signal<Local, Bits<2>>,
     count_b: Signal<Local, Bits<2>>,
+}
+
+impl Default for Cdr {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            i_samples: Default::default(),
+            o_valid: Default::default(),
+            o_bit: Default::default(),
+            o_los: Default::default(),
+            o_phase: Default::default(),
+            // Two samples per clock: LOS_SAMPLES / 2 clocks, counted from 0.
+            quiet_last: Constant::new((LOS_SAMPLES / 2 - 1).to_bits()),
+            last: Default::default(),
+            phase: Default::default(),
+            count: Default::default(),
+            quiet: Default::default(),
+            rx_valid: Default::default(),
+            rx_bit: Default::default(),
+            los_flag: Default::default(),
+            edge_a: Default::default(),
+            edge_b: Default::default(),
+            count_a: Default::default(),
+            count_b: Default::default(),
+        }
+    }
 }
 
 impl Logic for Cdr {
@@ -107,7 +134,7 @@ impl Logic for Cdr {
         if self.edge_a.val() | self.edge_b.val() {
             self.quiet.d.next = 0.into();
             self.los_flag.d.next = false;
-        } else if self.quiet.q.val() == 31 {
+        } else if self.quiet.q.val() == self.quiet_last.val() {
             self.los_flag.d.next = true;
         } else {
             self.quiet.d.next = self.quiet.q.val() + 1;

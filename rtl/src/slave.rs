@@ -42,6 +42,9 @@ use rust_hdl::prelude::*;
 
 /// Clocks a repaired link must show ACKed TST before a WD node unwraps (2 TST periods).
 pub const REINTEGRATE_CLOCKS: u64 = 260;
+/// Clocks after a switchbox change during which the stream controllers are
+/// not acted on (50 bit times: the receivers lock to their new lines).
+pub const SETTLE_CLOCKS: u64 = 100;
 
 /// Slave node.
 #[derive(LogicBlock)]
@@ -82,6 +85,8 @@ pub struct Slave {
     pub o_perr: Signal<Out, Bits<16>>,
     /// Rejected headers at INPUT.
     pub o_ferr: Signal<Out, Bits<16>>,
+    reintegrate: Constant<Bits<9>>,
+    settle_start: Constant<Bits<7>>,
     sbox: Switchbox,
     rx_in: PortRx,
     rx_bsr: PortRx,
@@ -142,6 +147,8 @@ impl Slave {
             o_failsafe: Default::default(),
             o_perr: Default::default(),
             o_ferr: Default::default(),
+            reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
+            settle_start: Constant::new(SETTLE_CLOCKS.to_bits()),
             sbox: Default::default(),
             rx_in: PortRx::new(false),
             rx_bsr: PortRx::new(false),
@@ -349,7 +356,7 @@ impl Logic for Slave {
             }
             if !self.failsafe.q.val() {
                 if (self.mode.q.val() == 2)
-                    & (self.ack_time.q.val() >= 260)
+                    & (self.ack_time.q.val() >= self.reintegrate.val())
                     & self.rx_in.o_start.val()
                 {
                     self.new_mode.next = 0.into();
@@ -367,7 +374,7 @@ impl Logic for Slave {
         }
         if self.new_mode.val() != self.mode.q.val() {
             self.mode.d.next = self.new_mode.val();
-            self.settle.d.next = 100.into();
+            self.settle.d.next = self.settle_start.val();
             self.pend_rc.d.next = true;
             self.ack_time.d.next = 0.into();
             self.seen_ack.d.next = false;

@@ -41,7 +41,7 @@ pub const TST_HOLD_CLOCKS: u64 = 260;
 pub const BAD_WORDS: u64 = 8;
 
 /// Stream controller.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct StreamCtrl {
     /// Core clock.
     pub clock: Signal<In, Clock>,
@@ -67,12 +67,41 @@ pub struct StreamCtrl {
     pub o_tst: Signal<Out, Bit>,
     /// ACK bit of the last TST.
     pub o_ack: Signal<Out, Bit>,
+    hold_start: Constant<Bits<9>>,
+    bad_max: Constant<Bits<4>>,
     h0: DFF<Bits<16>>,
     bad: DFF<Bits<4>>,
     hold: DFF<Bits<9>>,
     tst: DFF<Bit>,
     ack: DFF<Bit>,
     cf: DFF<Bit>,
+}
+
+impl Default for StreamCtrl {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            i_los: Default::default(),
+            i_wvalid: Default::default(),
+            i_kind: Default::default(),
+            i_ok: Default::default(),
+            i_void: Default::default(),
+            i_data: Default::default(),
+            i_ptype: Default::default(),
+            i_tst_fail: Default::default(),
+            o_cf: Default::default(),
+            o_tst: Default::default(),
+            o_ack: Default::default(),
+            hold_start: Constant::new((TST_HOLD_CLOCKS - 1).to_bits()),
+            bad_max: Constant::new(BAD_WORDS.to_bits()),
+            h0: Default::default(),
+            bad: Default::default(),
+            hold: Default::default(),
+            tst: Default::default(),
+            ack: Default::default(),
+            cf: Default::default(),
+        }
+    }
 }
 
 impl Logic for StreamCtrl {
@@ -82,7 +111,7 @@ impl Logic for StreamCtrl {
         if self.i_wvalid.val() {
             if self.i_ok.val() {
                 self.bad.d.next = 0.into();
-            } else if !self.i_void.val() & (self.bad.q.val() != 8) {
+            } else if !self.i_void.val() & (self.bad.q.val() != self.bad_max.val()) {
                 self.bad.d.next = self.bad.q.val() + 1;
             }
             if (self.i_kind.val() == 0) & self.i_ok.val() {
@@ -103,10 +132,11 @@ impl Logic for StreamCtrl {
         {
             self.tst.d.next = true;
             self.ack.d.next = self.h0.q.val().get_bit(12);
-            self.hold.d.next = 259.into();
+            self.hold.d.next = self.hold_start.val();
         }
-        self.cf.d.next =
-            self.i_los.val() | (self.bad.q.val() == 8) | (self.tst.q.val() & self.i_tst_fail.val());
+        self.cf.d.next = self.i_los.val()
+            | (self.bad.q.val() == self.bad_max.val())
+            | (self.tst.q.val() & self.i_tst_fail.val());
         self.o_cf.next = self.cf.q.val();
         self.o_tst.next = self.tst.q.val();
         self.o_ack.next = self.ack.q.val();

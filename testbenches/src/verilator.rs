@@ -12,8 +12,10 @@
 
 use libloading::{Library, Symbol};
 use sha2::{Digest, Sha256};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Direction of a top-level port.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -120,13 +122,30 @@ fn wrapper_cpp(ports: &[Port]) -> String {
     s
 }
 
-/// Version line of the installed Verilator.
+/// Version line of the installed Verilator (asked once per process).
 pub fn verilator_version() -> Result<String, String> {
-    let o = Command::new("verilator")
-        .arg("--version")
-        .output()
-        .map_err(|e| format!("verilator not runnable ({e}); run scripts/install-tools.sh"))?;
-    Ok(String::from_utf8_lossy(&o.stdout).trim().to_string())
+    static VERSION: OnceLock<Result<String, String>> = OnceLock::new();
+    VERSION
+        .get_or_init(|| {
+            let o = Command::new("verilator")
+                .arg("--version")
+                .output()
+                .map_err(|e| {
+                    format!("verilator not runnable ({e}); run scripts/install-tools.sh")
+                })?;
+            Ok(String::from_utf8_lossy(&o.stdout).trim().to_string())
+        })
+        .clone()
+}
+
+/// One lock per model hash, shared by the threads of this process.
+fn build_gate(hash: &str) -> Arc<Mutex<()>> {
+    static GATES: OnceLock<Mutex<HashMap<String, Arc<Mutex<()>>>>> = OnceLock::new();
+    let mut gates = GATES
+        .get_or_init(|| Mutex::new(HashMap::new()))
+        .lock()
+        .unwrap_or_else(|e| e.into_inner());
+    gates.entry(hash.to_string()).or_default().clone()
 }
 
 fn cache_root() -> PathBuf {
@@ -187,6 +206,10 @@ pub fn build_library(verilog: &str) -> Result<(PathBuf, Vec<Port>), String> {
         .collect();
     let dir = cache_root().join(&hash);
     let lib = dir.join("libmodel.so");
+    // Tests run in parallel threads: the first to need a model builds it,
+    // the others wait for that build instead of repeating it.
+    let gate = build_gate(&hash);
+    let _held = gate.lock().unwrap_or_else(|e| e.into_inner());
     if lib.exists() {
         return Ok((lib, ports));
     }

@@ -4,8 +4,11 @@
 //! of signal within 16 bit times of a dark line and never on a live one.
 
 use merkur_model::line::{nrzi_encode, push_group, DATA_CODES};
-use merkur_rtl::{cdr::Cdr, verilog::block_verilog};
-use merkur_testbenches::{verilator::Model, Rng};
+use merkur_rtl::{
+    cdr::{Cdr, LOS_SAMPLES},
+    verilog::block_verilog,
+};
+use merkur_testbenches::{line_samples, verilator::Model, Rng};
 
 /// Line levels of `bits` NRZI bits of random data groups.
 fn line_levels(rng: &mut Rng, bits: usize) -> Vec<u8> {
@@ -16,30 +19,6 @@ fn line_levels(rng: &mut Rng, bits: usize) -> Vec<u8> {
     code.truncate(bits);
     let mut level = 0;
     nrzi_encode(&code, &mut level)
-}
-
-/// Samples (4 per nominal bit) of a sender whose bit period is 4·(1+δ)
-/// samples, starting at phase `phase`, each bit boundary moved by uniform
-/// jitter in ±`jitter` samples.
-fn sample(levels: &[u8], delta: f64, phase: f64, jitter: f64, rng: &mut Rng) -> Vec<u8> {
-    let period = 4.0 * (1.0 + delta);
-    let bounds: Vec<f64> = (0..=levels.len())
-        .map(|k| {
-            let j = (rng.below(1 << 20) as f64 / (1u64 << 20) as f64 * 2.0 - 1.0) * jitter;
-            phase + k as f64 * period + j
-        })
-        .collect();
-    let end = bounds[levels.len()].floor() as usize;
-    let mut out = Vec::with_capacity(end);
-    let mut k = 0;
-    for n in 0..end {
-        let t = n as f64;
-        while k + 1 < levels.len() && t >= bounds[k + 1] {
-            k += 1;
-        }
-        out.push(if t < bounds[0] { 0 } else { levels[k] });
-    }
-    out
 }
 
 struct Run {
@@ -92,7 +71,7 @@ fn locks_and_never_slips_at_2000_ppm_with_jitter() {
         let mut rng = Rng::new(seed ^ (delta_ppm as i64 as u64));
         let levels = line_levels(&mut rng, nbits);
         let phase = rng.below(400) as f64 / 100.0;
-        let samples = sample(&levels, delta_ppm * 1e-6, phase, 0.45, &mut rng);
+        let samples = line_samples(&levels, delta_ppm, phase, 0.45, &mut rng);
         let r = run(&mut m, &samples);
         let ctx = format!("seed {seed} (MERKUR_SEED), {delta_ppm} ppm, phase {phase}");
         assert!(!r.los_seen, "{ctx}: loss of signal on a live line");
@@ -121,7 +100,7 @@ fn loss_of_signal_within_16_bit_times() {
     let mut rng = Rng::new(seed);
     let mut m = Model::build(&block_verilog(Cdr::default())).unwrap();
     let levels = line_levels(&mut rng, 2000);
-    let mut samples = sample(&levels, 0.0, 1.3, 0.2, &mut rng);
+    let mut samples = line_samples(&levels, 0.0, 1.3, 0.2, &mut rng);
     samples.truncate(samples.len() & !1);
     let r = run(&mut m, &samples);
     assert!(!r.los_seen, "seed {seed}: no loss of signal on a live line");
@@ -138,7 +117,8 @@ fn loss_of_signal_within_16_bit_times() {
             "seed {seed}: no loss of signal after {clocks} clocks"
         );
     }
-    // 16 bit times = 32 clocks, plus the register stage.
+    // Protocol §9: 16 bit times = 64 samples = 32 clocks, plus the register stage.
+    assert_eq!(LOS_SAMPLES, 16 * 4, "the block's constant is the spec's");
     assert!(clocks >= 30, "loss of signal too early: {clocks} clocks");
     // The next edge clears it.
     m.set(s, (last ^ 1) | (last ^ 1) << 1);

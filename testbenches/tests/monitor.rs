@@ -12,15 +12,8 @@ use merkur_model::line::{
 };
 use merkur_model::ring::{self, Carry, HeaderRx, Slot};
 use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
-use merkur_testbenches::{repo_root, verilator::Model, Rng};
-
-/// What the monitor must report for one packet.
-#[derive(Debug, Clone, PartialEq)]
-enum Seen {
-    Word(u16, bool, bool),
-    Void,
-    Bad,
-}
+use merkur_testbenches::stim::Seen;
+use merkur_testbenches::{line_samples, repo_root, verilator::Model, Rng};
 
 struct Packet {
     hdr: HeaderRx,
@@ -115,22 +108,8 @@ fn run_scenario(name: &str, delta_ppm: f64) {
     for &f in &flips {
         line[f] ^= 1;
     }
-    // Sample: 4 per nominal bit, bit period 4(1+delta), jitter ±0.3 sample.
-    let period = 4.0 * (1.0 + delta_ppm * 1e-6);
     let phase = rng.below(400) as f64 / 100.0;
-    let mut samples = vec![];
-    let mut k = 0usize;
-    let mut next_bound = phase + period;
-    let mut t = 0.0;
-    while k < line.len() {
-        while t >= next_bound && k < line.len() {
-            k += 1;
-            let j = (rng.below(1000) as f64 / 1000.0 * 2.0 - 1.0) * 0.3;
-            next_bound = phase + (k + 1) as f64 * period + j;
-        }
-        samples.push(if k < line.len() { line[k] } else { 1 });
-        t += 1.0;
-    }
+    let samples = line_samples(&line, delta_ppm, phase, 0.3, &mut rng);
     let mut m = Model::build(&block_verilog(Monitor::new(false))).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
     let (clk, smp, wv, kind, data, alive, alarm, ok, void, hbad, start) = (

@@ -7,6 +7,7 @@
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::Header;
+use merkur_rtl::stream_ctrl::{BAD_WORDS, TST_HOLD_CLOCKS};
 use merkur_rtl::{port_rx::PortRx, verilog::block_verilog};
 use merkur_testbenches::stim::tst_code;
 use merkur_testbenches::{ddr_pairs, line_samples, verilator::Model, Rng};
@@ -177,6 +178,13 @@ fn test_signal_and_its_end() {
 
 #[test]
 fn eight_bad_words_are_a_channel_failure_seven_are_not() {
+    // Protocol §9: 8 consecutive bad words; a test signal held 130 bit times.
+    assert_eq!(BAD_WORDS, 8, "the block's constant is the spec's");
+    assert_eq!(
+        TST_HOLD_CLOCKS,
+        130 * 2,
+        "the block's constant is the spec's"
+    );
     let seed = Rng::seed(0xbad8);
     let mut rng = Rng::new(seed);
     for (n, expect) in [(7usize, false), (8, true)] {

@@ -7,7 +7,7 @@
 //! slot no longer written.
 
 use merkur_model::line::{nrzi_encode, push_group, Word, CODE_I};
-use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
+use merkur_model::ring::{Frame, Header, HeaderRx, Mode, Slot};
 use merkur_rtl::{monitor::Monitor, slave::Slave, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, tst_code, PacketReader, Seen};
 use merkur_testbenches::{ddr_pairs, line_samples, verilator::Model, Rng};
@@ -158,7 +158,8 @@ fn wrap_reintegrate_and_failsafe() {
     // Mode sequence: N, WU (when PI went dark), N (after the repair), WU
     // again (second fault, with failsafe).
     let seq: Vec<u64> = modes.iter().map(|&(m, _)| m).collect();
-    assert_eq!(seq, vec![0, 1, 0, 1], "{ctx}: mode sequence {modes:?}");
+    let (n, wu) = (Mode::N.code() as u64, Mode::Wu.code() as u64);
+    assert_eq!(seq, vec![n, wu, n, wu], "{ctx}: mode sequence {modes:?}");
     let wrap_at = modes[1].1;
     assert!(
         wrap_at > bit(5) && wrap_at < bit(5) + 40,

@@ -2,7 +2,8 @@
 //! `ring::table1` (every mode, every value of every input).
 
 use merkur_model::ring::{table1, Mode, Port};
-use merkur_rtl::{switchbox::Switchbox, verilog::block_verilog};
+use merkur_rtl::switchbox::{Switchbox, MODE_N, MODE_WD, MODE_WU};
+use merkur_rtl::verilog::block_verilog;
 use merkur_testbenches::verilator::Model;
 
 #[test]
@@ -22,7 +23,17 @@ fn table1_exhaustively() {
         p(&m, "o_po"),
         p(&m, "o_so"),
     );
-    for (code, md) in [(0u64, Mode::N), (1, Mode::Wu), (2, Mode::Wd), (3, Mode::N)] {
+    // Mode codes are the model's (protocol §11 RECONFIG codes); code 3 is unused and acts as N.
+    assert_eq!(
+        [MODE_N, MODE_WU, MODE_WD],
+        [
+            Mode::N.code() as u64,
+            Mode::Wu.code() as u64,
+            Mode::Wd.code() as u64
+        ]
+    );
+    let cases = [Mode::N, Mode::Wu, Mode::Wd].map(|m| (m.code() as u64, m));
+    for (code, md) in cases.into_iter().chain([(3, Mode::N)]) {
         let (t_in, t_out, t_bsr, t_bss) = table1(md);
         for v in 0..256u64 {
             let (vpi, vsi, vout, vbss) = (v & 3, v >> 2 & 3, v >> 4 & 3, v >> 6 & 3);
