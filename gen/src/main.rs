@@ -1,7 +1,7 @@
 //! `merkur`: the command-line tool of the merkur project.
 //!
-//! Subcommands that exist work; nothing here is a placeholder. Later issues
-//! add Verilog generation, RTL simulation and synthesis.
+//! Subcommands that exist work; nothing here is a placeholder. Synthesis
+//! comes with a later issue.
 
 use clap::{Parser, Subcommand};
 use merkur_model::{config, ring, trace};
@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 mod demo;
+mod sim;
 
 #[derive(Parser)]
 #[command(
@@ -40,11 +41,30 @@ enum Cmd {
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
+    /// Write the Verilog of a scenario's ring (node modules, monitors, the `merkur_ring` top) and the lint waivers.
+    Verilog {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+        /// Output directory (created if missing); files are written atomically.
+        #[arg(short, long, value_name = "DIR")]
+        output: PathBuf,
+    },
+    /// Run a scenario's ring as Verilog in Verilator and compare it with the model's golden trace.
+    Sim {
+        /// Scenario file (TOML).
+        scenario: PathBuf,
+        /// Write an FST waveform (and a GTKWave save file beside it, FILE.gtkw).
+        #[arg(long, value_name = "FILE")]
+        wave: Option<PathBuf>,
+        /// Seed of the nodes' clock phases.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+    },
     /// Run the model on the built-in 8-node ring with one line break and explain what happens.
     Demo,
 }
 
-fn read_scenario(path: &Path) -> Result<(String, config::Config), String> {
+pub(crate) fn read_scenario(path: &Path) -> Result<(String, config::Config), String> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("error: cannot read scenario {}: {e}", path.display()))?;
     let name = path.display().to_string();
@@ -54,7 +74,7 @@ fn read_scenario(path: &Path) -> Result<(String, config::Config), String> {
 
 /// Writes `data` to `path` through a temporary file in the same directory,
 /// so a failed run never leaves a half-written file.
-fn write_atomic(path: &Path, data: &str) -> Result<(), String> {
+pub(crate) fn write_atomic(path: &Path, data: &str) -> Result<(), String> {
     let dir = path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -170,6 +190,16 @@ fn main() -> ExitCode {
             line_rate,
         } => check(scenario, *line_rate),
         Cmd::Trace { scenario, output } => trace_cmd(scenario, output.as_deref()),
+        Cmd::Verilog { scenario, output } => sim::verilog(scenario, output),
+        Cmd::Sim {
+            scenario,
+            wave,
+            seed,
+        } => match sim::sim(scenario, wave.as_deref(), *seed) {
+            Ok(true) => Ok(()),
+            Ok(false) => return ExitCode::from(1),
+            Err(e) => Err(e),
+        },
         Cmd::Demo => demo::run(),
     };
     match r {

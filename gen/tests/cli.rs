@@ -37,6 +37,8 @@ fn every_subcommand_has_help() {
         vec!["check", "--help"],
         vec!["trace", "--help"],
         vec!["demo", "--help"],
+        vec!["verilog", "--help"],
+        vec!["sim", "--help"],
     ] {
         let o = merkur(&sub);
         assert!(o.status.success(), "{sub:?}");
@@ -49,7 +51,7 @@ fn every_subcommand_has_help() {
     // Only working subcommands exist.
     let o = merkur(&["--help"]);
     let help = text(&o.stdout);
-    for absent in ["simulate", "synth", "verilog"] {
+    for absent in ["synth"] {
         assert!(
             !help.contains(absent),
             "{absent} is listed but does not exist yet"
@@ -200,4 +202,27 @@ fn demo_explains_the_line_break() {
         ),
         "{out}"
     );
+}
+
+#[test]
+fn sim_refuses_what_the_rtl_does_not_run_and_bad_wave_names() {
+    let o = merkur(&["sim", "tb-data/chain9.toml"]);
+    assert!(!o.status.success());
+    let e = text(&o.stderr);
+    assert!(e.contains("fault[0]") && e.contains("issue 5"), "{e}");
+    let o = merkur(&["sim", "tb-data/ring2.toml", "--wave", "/tmp/x.vcd"]);
+    assert!(!o.status.success());
+    let e = text(&o.stderr);
+    assert!(e.contains("--wave /tmp/x.vcd") && e.contains("FST"), "{e}");
+}
+
+#[test]
+fn verilog_writes_the_ring_and_the_waivers() {
+    let dir = std::env::temp_dir().join(format!("merkur-verilog-{}", std::process::id()));
+    let o = merkur(&["verilog", "tb-data/ring3.toml", "-o", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let v = std::fs::read_to_string(dir.join("ring3_ring.v")).unwrap();
+    assert!(v.contains("module merkur_ring(") && v.contains("merkur_master n2("));
+    assert!(dir.join("waivers.vlt").exists());
+    let _ = std::fs::remove_dir_all(&dir);
 }

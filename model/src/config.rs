@@ -198,7 +198,40 @@ pub struct Config {
     pub faults: Vec<(u32, Fault)>,
 }
 
+/// Bits of a master's configuration byte (protocol §7).
+pub mod cfg_bits {
+    /// Last valid slot of the frame.
+    pub const LAST: u8 = 1;
+    /// Actuator slot served by this master.
+    pub const ACT: u8 = 2;
+    /// Check the Alive bit of this slot.
+    pub const ALIVE_EN: u8 = 4;
+    /// Written by this master's host.
+    pub const LOCAL: u8 = 8;
+}
+
 impl Config {
+    /// The configuration byte of `slot` in master `node` (protocol §7): LAST
+    /// for slot S−1, ACT for served slots, LOCAL for its own slots, ALIVE_EN
+    /// for every other slot unless `alive_check = false`.
+    pub fn config_byte(&self, node: usize, slot: usize) -> u8 {
+        let mut b = 0;
+        if slot + 1 == self.slots {
+            b |= cfg_bits::LAST;
+        }
+        if self.writer[slot] == node {
+            match self.slot_kind[slot] {
+                SlotKind::Act { .. } => b |= cfg_bits::ACT,
+                SlotKind::Local => b |= cfg_bits::LOCAL,
+                SlotKind::Sensor => {}
+            }
+        }
+        if self.nodes[node].alive_check && b & cfg_bits::LOCAL == 0 {
+            b |= cfg_bits::ALIVE_EN;
+        }
+        b
+    }
+
     /// Line bits of one word.
     pub fn word_bits(&self) -> u32 {
         word_bits(self.ext)

@@ -5,10 +5,13 @@
 //! changes on the way:
 //! - H0: sets FS when the node is in failsafe, RWC when it is wrapped;
 //! - H1: adds 1 to HOP (carry running forward through the nibbles);
-//! - its own slot (`i_address`): a **sensor** writes a fresh word
+//! - its own slot (`i_address`; in a master (`i_master`) every slot whose
+//!   `i_slot_cfg` is LOCAL or ACT): a **sensor** or a master's LOCAL slot writes a fresh word
 //!   `{i_sensor_data, ALIVE = toggle}` or an alarm; an **actuator** replaces
 //!   ALIVE with its toggle, or — when the first group shows VOID or an alarm
 //!   (its own, coming back) — writes `{i_act_out, toggle}`, or its alarm;
+//!   a **master's ACT slot** gets `i_slot_data` with the actuator's ALIVE
+//!   kept, or — on VOID — `{i_slot_data, NOT i_slot_alive}` (`o_regen`);
 //! - parities are fixed in the word's last group from the changes made
 //!   (delta parity), so a word that arrived bad leaves bad.
 //!
@@ -34,6 +37,10 @@
 //! | `i_act_out` | in | 16 | clock | actuator output register |
 //! | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
 //! | `i_alarm_req`, `i_alarm_reason` | in | 1, 4 | clock | alarm to send |
+//! | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
+//! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: configuration (bit 0 LOCAL, bit 1 ACT), data memory and actuator Alive of slot `o_slot`, valid by the word's first group |
+//! | `o_slot` | out | 12 | clock | slot of the word passing |
+//! | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 //! | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 //! | `o_pkt_done` | out | 1 | clock | a DATA packet's last slot went through |
 //! | `o_toggle` | out | 1 | clock | the Alive flip-flop |
@@ -50,7 +57,8 @@
 use rust_hdl::prelude::*;
 
 // Word actions (register `action`, rust-hdl emits literals, not Rust consts):
-// 0 pass, 1 H0 (FS/RWC), 2 H1 (HOP + 1), 3 fresh word, 4 actuator ALIVE.
+// 0 pass, 1 H0 (FS/RWC), 2 H1 (HOP + 1), 3 fresh word, 4 actuator ALIVE,
+// 5 master ACT slot (data from the data memory, ALIVE kept).
 
 /// Cut-through forwarder of a slave node.
 #[derive(LogicBlock)]
@@ -83,6 +91,18 @@ pub struct Fwd {
     pub i_alarm_req: Signal<In, Bit>,
     /// Its reason.
     pub i_alarm_reason: Signal<In, Bits<4>>,
+    /// Master node: the slot's writer is decided by `i_slot_cfg`.
+    pub i_master: Signal<In, Bit>,
+    /// Configuration of slot `o_slot` (bit 0 LOCAL, bit 1 ACT).
+    pub i_slot_cfg: Signal<In, Bits<2>>,
+    /// Data memory of slot `o_slot`.
+    pub i_slot_data: Signal<In, Bits<16>>,
+    /// Last actuator Alive seen in slot `o_slot` (ACT slots).
+    pub i_slot_alive: Signal<In, Bit>,
+    /// Slot number of the word now passing (for the memory look-ups).
+    pub o_slot: Signal<Out, Bits<12>>,
+    /// A VOID in an ACT slot was regenerated (the Alive flips).
+    pub o_regen: Signal<Out, Bit>,
     /// Alarm sent.
     pub o_alarm_sent: Signal<Out, Bit>,
     /// The reason of the alarm sent (valid with `o_alarm_sent`).
@@ -117,6 +137,7 @@ pub struct Fwd {
     sent: DFF<Bit>,
     sent_reason: DFF<Bits<4>>,
     done: DFF<Bit>,
+    regen: DFF<Bit>,
     code: Signal<Local, Bit>,
     shifted: Signal<Local, Bits<10>>,
     group: Signal<Local, Bits<5>>,
@@ -135,6 +156,9 @@ pub struct Fwd {
     p_b: Signal<Local, Bit>,
     send_alarm: Signal<Local, Bit>,
     own: Signal<Local, Bit>,
+    home: Signal<Local, Bit>,
+    pre_b2: Signal<Local, Bit>,
+    pre_b1: Signal<Local, Bit>,
     out_bit: Signal<Local, Bit>,
     new_level: Signal<Local, Bit>,
 }
@@ -163,6 +187,12 @@ impl Fwd {
             i_wrapped: Default::default(),
             i_alarm_req: Default::default(),
             i_alarm_reason: Default::default(),
+            i_master: Default::default(),
+            i_slot_cfg: Default::default(),
+            i_slot_data: Default::default(),
+            i_slot_alive: Default::default(),
+            o_slot: Default::default(),
+            o_regen: Default::default(),
             o_alarm_sent: Default::default(),
             o_sent_reason: Default::default(),
             o_pkt_done: Default::default(),
@@ -192,6 +222,7 @@ impl Fwd {
             sent: Default::default(),
             sent_reason: Default::default(),
             done: Default::default(),
+            regen: Default::default(),
             code: Default::default(),
             shifted: Default::default(),
             group: Default::default(),
@@ -210,6 +241,9 @@ impl Fwd {
             p_b: Default::default(),
             send_alarm: Default::default(),
             own: Default::default(),
+            home: Default::default(),
+            pre_b2: Default::default(),
+            pre_b1: Default::default(),
             out_bit: Default::default(),
             new_level: Default::default(),
         }
@@ -244,7 +278,8 @@ impl Logic for Fwd {
             pair,
             sent,
             sent_reason,
-            done
+            done,
+            regen
         );
         // NRZI decode and the group that completes with this bit.
         self.code.next = self.i_level.val() ^ self.prev.q.val();
@@ -323,12 +358,21 @@ impl Logic for Fwd {
         }
         self.g_s.next = self.group.val() == 0b11001;
 
-        // What to do with the word that starts with this group.
-        self.own.next = (self.wcount.q.val() == 2)
+        // What to do with the word that starts with this group. A slave
+        // writes its home slot; a master every slot its configuration marks
+        // LOCAL or ACT (its home slot is one of its LOCAL slots).
+        self.home.next = (self.wcount.q.val() == 2)
             & (self.slot.q.val() == self.i_address.val())
             & !self.dead.q.val()
             & !self.i_fs.val();
-        self.send_alarm.next = self.own.val() & self.i_alarm_req.val() & !self.prev_alarm.q.val();
+        self.own.next = self.home.val();
+        if self.i_master.val() {
+            self.own.next = (self.wcount.q.val() == 2)
+                & (self.i_slot_cfg.val() != 0)
+                & !self.dead.q.val()
+                & !self.i_fs.val();
+        }
+        self.send_alarm.next = self.home.val() & self.i_alarm_req.val() & !self.prev_alarm.q.val();
         self.act_now.next = self.action.q.val();
         if self.gidx.q.val() == 0 {
             self.act_now.next = 0.into();
@@ -341,16 +385,28 @@ impl Logic for Fwd {
                 }
             }
             if self.own.val() {
-                // Sensor: always fresh. Actuator (from the first group): its
-                // alarm, VOID (S) or an alarm coming back -> fresh; data ->
-                // replace ALIVE; anything else -> leaves bad.
+                // Sensor, LOCAL slot: always fresh. Actuator (from the first
+                // group): its alarm, VOID (S) or an alarm coming back ->
+                // fresh; data -> replace ALIVE; anything else -> leaves bad.
+                // Master, ACT slot: data -> replace the data, keep ALIVE;
+                // VOID -> fresh with the Alive the actuator would send;
+                // anything else (an alarm, an invalid group) passes.
                 self.act_now.next = 3.into();
-                if self.i_actuator.val() & !self.send_alarm.val() {
+                if self.i_actuator.val() & !self.i_master.val() & !self.send_alarm.val() {
                     if self.g_data.val() & !self.nib.val().get_bit(3) {
                         self.act_now.next = 4.into();
                     }
                     if !self.g_data.val() & !self.g_s.val() {
                         self.act_now.next = 0.into();
+                    }
+                }
+                if self.i_master.val() & self.i_slot_cfg.val().get_bit(1) & !self.send_alarm.val() {
+                    self.act_now.next = 0.into();
+                    if self.g_data.val() & !self.nib.val().get_bit(3) {
+                        self.act_now.next = 5.into();
+                    }
+                    if self.g_s.val() {
+                        self.act_now.next = 3.into();
                     }
                 }
             }
@@ -365,6 +421,12 @@ impl Logic for Fwd {
             self.n_data.next = self.i_sensor_data.val();
             if self.i_actuator.val() {
                 self.n_data.next = self.i_act_out.val();
+            }
+            if self.i_master.val() {
+                self.n_data.next = self.i_slot_data.val();
+                if self.i_slot_cfg.val().get_bit(1) {
+                    self.n_alive.next = !self.i_slot_alive.val();
+                }
             }
             if self.send_alarm.val() {
                 self.n_data.next = 0.into();
@@ -407,6 +469,8 @@ impl Logic for Fwd {
             ^ self.n_data.val().get_bit(15)
             ^ self.n_data.val().get_bit(14));
 
+        self.pre_b2.next = false;
+        self.pre_b1.next = false;
         // The outgoing nibble, and whether the group is re-encoded.
         self.nib_out.next = self.nib.val();
         self.recode.next = false;
@@ -472,11 +536,35 @@ impl Logic for Fwd {
                     self.nib_out.next = self.nib_out.val() | 4;
                 }
             }
+            // Master ACT slot: the data bits from the data memory.
+            if self.act_now.val() == 5 {
+                if self.gidx.q.val() == 0 {
+                    self.nib_out.next =
+                        (self.nib.val() & 12) | (self.n_data.val().get_bits::<4>(0) & 3);
+                }
+                if self.gidx.q.val() == 1 {
+                    self.nib_out.next = self.n_data.val().get_bits::<4>(2);
+                }
+                if self.gidx.q.val() == 2 {
+                    self.nib_out.next = self.n_data.val().get_bits::<4>(6);
+                }
+                if self.gidx.q.val() == 3 {
+                    self.nib_out.next = self.n_data.val().get_bits::<4>(10);
+                }
+                if self.gidx.q.val() == 4 {
+                    self.nib_out.next =
+                        (self.nib.val() & 9) | ((self.n_data.val().get_bits::<4>(12) >> 1) & 6);
+                }
+            }
+            // Delta parity: the changes of groups 0..3 and of this group's
+            // data bits (D15, D14).
+            self.pre_b2.next = self.nib.val().get_bit(2) ^ self.nib_out.val().get_bit(2);
+            self.pre_b1.next = self.nib.val().get_bit(1) ^ self.nib_out.val().get_bit(1);
             if self.gidx.q.val() == 4 {
-                if self.d_a.q.val() {
+                if self.d_a.q.val() ^ self.pre_b2.val() {
                     self.nib_out.next = self.nib_out.val() ^ 8;
                 }
-                if self.d_b.q.val() {
+                if self.d_b.q.val() ^ self.pre_b2.val() ^ self.pre_b1.val() {
                     self.nib_out.next = self.nib_out.val() ^ 1;
                 }
             }
@@ -535,6 +623,7 @@ impl Logic for Fwd {
         self.new_level.next = self.out_level.q.val() ^ self.out_bit.val();
         self.sent.d.next = false;
         self.done.d.next = false;
+        self.regen.d.next = false;
         if self.i_bvalid.val() {
             self.prev.d.next = self.i_level.val();
             self.window.d.next = self.shifted.val();
@@ -558,7 +647,11 @@ impl Logic for Fwd {
                         self.f_data.d.next = self.n_data.val();
                         self.f_alive.d.next = self.n_alive.val();
                         self.f_alarm.d.next = self.n_alarm.val();
-                        if self.own.val() {
+                        self.regen.d.next = self.own.val()
+                            & self.i_master.val()
+                            & self.i_slot_cfg.val().get_bit(1)
+                            & (self.act_now.val() == 3);
+                        if self.home.val() {
                             self.prev_alarm.d.next = self.send_alarm.val();
                             self.sent.d.next = self.send_alarm.val();
                             self.sent_reason.d.next = self.i_alarm_reason.val();
@@ -627,6 +720,8 @@ impl Logic for Fwd {
         if self.i_hdr_bad.val() {
             self.dead.d.next = true;
         }
+        self.o_slot.next = self.slot.q.val();
+        self.o_regen.next = self.regen.q.val();
         self.o_alarm_sent.next = self.sent.q.val();
         self.o_sent_reason.next = self.sent_reason.q.val();
         self.o_pkt_done.next = self.done.q.val();

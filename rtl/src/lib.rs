@@ -8,19 +8,24 @@
 //! Port names carry their side: `i_*` inputs, `o_*` outputs; `clock` is the
 //! node's core clock.
 //!
-//! Blocks so far (issue 3 is in progress):
+//! Blocks:
 //! - [`chain8`]: eight slaves in a row (test top)
 //! - [`cdr`]: 4×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
-//! - [`fwd`]: cut-through forwarder, the slave's slot shift register
+//! - [`fwd`]: cut-through forwarder, the slot shift register (slave and master mode)
+//! - [`master`]: the master node (Figure 7): slave ring logic + database
+//! - [`mdb`]: a master's database: data and configuration memory, Alive check, interrupts, Wishbone
 //! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
+//! - [`pkt_tx`]: packet generator (DATA frames, SEC) of the special master
+//! - [`ring_top`]: Verilog of a whole ring for simulation (clock gates, fibres, fault points, monitors)
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
 //! - [`stream_ctrl`]: channel failure (pcf/scf) and test signal (ptst/stst)
 //! - [`port_rx`]: monitor + stream controller, one per logical input
 //! - [`switchbox`]: the paper's Table 1
 //! - [`slave`]: the slave node top (Figure 6)
+//! - [`special_master`]: the clock base: frames every period, return store, SEC
 //! - [`tst_tx`]: link test packets of a wrapped node
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
 
@@ -29,12 +34,17 @@ pub mod chain8;
 pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod fwd;
+pub mod master;
+pub mod mdb;
 pub mod monitor;
 pub mod nrzi_tx;
+pub mod pkt_tx;
 pub mod port_rx;
+pub mod ring_top;
 pub mod rx_framer;
 pub mod rx_word;
 pub mod slave;
+pub mod special_master;
 pub mod stream_ctrl;
 pub mod switchbox;
 pub mod tst_tx;

@@ -6,7 +6,8 @@
 //! register) from INPUT to OUTPUT, the secondary pass-through (BSR → BSS in
 //! mode N) or the link-test generator (BSS in modes WU, WD), the mode and
 //! failsafe logic (protocol §10, §12), the interrupt/alarm queue (§11), the
-//! actuator's output register and the error counters.
+//! actuator's output register and the error counters. A [`crate::master`]
+//! is this block with `i_master` = 1 and a database beside it.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -24,6 +25,9 @@
 //! | `o_failsafe` | out | 1 | clock | failsafe (terminal) |
 //! | `o_perr` | out | 16 | clock | bad words seen at INPUT (saturating) |
 //! | `o_ferr` | out | 16 | clock | frame errors: rejected headers at INPUT (saturating) |
+//! | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::master`] |
+//! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
+//! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_hdr_ok` | out | | clock | INPUT's words, for a master's memories |
 //!
 //! Latency: INPUT to OUTPUT ≈ 6.5 bit times (CDR + one group, [`Fwd`]);
 //! BSR to BSS ≈ 1.5 bit times (bit repeater).
@@ -75,6 +79,38 @@ pub struct Slave {
     pub i_irq2: Signal<In, Bit>,
     /// User failsafe request.
     pub i_fs_req: Signal<In, Bit>,
+    /// Master node (the forwarder writes the slots `i_slot_cfg` marks).
+    pub i_master: Signal<In, Bit>,
+    /// Master: configuration of slot `o_fwd_slot` (bit 0 LOCAL, bit 1 ACT).
+    pub i_slot_cfg: Signal<In, Bits<2>>,
+    /// Master: data memory of slot `o_fwd_slot`.
+    pub i_slot_data: Signal<In, Bits<16>>,
+    /// Master: last actuator Alive of slot `o_fwd_slot`.
+    pub i_slot_alive: Signal<In, Bit>,
+    /// Master: enter failsafe (a FAILSAFE alarm was received).
+    pub i_fs_set: Signal<In, Bit>,
+    /// Master: slot the forwarder is at.
+    pub o_fwd_slot: Signal<Out, Bits<12>>,
+    /// Master: an ACT slot's VOID was regenerated.
+    pub o_regen: Signal<Out, Bit>,
+    /// INPUT word complete (for the master's memories).
+    pub o_wvalid: Signal<Out, Bit>,
+    /// Its kind (0 H0, 1 H1, 2 slot).
+    pub o_kind: Signal<Out, Bits<2>>,
+    /// Its slot.
+    pub o_slot: Signal<Out, Bits<12>>,
+    /// Its data.
+    pub o_data: Signal<Out, Bits<16>>,
+    /// Its ALIVE bit.
+    pub o_alive: Signal<Out, Bit>,
+    /// Its ALARM bit.
+    pub o_alarm: Signal<Out, Bit>,
+    /// Good word.
+    pub o_ok: Signal<Out, Bit>,
+    /// VOID word.
+    pub o_void: Signal<Out, Bit>,
+    /// Good DATA header (the frame is processed).
+    pub o_hdr_ok: Signal<Out, Bit>,
     /// Actuator output register.
     pub o_act_data: Signal<Out, Bits<16>>,
     /// Mode.
@@ -142,6 +178,22 @@ impl Slave {
             i_irq1: Default::default(),
             i_irq2: Default::default(),
             i_fs_req: Default::default(),
+            i_master: Default::default(),
+            i_slot_cfg: Default::default(),
+            i_slot_data: Default::default(),
+            i_slot_alive: Default::default(),
+            i_fs_set: Default::default(),
+            o_fwd_slot: Default::default(),
+            o_regen: Default::default(),
+            o_wvalid: Default::default(),
+            o_kind: Default::default(),
+            o_slot: Default::default(),
+            o_data: Default::default(),
+            o_alive: Default::default(),
+            o_alarm: Default::default(),
+            o_ok: Default::default(),
+            o_void: Default::default(),
+            o_hdr_ok: Default::default(),
             o_act_data: Default::default(),
             o_mode: Default::default(),
             o_failsafe: Default::default(),
@@ -224,6 +276,27 @@ impl Logic for Slave {
         self.fwd.i_act_out.next = self.act_data.q.val();
         self.fwd.i_fs.next = self.failsafe.q.val();
         self.fwd.i_wrapped.next = self.wrapped.val();
+        self.fwd.i_master.next = self.i_master.val();
+        self.fwd.i_slot_cfg.next = self.i_slot_cfg.val();
+        self.fwd.i_slot_data.next = self.i_slot_data.val();
+        self.fwd.i_slot_alive.next = self.i_slot_alive.val();
+        self.o_fwd_slot.next = self.fwd.o_slot.val();
+        self.o_regen.next = self.fwd.o_regen.val();
+        self.o_wvalid.next = self.rx_in.o_wvalid.val();
+        self.o_kind.next = self.rx_in.o_kind.val();
+        self.o_slot.next = self.rx_in.o_slot.val();
+        self.o_data.next = self.rx_in.o_data.val();
+        self.o_alive.next = self.rx_in.o_alive.val();
+        self.o_alarm.next = self.rx_in.o_alarm.val();
+        self.o_ok.next = self.rx_in.o_ok.val();
+        self.o_void.next = self.rx_in.o_void.val();
+        self.o_hdr_ok.next = self.rx_in.o_wvalid.val()
+            & self.rx_in.o_ok.val()
+            & (self.rx_in.o_ptype.val() == 0)
+            & (self.rx_in.o_kind.val() == 1);
+        if self.i_fs_set.val() {
+            self.failsafe.d.next = true;
+        }
 
         // Alarm queue: FAILSAFE > RECONFIG > IRQ1 > IRQ2 (protocol §11).
         self.reason.next = 2.into();

@@ -30,6 +30,13 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ("fwd", block_verilog(fwd::Fwd::new())),
         ("tst_tx", block_verilog(tst_tx::TstTx::default())),
         ("slave", block_verilog(slave::Slave::new())),
+        ("pkt_tx", block_verilog(pkt_tx::PktTx::default())),
+        ("mdb", block_verilog(mdb::Mdb::default())),
+        ("master", block_verilog(master::Master::default())),
+        (
+            "special_master",
+            block_verilog(special_master::SpecialMaster::default()),
+        ),
         ("chain8", block_verilog(chain8::Chain8::default())),
     ]
 }

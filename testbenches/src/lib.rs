@@ -57,6 +57,7 @@ pub fn pinned_tools() -> Result<Vec<PinnedTool>, String> {
     Ok(out)
 }
 
+pub mod ring_sim;
 pub mod stim;
 pub mod verilator;
 

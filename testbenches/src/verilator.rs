@@ -190,6 +190,19 @@ fn run(cmd: &mut Command, what: &str) -> Result<(), String> {
 /// Builds (or finds in the cache) the shared library for `verilog`, whose
 /// top module must be called `top` (as rust-hdl's `generate_verilog` names it).
 pub fn build_library(verilog: &str) -> Result<(PathBuf, Vec<Port>), String> {
+    build_library_top(verilog, "top")
+}
+
+/// As [`build_library`] for a design whose top module is `top`.
+pub fn build_library_top(verilog: &str, top: &str) -> Result<(PathBuf, Vec<Port>), String> {
+    // The wrapper and flags name the top `top`.
+    let renamed;
+    let verilog = if top == "top" {
+        verilog
+    } else {
+        renamed = verilog.replacen(&format!("module {top}("), "module top(", 1);
+        renamed.as_str()
+    };
     let ports = parse_ports(verilog, "top")?;
     let wrapper = wrapper_cpp(&ports);
     let version = verilator_version()?;
@@ -322,7 +335,28 @@ impl Model {
         Model::load(&lib, ports)
     }
 
+    /// As [`Model::build`] for a design whose top module is `top`.
+    pub fn build_top(verilog: &str, top: &str) -> Result<Model, String> {
+        let (lib, ports) = build_library_top(verilog, top)?;
+        Model::load(&lib, ports)
+    }
+
+    /// As [`Model::build_top`], writing an FST waveform to `wave` if given
+    /// (else as `MERKUR_WAVE` says).
+    pub fn build_top_traced(
+        verilog: &str,
+        top: &str,
+        wave: Option<&Path>,
+    ) -> Result<Model, String> {
+        let (lib, ports) = build_library_top(verilog, top)?;
+        Model::load_traced(&lib, ports, wave.map(|w| w.to_string_lossy().to_string()))
+    }
+
     fn load(path: &Path, ports: Vec<Port>) -> Result<Model, String> {
+        Model::load_traced(path, ports, None)
+    }
+
+    fn load_traced(path: &Path, ports: Vec<Port>, wave: Option<String>) -> Result<Model, String> {
         // SAFETY: the library was built by `build_library` from our wrapper;
         // its symbols have exactly the signatures declared above.
         unsafe {
@@ -352,7 +386,13 @@ impl Model {
                 ))?));
             }
             let h = new();
-            if let Ok(w) = std::env::var("MERKUR_WAVE") {
+            if let Some(w) = wave {
+                let c = std::ffi::CString::new(w.clone()).map_err(|e| e.to_string())?;
+                if trace(h, c.as_ptr()) != 0 {
+                    del(h);
+                    return Err(format!("--wave {w}: cannot open the waveform file"));
+                }
+            } else if let Ok(w) = std::env::var("MERKUR_WAVE") {
                 // The first model of the process writes the file as named,
                 // later ones `<stem>.<n>.<ext>`, so none overwrites another.
                 static WAVES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);

@@ -1,0 +1,107 @@
+//! `merkur verilog` and `merkur sim`: the scenario's ring as Verilog, and its
+//! Verilator run compared with the reference model.
+
+use crate::{read_scenario, write_atomic};
+use merkur_model::ring;
+use merkur_rtl::ring_top::ring_verilog;
+use merkur_rtl::verilog::WAIVERS;
+use merkur_testbenches::ring_sim::{self, Options};
+use std::path::Path;
+
+/// Writes `<name>_ring.v` and `waivers.vlt` into `dir`.
+pub fn verilog(path: &Path, dir: &Path) -> Result<(), String> {
+    let (_, cfg) = read_scenario(path)?;
+    let kinds: Vec<_> = cfg.nodes.iter().map(|n| n.kind).collect();
+    let v = ring_verilog(&kinds, cfg.slots);
+    std::fs::create_dir_all(dir)
+        .map_err(|e| format!("error: --output {}: cannot create: {e}", dir.display()))?;
+    let file = dir.join(format!("{}_ring.v", cfg.name));
+    write_atomic(&file, &v)?;
+    write_atomic(&dir.join("waivers.vlt"), WAIVERS)?;
+    eprintln!(
+        "wrote {} (top merkur_ring, {} nodes, {} fibres, {} lines) and {}",
+        file.display(),
+        kinds.len(),
+        2 * kinds.len(),
+        v.lines().count(),
+        dir.join("waivers.vlt").display()
+    );
+    eprintln!(
+        "lint: verilator --lint-only -Wall {}/waivers.vlt {} --top-module merkur_ring",
+        dir.display(),
+        file.display()
+    );
+    Ok(())
+}
+
+/// Runs the ring in Verilator; `Ok(false)` when it differs from the model.
+pub fn sim(path: &Path, wave: Option<&Path>, seed: u64) -> Result<bool, String> {
+    let (_, cfg) = read_scenario(path)?;
+    if let Some(why) = ring_sim::unsupported(&cfg) {
+        return Err(format!(
+            "error: {}: not simulated in RTL: {why}",
+            path.display()
+        ));
+    }
+    if let Some(w) = wave {
+        if w.extension().map_or(true, |e| e != "fst") {
+            return Err(format!(
+                "error: --wave {}: the waveform is written as FST; name the file *.fst",
+                w.display()
+            ));
+        }
+    }
+    let recs = ring::run(&cfg);
+    eprintln!(
+        "building the Verilator model of {} ({} nodes; cached by the hash of its Verilog) ...",
+        cfg.name,
+        cfg.nodes.len()
+    );
+    let opts = Options {
+        wave: wave.map(Path::to_path_buf),
+        seed,
+        progress: true,
+    };
+    let rep = ring_sim::run(&cfg, &recs, &opts).map_err(|e| format!("error: {e}"))?;
+    println!(
+        "{}: {} cycles, {} words compared, period {:.1} bit times ({:.2} us at {} Mbit/s)",
+        cfg.name,
+        rep.cycles,
+        rep.words,
+        rep.period_bits,
+        rep.period_bits / cfg.line_rate_mbps,
+        cfg.line_rate_mbps
+    );
+    println!(
+        "simulated {} ticks ({} bit times) in {:.2} s (build {:.1} s)",
+        rep.ticks,
+        rep.ticks / 4,
+        rep.wall.as_secs_f64(),
+        rep.build.as_secs_f64()
+    );
+    println!("node  kind            mode  failsafe  perr  irqs  mismatches");
+    for r in &rep.rows {
+        println!(
+            "{:>4}  {:<14}  {:<4}  {:<8}  {:>4}  {:>4}  {:>10}",
+            r.node, r.kind, r.mode, r.failsafe, r.perr, r.irqs, r.mismatches
+        );
+    }
+    if let Some(w) = wave {
+        let g = w.with_extension("gtkw");
+        write_atomic(&g, &ring_sim::gtkw(&cfg, w))?;
+        println!("waveform: {} (gtkwave {})", w.display(), g.display());
+    }
+    match rep.mismatches.first() {
+        None => {
+            println!("PASS: the RTL ring agrees with the model's golden trace");
+            Ok(true)
+        }
+        Some(m) => {
+            println!("FAIL: {} mismatches; first: {m}", rep.mismatches.len());
+            for m in rep.mismatches.iter().skip(1).take(9) {
+                println!("      {m}");
+            }
+            Ok(false)
+        }
+    }
+}

@@ -1,0 +1,468 @@
+//! # mdb — a master's real-time database: memories, host port, Alive check, interrupts
+//!
+//! Purpose: the part every master (and the special master) has beside its
+//! ring logic (protocol §7, §11; the paper's Figure 7):
+//! - **data memory** 4096 × 16 (one block-RAM port pair), the real-time
+//!   database: the ring side reads slot `i_tx_slot` for what the node sends
+//!   and writes every good word of a slot it does not write itself; the host
+//!   reads and writes it through Wishbone;
+//! - **configuration memory**, one byte per slot (bits 0 LAST, 1 ACT,
+//!   2 ALIVE_EN, 3 LOCAL; kept as 4 bits), in two copies (ring send side,
+//!   ring receive side + host), writable only before the ring runs;
+//! - **Alive check** per slot with ALIVE_EN (state memory: valid, last
+//!   Alive, lost), counted in `aerr`;
+//! - **interrupts**: every good alarm word in a slot other than the home slot
+//!   pulses `o_irq1` / `o_irq2` / `o_irq_fs` by its reason.
+//!
+//! Host port: **Wishbone B4 classic** (16-bit data, 14-bit word address),
+//! one transfer per `i_wb_cyc & i_wb_stb`, acknowledged after 1–4 clocks:
+//!
+//! | address | R/W | meaning |
+//! |---|---|---|
+//! | 0x0000–0x0FFF | R/W | data memory, slot = address; a write to a slot that is neither LOCAL nor ACT is refused (not written, `status[2]` set) |
+//! | 0x1000–0x1FFF | R/W | configuration byte of slot address − 0x1000; a write while running is refused (`status[1]` set) |
+//! | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode |
+//! | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames) |
+//! | 0x2001 | R | `aerr` Alive-check failures (saturating) |
+//! | 0x2002 | R | last interrupt: reason [15:12], slot [11:0] |
+//!
+//! | port | dir | width | clock domain | meaning |
+//! |---|---|---|---|---|
+//! | `clock` | in | 1 | — | core clock |
+//! | `i_wb_cyc`, `i_wb_stb`, `i_wb_we` | in | 1 | clock | Wishbone cycle, strobe, write enable |
+//! | `i_wb_adr` | in | 14 | clock | Wishbone word address |
+//! | `i_wb_dat` | in | 16 | clock | Wishbone write data |
+//! | `o_wb_dat` | out | 16 | clock | Wishbone read data (valid with `o_wb_ack`) |
+//! | `o_wb_ack` | out | 1 | clock | Wishbone acknowledge (one clock) |
+//! | `i_home` | in | 12 | static | home slot (no interrupt for its own alarms) |
+//! | `i_fs` | in | 1 | clock | node in failsafe: no updates |
+//! | `i_mode` | in | 2 | clock | switchbox mode (status register) |
+//! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok`, `i_void` | in | | clock | received words (from the node's INPUT port) |
+//! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
+//! | `o_tx_data`, `o_tx_local`, `o_tx_act` | out | 16, 1, 1 | clock | data memory and configuration (LOCAL, ACT) of `i_tx_slot`, valid 2–3 clocks after it changes |
+//! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_void`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+//! | `o_running` | out | 1 | clock | the host started the ring |
+//! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received (one clock per alarm word) |
+//! | `o_aerr` | out | 16 | clock | Alive-check failures |
+//!
+//! Latency: a good word is in the data memory 2 clocks after `i_wvalid`.
+//!
+//! ```text
+//! clock      _/‾\_/‾\_/‾\_/‾\_/‾\_
+//! i_wvalid   _/‾‾‾\_______________     stage 1: read cfg, Alive state
+//! o_s2       _____/‾‾‾\___________     stage 2: write data, Alive state; irq
+//! wb stb     _/‾‾‾‾‾‾‾‾‾‾‾\_______
+//! wb ack     _________/‾‾‾\_______     data read: 2 clocks
+//! ```
+
+use rust_hdl::prelude::*;
+
+// Configuration bits: `merkur_model::config::cfg_bits` (LAST 1, ACT 2,
+// ALIVE_EN 4, LOCAL 8); rust-hdl emits literals, so the logic below writes
+// them as numbers and the ring test binds them to the model's constants.
+/// Status register bit 0: running (write 1: start).
+pub const ST_RUN: u16 = 1;
+/// Status register bit 3 on write: stop (the special master sends no more frames).
+pub const ST_STOP: u16 = 8;
+/// Wishbone address of the status / control register.
+pub const WB_STATUS: u16 = 0x2000;
+/// Wishbone address of the Alive error counter.
+pub const WB_AERR: u16 = 0x2001;
+/// Wishbone address of the last interrupt.
+pub const WB_LAST_IRQ: u16 = 0x2002;
+/// Wishbone base of the configuration memory.
+pub const WB_CFG: u16 = 0x1000;
+
+/// A master's database.
+#[derive(LogicBlock, Default)]
+pub struct Mdb {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// Wishbone cycle.
+    pub i_wb_cyc: Signal<In, Bit>,
+    /// Wishbone strobe.
+    pub i_wb_stb: Signal<In, Bit>,
+    /// Wishbone write enable.
+    pub i_wb_we: Signal<In, Bit>,
+    /// Wishbone word address.
+    pub i_wb_adr: Signal<In, Bits<14>>,
+    /// Wishbone write data.
+    pub i_wb_dat: Signal<In, Bits<16>>,
+    /// Wishbone read data.
+    pub o_wb_dat: Signal<Out, Bits<16>>,
+    /// Wishbone acknowledge.
+    pub o_wb_ack: Signal<Out, Bit>,
+    /// Home slot.
+    pub i_home: Signal<In, Bits<12>>,
+    /// Failsafe.
+    pub i_fs: Signal<In, Bit>,
+    /// Switchbox mode.
+    pub i_mode: Signal<In, Bits<2>>,
+    /// Word valid.
+    pub i_wvalid: Signal<In, Bit>,
+    /// Word kind.
+    pub i_kind: Signal<In, Bits<2>>,
+    /// Word slot.
+    pub i_slot: Signal<In, Bits<12>>,
+    /// Word data.
+    pub i_data: Signal<In, Bits<16>>,
+    /// Word ALIVE.
+    pub i_alive: Signal<In, Bit>,
+    /// Word ALARM.
+    pub i_alarm: Signal<In, Bit>,
+    /// Word good.
+    pub i_ok: Signal<In, Bit>,
+    /// Word VOID.
+    pub i_void: Signal<In, Bit>,
+    /// Slot the send side needs.
+    pub i_tx_slot: Signal<In, Bits<12>>,
+    /// Data memory of `i_tx_slot`.
+    pub o_tx_data: Signal<Out, Bits<16>>,
+    /// `i_tx_slot` is LOCAL.
+    pub o_tx_local: Signal<Out, Bit>,
+    /// `i_tx_slot` is ACT.
+    pub o_tx_act: Signal<Out, Bit>,
+    /// Stage 2 valid.
+    pub o_s2: Signal<Out, Bit>,
+    /// Stage 2 slot.
+    pub o_s2_slot: Signal<Out, Bits<12>>,
+    /// Stage 2 slot is ACT.
+    pub o_s2_act: Signal<Out, Bit>,
+    /// Stage 2 good.
+    pub o_s2_ok: Signal<Out, Bit>,
+    /// Stage 2 VOID.
+    pub o_s2_void: Signal<Out, Bit>,
+    /// Stage 2 ALIVE.
+    pub o_s2_alive: Signal<Out, Bit>,
+    /// Stage 2 ALARM.
+    pub o_s2_alarm: Signal<Out, Bit>,
+    /// Stage 2 data.
+    pub o_s2_data: Signal<Out, Bits<16>>,
+    /// Running.
+    pub o_running: Signal<Out, Bit>,
+    /// IRQ1 alarm received.
+    pub o_irq1: Signal<Out, Bit>,
+    /// IRQ2 alarm received.
+    pub o_irq2: Signal<Out, Bit>,
+    /// FAILSAFE alarm received.
+    pub o_irq_fs: Signal<Out, Bit>,
+    /// Alive-check failures.
+    pub o_aerr: Signal<Out, Bits<16>>,
+    db: RAM<Bits<16>, 12>,
+    cfg_tx: RAM<Bits<4>, 12>,
+    cfg_rx: RAM<Bits<4>, 12>,
+    ast: RAM<Bits<3>, 12>,
+    // Send-side look-up.
+    tx_served: DFF<Bit>,
+    tx_data: DFF<Bits<16>>,
+    tx_cfg: DFF<Bits<4>>,
+    // Receive pipeline.
+    s2: DFF<Bit>,
+    s2_slot: DFF<Bits<12>>,
+    s2_ok: DFF<Bit>,
+    s2_void: DFF<Bit>,
+    s2_alive: DFF<Bit>,
+    s2_alarm: DFF<Bit>,
+    s2_data: DFF<Bits<16>>,
+    irq1: DFF<Bit>,
+    irq2: DFF<Bit>,
+    irq_fs: DFF<Bit>,
+    aerr: DFF<Bits<16>>,
+    last_irq: DFF<Bits<16>>,
+    // Host port.
+    running: DFF<Bit>,
+    err_cfg: DFF<Bit>,
+    err_wr: DFF<Bit>,
+    hstate: DFF<Bits<3>>,
+    ack: DFF<Bit>,
+    rdat: DFF<Bits<16>>,
+    perm: DFF<Bit>,
+    stat: Signal<Local, Bits<16>>,
+    irq_word: Signal<Local, Bits<16>>,
+    s2_cfg: Signal<Local, Bits<4>>,
+    s2_ast: Signal<Local, Bits<3>>,
+    new_ast: Signal<Local, Bits<3>>,
+    s2_write: Signal<Local, Bit>,
+    host_req: Signal<Local, Bit>,
+    adr_data: Signal<Local, Bit>,
+    adr_cfg: Signal<Local, Bit>,
+}
+
+impl Logic for Mdb {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, tx_served, tx_data, tx_cfg, s2, s2_slot, s2_ok, s2_void, s2_alive,
+            s2_alarm, s2_data, irq1, irq2, irq_fs, aerr, last_irq, running, err_cfg, err_wr,
+            hstate, ack, rdat, perm
+        );
+        self.db.read_clock.next = self.clock.val();
+        self.db.write_clock.next = self.clock.val();
+        self.cfg_tx.read_clock.next = self.clock.val();
+        self.cfg_tx.write_clock.next = self.clock.val();
+        self.cfg_rx.read_clock.next = self.clock.val();
+        self.cfg_rx.write_clock.next = self.clock.val();
+        self.ast.read_clock.next = self.clock.val();
+        self.ast.write_clock.next = self.clock.val();
+        self.stat.next = 0.into();
+        self.irq_word.next = 0.into();
+        self.host_req.next = self.i_wb_cyc.val() & self.i_wb_stb.val() & !self.ack.q.val();
+        self.adr_data.next = self.i_wb_adr.val().get_bits::<2>(12) == 0;
+        self.adr_cfg.next = self.i_wb_adr.val().get_bits::<2>(12) == 1;
+
+        // Send side: the data memory's read port serves i_tx_slot in every
+        // clock the host does not read it (at most one clock in a row), so
+        // the look-up follows i_tx_slot and host writes within 2-3 clocks.
+        self.tx_served.d.next = true;
+        self.db.read_address.next = self.i_tx_slot.val();
+        self.cfg_tx.read_address.next = self.i_tx_slot.val();
+        if self.tx_served.q.val() {
+            self.tx_data.d.next = self.db.read_data.val();
+            self.tx_cfg.d.next = self.cfg_tx.read_data.val();
+        }
+        self.o_tx_data.next = self.tx_data.q.val();
+        self.o_tx_local.next = self.tx_cfg.q.val().get_bit(3);
+        self.o_tx_act.next = self.tx_cfg.q.val().get_bit(1);
+
+        // Receive pipeline, stage 1: read the slot's configuration and
+        // Alive state.
+        self.cfg_rx.read_address.next = self.i_slot.val();
+        self.ast.read_address.next = self.i_slot.val();
+        self.s2.d.next = self.i_wvalid.val() & (self.i_kind.val() == 2);
+        self.s2_slot.d.next = self.i_slot.val();
+        self.s2_ok.d.next = self.i_ok.val();
+        self.s2_void.d.next = self.i_void.val();
+        self.s2_alive.d.next = self.i_alive.val();
+        self.s2_alarm.d.next = self.i_alarm.val();
+        self.s2_data.d.next = self.i_data.val();
+        // Stage 2: update data, Alive state, interrupts (protocol §7, §11).
+        self.s2_cfg.next = self.cfg_rx.read_data.val();
+        self.s2_ast.next = self.ast.read_data.val();
+        self.irq1.d.next = false;
+        self.irq2.d.next = false;
+        self.irq_fs.d.next = false;
+        self.s2_write.next = false;
+        // Alive state: bit 0 valid, bit 1 last Alive, bit 2 lost.
+        self.new_ast.next = self.s2_ast.val() & 4;
+        self.ast.write_enable.next = false;
+        self.ast.write_address.next = self.s2_slot.q.val();
+        self.ast.write_data.next = self.new_ast.val();
+        if self.s2.q.val() & !self.i_fs.val() {
+            self.ast.write_enable.next = true;
+            if self.s2_ok.q.val() {
+                if self.s2_alarm.q.val() & (self.s2_slot.q.val() != self.i_home.val()) {
+                    // rust-hdl widens only with a masked cast (a lint
+                    // warning), so the slot is copied bit by bit.
+                    self.irq_word.next = self.s2_data.q.val() & 0xf000;
+                    if self.s2_slot.q.val().get_bit(0) {
+                        self.irq_word.next = self.irq_word.val() | 1;
+                    }
+                    if self.s2_slot.q.val().get_bit(1) {
+                        self.irq_word.next = self.irq_word.val() | 2;
+                    }
+                    if self.s2_slot.q.val().get_bit(2) {
+                        self.irq_word.next = self.irq_word.val() | 4;
+                    }
+                    if self.s2_slot.q.val().get_bit(3) {
+                        self.irq_word.next = self.irq_word.val() | 8;
+                    }
+                    if self.s2_slot.q.val().get_bit(4) {
+                        self.irq_word.next = self.irq_word.val() | 16;
+                    }
+                    if self.s2_slot.q.val().get_bit(5) {
+                        self.irq_word.next = self.irq_word.val() | 32;
+                    }
+                    if self.s2_slot.q.val().get_bit(6) {
+                        self.irq_word.next = self.irq_word.val() | 64;
+                    }
+                    if self.s2_slot.q.val().get_bit(7) {
+                        self.irq_word.next = self.irq_word.val() | 128;
+                    }
+                    if self.s2_slot.q.val().get_bit(8) {
+                        self.irq_word.next = self.irq_word.val() | 256;
+                    }
+                    if self.s2_slot.q.val().get_bit(9) {
+                        self.irq_word.next = self.irq_word.val() | 512;
+                    }
+                    if self.s2_slot.q.val().get_bit(10) {
+                        self.irq_word.next = self.irq_word.val() | 1024;
+                    }
+                    if self.s2_slot.q.val().get_bit(11) {
+                        self.irq_word.next = self.irq_word.val() | 2048;
+                    }
+                    self.last_irq.d.next = self.irq_word.val();
+                    if self.s2_data.q.val().get_bits::<4>(12) == 1 {
+                        self.irq1.d.next = true;
+                    }
+                    if self.s2_data.q.val().get_bits::<4>(12) == 2 {
+                        self.irq2.d.next = true;
+                    }
+                    if self.s2_data.q.val().get_bits::<4>(12) == 3 {
+                        self.irq_fs.d.next = true;
+                    }
+                }
+                self.s2_write.next = !self.s2_alarm.q.val() & ((self.s2_cfg.val() & 10) == 0);
+                if self.s2_cfg.val().get_bit(2) {
+                    self.new_ast.next = (self.s2_ast.val() & 4) | 1;
+                    if self.s2_alive.q.val() {
+                        self.new_ast.next = (self.s2_ast.val() & 4) | 3;
+                    }
+                    if self.s2_ast.val().get_bit(0) {
+                        if self.s2_ast.val().get_bit(1) == self.s2_alive.q.val() {
+                            self.new_ast.next = self.new_ast.val() | 4;
+                            if self.aerr.q.val() != 0xffff {
+                                self.aerr.d.next = self.aerr.q.val() + 1;
+                            }
+                        } else {
+                            self.new_ast.next = self.new_ast.val() & 3;
+                        }
+                    }
+                    self.ast.write_data.next = self.new_ast.val();
+                }
+            }
+        }
+        self.db.write_enable.next = self.s2_write.val();
+        self.db.write_address.next = self.s2_slot.q.val();
+        self.db.write_data.next = self.s2_data.q.val();
+
+        // Host port (Wishbone B4 classic). States: 0 idle, 1 data read
+        // returns, 3 permission read returns, 4 write pending, 5 config read
+        // returns, 7 acknowledged.
+        self.ack.d.next = false;
+        self.cfg_tx.write_enable.next = false;
+        self.cfg_rx.write_enable.next = false;
+        self.cfg_tx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+        self.cfg_rx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+        self.cfg_tx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0);
+        self.cfg_rx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0);
+        if !self.host_req.val() {
+            self.hstate.d.next = 0.into();
+        } else if self.hstate.q.val() == 0 {
+            if self.adr_data.val() {
+                if self.i_wb_we.val() {
+                    if !self.i_wvalid.val() {
+                        self.cfg_rx.read_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+                        self.hstate.d.next = 3.into();
+                    }
+                } else {
+                    self.db.read_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+                    self.tx_served.d.next = false;
+                    self.hstate.d.next = 1.into();
+                }
+            } else if self.adr_cfg.val() {
+                if self.i_wb_we.val() {
+                    if self.running.q.val() {
+                        self.err_cfg.d.next = true;
+                    } else {
+                        self.cfg_tx.write_enable.next = true;
+                        self.cfg_rx.write_enable.next = true;
+                    }
+                    self.ack.d.next = true;
+                } else if !self.i_wvalid.val() {
+                    self.cfg_rx.read_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+                    self.hstate.d.next = 5.into();
+                }
+            } else {
+                self.ack.d.next = true;
+                self.rdat.d.next = 0.into();
+                if self.i_wb_adr.val() == 0x2000 {
+                    self.stat.next = 0.into();
+                    if self.i_mode.val().get_bit(0) {
+                        self.stat.next = self.stat.val() | 16;
+                    }
+                    if self.i_mode.val().get_bit(1) {
+                        self.stat.next = self.stat.val() | 32;
+                    }
+                    if self.running.q.val() {
+                        self.stat.next = self.stat.val() | 1;
+                    }
+                    if self.err_cfg.q.val() {
+                        self.stat.next = self.stat.val() | 2;
+                    }
+                    if self.err_wr.q.val() {
+                        self.stat.next = self.stat.val() | 4;
+                    }
+                    if self.i_fs.val() {
+                        self.stat.next = self.stat.val() | 8;
+                    }
+                    self.rdat.d.next = self.stat.val();
+                    if self.i_wb_we.val() {
+                        if self.i_wb_dat.val().get_bit(0) {
+                            self.running.d.next = true;
+                        }
+                        if self.i_wb_dat.val().get_bit(1) {
+                            self.err_cfg.d.next = false;
+                        }
+                        if self.i_wb_dat.val().get_bit(2) {
+                            self.err_wr.d.next = false;
+                        }
+                        if self.i_wb_dat.val().get_bit(3) {
+                            self.running.d.next = false;
+                        }
+                    }
+                }
+                if self.i_wb_adr.val() == 0x2001 {
+                    self.rdat.d.next = self.aerr.q.val();
+                }
+                if self.i_wb_adr.val() == 0x2002 {
+                    self.rdat.d.next = self.last_irq.q.val();
+                }
+            }
+        } else if self.hstate.q.val() == 1 {
+            // The data memory read of the previous clock.
+            self.rdat.d.next = self.db.read_data.val();
+            self.ack.d.next = true;
+            self.hstate.d.next = 7.into();
+        } else if self.hstate.q.val() == 3 {
+            // The slot's configuration: LOCAL or ACT may be written.
+            self.perm.d.next = (self.cfg_rx.read_data.val() & 10) != 0;
+            self.hstate.d.next = 4.into();
+        } else if self.hstate.q.val() == 4 {
+            // Write when the receive side does not.
+            if !self.perm.q.val() {
+                self.err_wr.d.next = true;
+                self.ack.d.next = true;
+                self.hstate.d.next = 7.into();
+            } else if !self.s2_write.val() {
+                self.db.write_enable.next = true;
+                self.db.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+                self.db.write_data.next = self.i_wb_dat.val();
+                self.ack.d.next = true;
+                self.hstate.d.next = 7.into();
+            }
+        } else if self.hstate.q.val() == 5 {
+            self.stat.next = 0.into();
+            if self.cfg_rx.read_data.val().get_bit(0) {
+                self.stat.next = self.stat.val() | 1;
+            }
+            if self.cfg_rx.read_data.val().get_bit(1) {
+                self.stat.next = self.stat.val() | 2;
+            }
+            if self.cfg_rx.read_data.val().get_bit(2) {
+                self.stat.next = self.stat.val() | 4;
+            }
+            if self.cfg_rx.read_data.val().get_bit(3) {
+                self.stat.next = self.stat.val() | 8;
+            }
+            self.rdat.d.next = self.stat.val();
+            self.ack.d.next = true;
+            self.hstate.d.next = 7.into();
+        }
+        self.o_wb_ack.next = self.ack.q.val();
+        self.o_wb_dat.next = self.rdat.q.val();
+
+        self.o_s2.next = self.s2.q.val();
+        self.o_s2_slot.next = self.s2_slot.q.val();
+        self.o_s2_act.next = self.s2_cfg.val().get_bit(1);
+        self.o_s2_ok.next = self.s2_ok.q.val();
+        self.o_s2_void.next = self.s2_void.q.val();
+        self.o_s2_alive.next = self.s2_alive.q.val();
+        self.o_s2_alarm.next = self.s2_alarm.q.val();
+        self.o_s2_data.next = self.s2_data.q.val();
+        self.o_running.next = self.running.q.val();
+        self.o_irq1.next = self.irq1.q.val();
+        self.o_irq2.next = self.irq2.q.val();
+        self.o_irq_fs.next = self.irq_fs.q.val();
+        self.o_aerr.next = self.aerr.q.val();
+    }
+}

@@ -1,0 +1,373 @@
+//! # ring_top — a whole ring for simulation: nodes, fibres, fault points, monitors
+//!
+//! Purpose: `merkur verilog` and `merkur sim` wire N nodes (the scenario's
+//! kinds in ring order) over duplex fibres into one Verilog top,
+//! `merkur_ring`. It is a **simulation harness** around the product blocks
+//! ([`crate::slave`], [`crate::master`], [`crate::special_master`],
+//! [`crate::monitor`]), written as Verilog text because its shape (N
+//! instances, 2N fibres) is the scenario's. Everything a scenario varies at
+//! run time — node addresses, clock offsets and phases, sensor values, user
+//! requests, period, slot count, fault points — is a register written
+//! through one configuration port, so one Verilator build serves every
+//! scenario with the same node kinds and slot-count class.
+//!
+//! **Clocks.** The top's `clk` is the simulation tick, 4 ticks per nominal
+//! bit time. Node k runs on its own clock `nclk_k = clk & en_k`: a 32-bit
+//! fractional accumulator adds `inc_k` (≈ 2³¹ · (1 + ppm·10⁻⁶), half the tick
+//! rate = 2× the line rate) every tick and its carry enables the next tick's
+//! edge (the enable is latched on the falling edge, so the gated clock has no
+//! glitch); the accumulator's start value is the node's random phase. So
+//! every node has its scenario's frequency offset and its own phase, with one
+//! evaluation per tick. In synthesis the node's clock is its oscillator; this
+//! gate exists only here.
+//!
+//! **Fibres.** Fibre P*k* (node k PO → node k+1 PI) and S*k* (node k+1 SO →
+//! node k SI) are line levels at tick resolution: the sender's DDR pair
+//! shows bit 0 in the tick after its clock edge and bit 1 until its next
+//! edge; the receiver's DDR pair is {line now, line one tick ago}. Each fibre
+//! has a **fault point** (break: the line goes dark; flip: the line is
+//! inverted for 4 ticks = one bit time) and a **monitor** (clock recovery,
+//! framer, word decoder at the nominal rate) whose DATA words are captured
+//! per cycle: entry `(cyc & 3) · CAP + slot` holds `{CYC[2:0], status[1:0],
+//! ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3 VOID; a slot
+//! whose entry has another CYC was missing in that cycle; entries
+//! `4 · CAP + 2 (cyc & 3) + {0, 1}` hold the frame's H0 and H1.
+//!
+//! **Ports.**
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clk` | in | 1 | simulation tick (4 per nominal bit time) |
+//! | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | configuration write (table below) |
+//! | `i_rd_sel`, `i_rd_field` | in | 16, 8 | status read address |
+//! | `o_rd` | out | 32 | status read data (combinational) |
+//! | `i_cap_fibre`, `i_cap_idx` | in | 16, log2(4·CAP) | capture read address (fibre P0.. then S0..) |
+//! | `o_cap` | out | 32 | captured entry (combinational) |
+//! | `i_wb_node`, `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr`, `i_wb_dat` | in | | Wishbone of master `i_wb_node` (its own clock) |
+//! | `o_wb_dat`, `o_wb_ack` | out | 16, 1 | its Wishbone answer |
+//!
+//! Configuration fields (`i_cfg_sel` = node or fibre index): node fields
+//! 0 `inc`, 1 phase, 2 address, 3 sensor value for cycles with CYC ≡ 0..3
+//! (`i_cfg_val[17:16]` selects, `[15:0]` value; the node sees the one of
+//! the frame after the last that ended on its PI fibre), 4 request `{now, armed, CYC[2:0],
+//! fs, irq2, irq1}` (raised at once, or when the node's input monitor sees
+//! the end of the DATA frame with that CYC, i.e. before the next frame); fibre fields 8 break (1 dark), 9 flip (start now); global
+//! fields 16 slots − 1, 17 CS timeout (node clocks), 18 period (bit times).
+//!
+//! Status fields (`i_rd_sel` = node): 0 mode, 1 failsafe, 2 perr, 3 ferr,
+//! 4 aerr, 5 serr, 6 HOP returned, 7 actuator output, 8 frames sent,
+//! 9/10/11 IRQ1/IRQ2/FAILSAFE alarms received, 12 running; fibre fields
+//! (`i_rd_sel` = fibre): 16 `{in frame, last CYC[2:0]}` of the monitor,
+//! 17 last DATA header H1, 18 last H0, 19 SEC packets seen, 20 TST packets
+//! seen, 21 loss of signal, 22 DATA frames ended.
+
+use crate::verilog::block_verilog;
+use merkur_model::scenario::Kind;
+
+/// Ticks of the simulation clock per nominal bit time.
+pub const TICKS_PER_BIT: u32 = 4;
+
+/// Module name of a node kind in the ring Verilog.
+pub fn module_name(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Sensor | Kind::Actuator => "merkur_slave",
+        Kind::Master => "merkur_master",
+        Kind::SpecialMaster => "merkur_special_master",
+    }
+}
+
+/// Renames rust-hdl's `top` and `top$…` modules of one block.
+fn renamed(verilog: &str, name: &str) -> String {
+    verilog
+        .replace("module top(", &format!("module {name}("))
+        .replace("module top$", &format!("module {name}$"))
+        .replace("\ntop$", &format!("\n{name}$"))
+        .replace(" top$", &format!(" {name}$"))
+}
+
+/// Capture entries per cycle buffer: slots rounded up to a power of two.
+pub fn cap_slots(slots: usize) -> usize {
+    slots.next_power_of_two().max(2)
+}
+
+/// The Verilog of every module the ring needs plus the `merkur_ring` top.
+pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
+    let n = kinds.len();
+    let cap = cap_slots(slots);
+    let mut out = String::new();
+    out.push_str(&format!(
+        "// merkur ring: {n} nodes ({}), capture {cap} slots per cycle.\n\
+         // Generated by merkur-rtl (rtl/src/ring_top.rs); do not edit.\n",
+        kinds.iter().map(|k| k.name()).collect::<Vec<_>>().join(",")
+    ));
+    let mut need: Vec<Kind> = vec![];
+    for &k in kinds {
+        let k = if k == Kind::Actuator { Kind::Sensor } else { k };
+        if !need.contains(&k) {
+            need.push(k);
+        }
+    }
+    for k in need {
+        let v = match k {
+            Kind::Sensor | Kind::Actuator => block_verilog(crate::slave::Slave::new()),
+            Kind::Master => block_verilog(crate::master::Master::default()),
+            Kind::SpecialMaster => block_verilog(crate::special_master::SpecialMaster::default()),
+        };
+        out.push_str(&renamed(&v, module_name(k)));
+    }
+    out.push_str(&renamed(
+        &block_verilog(crate::monitor::Monitor::new(false)),
+        "merkur_monitor",
+    ));
+    out.push_str(&top(kinds, cap));
+    out
+}
+
+fn top(kinds: &[Kind], cap: usize) -> String {
+    let n = kinds.len();
+    let nf = 2 * n;
+    let capw = (8 * cap).trailing_zeros() as usize;
+    let mut v = String::new();
+    let w = |v: &mut String, s: &str| {
+        v.push_str(s);
+        v.push('\n');
+    };
+    w(
+        &mut v,
+        "module merkur_ring(clk, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_rd_sel, i_rd_field, o_rd,\n\
+         \x20   i_cap_fibre, i_cap_idx, o_cap, i_wb_node, i_wb_cyc, i_wb_stb, i_wb_we, i_wb_adr, i_wb_dat, o_wb_dat, o_wb_ack);",
+    );
+    w(
+        &mut v,
+        "    input wire clk;\n    input wire i_cfg_we;\n    input wire [15:0] i_cfg_sel;\n    input wire [7:0] i_cfg_field;\n    input wire [31:0] i_cfg_val;\n\
+         \x20   input wire [15:0] i_rd_sel;\n    input wire [7:0] i_rd_field;\n    output reg [31:0] o_rd;\n\
+         \x20   input wire [15:0] i_cap_fibre;\n    input wire [CAPW-1:0] i_cap_idx;\n    output reg [31:0] o_cap;\n\
+         \x20   input wire [15:0] i_wb_node;\n    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
+         \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n    output reg [15:0] o_wb_dat;\n    output reg o_wb_ack;",
+    );
+    v = v.replace("CAPW-1", &(capw - 1).to_string());
+    w(
+        &mut v,
+        "    // Shared configuration.\n    reg [11:0] slots_m1 = 12'd0;\n    reg [15:0] cs_timeout = 16'hffff;\n    reg [15:0] period = 16'd0;\n\
+         \x20   // Monitors run at the nominal rate (half the tick rate).\n    reg men = 1'b0;\n    always @(posedge clk) men <= ~men;\n\
+         \x20   reg men_l = 1'b0;\n    always @(negedge clk) men_l <= men;\n    wire mclk = clk & men_l;",
+    );
+    // Each fibre monitor's last DATA header (used by the nodes' stimulus).
+    w(
+        &mut v,
+        "    /* verilator lint_off UNUSEDSIGNAL */\n    // Only the fibres into a node's PI drive its stimulus (mode N).",
+    );
+    for f in 0..nf {
+        w(
+            &mut v,
+            &format!("    reg [2:0] hdr_cyc_{f} = 3'd0;\n    reg hdr_new_{f} = 1'b0;"),
+        );
+    }
+    w(&mut v, "    /* verilator lint_on UNUSEDSIGNAL */");
+    // Nodes: clock gates, configuration, instances.
+    for (k, &kind) in kinds.iter().enumerate() {
+        // The fibre whose frame ends pace the node's stimulus: its PI
+        // (P(k-1)); for the special master, which builds frames, its PO.
+        let up = if kind == Kind::SpecialMaster {
+            k
+        } else {
+            (k + n - 1) % n
+        };
+        let pi_f = (k + n - 1) % n;
+        w(
+            &mut v,
+            &format!(
+                "    // ---- node {k}: {kind} ----\n\
+                 \x20   reg [31:0] inc_{k} = 32'h80000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0;\n\
+                 \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd0) inc_{k} <= i_cfg_val;\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd1) acc_{k} <= i_cfg_val;\n    end\n\
+                 \x20   always @(negedge clk) enl_{k} <= en_{k};\n    wire nclk_{k} = clk & enl_{k};\n\
+                 \x20   reg [11:0] addr_{k} = 12'd0;\n    reg [15:0] sens_{k}_0 = 16'd0, sens_{k}_1 = 16'd0, sens_{k}_2 = 16'd0, sens_{k}_3 = 16'd0;\n\
+                 \x20   reg [7:0] req_{k} = 8'd0;\n    reg [3:0] reqhold_{k} = 4'd0;\n    reg [2:0] reqbits_{k} = 3'd0;\n\
+                 \x20   always @(posedge clk) begin\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd2) addr_{k} <= i_cfg_val[11:0];\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd0) sens_{k}_0 <= i_cfg_val[15:0];\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd1) sens_{k}_1 <= i_cfg_val[15:0];\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd2) sens_{k}_2 <= i_cfg_val[15:0];\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd3) sens_{k}_3 <= i_cfg_val[15:0];\n\
+                 \x20       if (reqhold_{k} != 4'd0) reqhold_{k} <= reqhold_{k} - 4'd1;\n\
+                 \x20       if (req_{k}[6] && (req_{k}[7] || (hdr_new_{up} && hdr_cyc_{up} == req_{k}[5:3]))) begin\n\
+                 \x20           reqbits_{k} <= req_{k}[2:0];\n            reqhold_{k} <= 4'd8;\n            req_{k}[6] <= 1'b0;\n        end\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd4) req_{k} <= i_cfg_val[7:0];\n    end\n\
+                 \x20   wire [2:0] ureq_{k} = (reqhold_{k} != 4'd0) ? reqbits_{k} : 3'd0;\n\
+                 \x20   reg [1:0] sel_{k} = 2'd0;\n    always @(posedge clk) if (hdr_new_{up}) sel_{k} <= hdr_cyc_{up}[1:0] + 2'd1;\n\
+                 \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;",
+                kind = kind.name()
+            ),
+        );
+        let pi = format!("{{line_{pi_f}, prev_{pi_f}}}");
+        let si = format!("{{line_{}, prev_{}}}", n + k, n + k);
+        let common = format!(
+            ".clock(nclk_{k}), .i_pi({pi}), .i_si({si}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_{k}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_irq1(ureq_{k}[0]), .i_irq2(ureq_{k}[1]), .i_fs_req(ureq_{k}[2])"
+        );
+        w(&mut v, &format!("    wire [1:0] po_{k}, so_{k};\n    wire [1:0] mode_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};"));
+        match kind {
+            Kind::Sensor | Kind::Actuator => {
+                let act = (kind == Kind::Actuator) as u8;
+                w(
+                    &mut v,
+                    &format!(
+                        "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
+                         \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_void_{k}, u_hdr_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                         \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data(sens_{k}),\n\
+                         \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
+                         \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
+                         \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_void(u_void_{k}), .o_hdr_ok(u_hdr_{k}),\n\
+                         \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
+                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0;\n\
+                         \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Sensor values are read in the node's cycle only.\n    wire u_sens_{k} = ^sens_{k};\n    /* verilator lint_on UNUSEDSIGNAL */"
+                    ),
+                );
+            }
+            Kind::Master | Kind::SpecialMaster => {
+                let extra = if kind == Kind::SpecialMaster {
+                    format!(".i_period(period), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),")
+                } else {
+                    String::new()
+                };
+                let defs = if kind == Kind::SpecialMaster {
+                    format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};")
+                } else {
+                    format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;")
+                };
+                w(
+                    &mut v,
+                    &format!(
+                        "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    wire irq1_{k}, irq2_{k}, irqfs_{k};\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
+                         \x20   wire wbsel_{k} = i_wb_node == 16'd{k};\n\
+                         \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Masters have no sensor input.\n    wire u_sens_{k} = ^sens_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                         \x20   {m} n{k}({common}, {extra}\n\
+                         \x20       .i_wb_cyc(i_wb_cyc & wbsel_{k}), .i_wb_stb(i_wb_stb & wbsel_{k}), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),\n\
+                         \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}),\n\
+                         \x20       .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}), .o_aerr(aerr_{k}), .o_running(run_{k}));",
+                        m = module_name(kind)
+                    ),
+                );
+            }
+        }
+        w(
+            &mut v,
+            &format!(
+                "    reg [15:0] nirq1_{k} = 16'd0, nirq2_{k} = 16'd0, nirqfs_{k} = 16'd0;\n\
+                 \x20   always @(posedge nclk_{k}) begin\n        if (irq1_{k}) nirq1_{k} <= nirq1_{k} + 16'd1;\n        if (irq2_{k}) nirq2_{k} <= nirq2_{k} + 16'd1;\n        if (irqfs_{k}) nirqfs_{k} <= nirqfs_{k} + 16'd1;\n    end"
+            ),
+        );
+    }
+    // Fibres: line levels, fault points, monitors, capture.
+    for f in 0..nf {
+        let (src, port, name) = if f < n {
+            (f, "po", format!("P{f}"))
+        } else {
+            ((f - n + 1) % n, "so", format!("S{}", f - n))
+        };
+        w(
+            &mut v,
+            &format!(
+                "    // ---- fibre {name} (from node {src}) ----\n\
+                 \x20   reg line_{f} = 1'b0, prev_{f} = 1'b0, brk_{f} = 1'b0;\n    reg [2:0] flip_{f} = 3'd0;\n\
+                 \x20   wire txl_{f} = fired_{src} ? {port}_{src}[0] : {port}_{src}[1];\n\
+                 \x20   always @(posedge clk) begin\n        line_{f} <= brk_{f} ? 1'b0 : (txl_{f} ^ (flip_{f} != 3'd0));\n        prev_{f} <= line_{f};\n\
+                 \x20       if (flip_{f} != 3'd0) flip_{f} <= flip_{f} - 3'd1;\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd8) brk_{f} <= i_cfg_val[0];\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd9) flip_{f} <= 3'd4;\n    end\n\
+                 \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
+                 \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_phase_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f};\n    wire [3:0] m_reason_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                 \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, prev_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff),\n\
+                 \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
+                 \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
+                 \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_void(m_void_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
+                 \x20   reg [22:0] cap_{f} [0:{last}];\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
+                 \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
+                 \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
+                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
+                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
+                 \x20           h1_{f} <= m_data_{f};\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
+                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
+                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
+                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
+                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
+                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n\
+                 \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{hdr_cyc_{f}, mstat_{f}, m_alarm_{f}, m_alive_{f}, m_data_{f}}};\n\
+                 \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
+                hz = if capw > 4 { format!("{}'d0, ", capw - 4) } else { String::new() },
+                last = 8 * cap - 1,
+                cb = capw - 4,
+            ),
+        );
+    }
+    // Status read.
+    w(
+        &mut v,
+        "    always @(*) begin\n        o_rd = 32'd0;\n        case ({i_rd_sel, i_rd_field})",
+    );
+    for k in 0..n {
+        let f = |x: u32| format!("{{16'd{k}, 8'd{x}}}");
+        w(
+            &mut v,
+            &format!(
+                "            {}: o_rd = {{30'd0, mode_{k}}};\n            {}: o_rd = {{31'd0, fs_{k}}};\n            {}: o_rd = {{16'd0, perr_{k}}};\n            {}: o_rd = {{16'd0, ferr_{k}}};\n\
+                 \x20           {}: o_rd = {{16'd0, aerr_{k}}};\n            {}: o_rd = {{16'd0, serr_{k}}};\n            {}: o_rd = {{20'd0, hop_{k}}};\n            {}: o_rd = {{16'd0, act_{k}}};\n\
+                 \x20           {}: o_rd = {{16'd0, cycles_{k}}};\n            {}: o_rd = {{16'd0, nirq1_{k}}};\n            {}: o_rd = {{16'd0, nirq2_{k}}};\n            {}: o_rd = {{16'd0, nirqfs_{k}}};\n            {}: o_rd = {{31'd0, run_{k}}};",
+                f(0), f(1), f(2), f(3), f(4), f(5), f(6), f(7), f(8), f(9), f(10), f(11), f(12)
+            ),
+        );
+    }
+    for fi in 0..nf {
+        let f = |x: u32| format!("{{16'd{fi}, 8'd{x}}}");
+        w(
+            &mut v,
+            &format!(
+                "            {}: o_rd = {{28'd0, infr_{fi}, hdr_cyc_{fi}}};\n            {}: o_rd = {{16'd0, h1_{fi}}};\n            {}: o_rd = {{16'd0, h0_{fi}}};\n\
+                 \x20           {}: o_rd = {{16'd0, nsec_{fi}}};\n            {}: o_rd = {{16'd0, ntst_{fi}}};\n            {}: o_rd = {{31'd0, m_los_{fi}}};\n            {}: o_rd = {{16'd0, nend_{fi}}};",
+                f(16), f(17), f(18), f(19), f(20), f(21), f(22)
+            ),
+        );
+    }
+    w(
+        &mut v,
+        "            default: o_rd = 32'd0;\n        endcase\n    end",
+    );
+    // Capture read.
+    w(
+        &mut v,
+        "    always @(*) begin\n        o_cap = 32'd0;\n        case (i_cap_fibre)",
+    );
+    for f in 0..nf {
+        w(
+            &mut v,
+            &format!("            16'd{f}: o_cap = {{9'd0, cap_{f}[i_cap_idx]}};"),
+        );
+    }
+    w(
+        &mut v,
+        "            default: o_cap = 32'd0;\n        endcase\n    end",
+    );
+    // Wishbone answer.
+    w(
+        &mut v,
+        "    always @(*) begin\n        o_wb_dat = 16'd0;\n        o_wb_ack = 1'b0;",
+    );
+    for (k, &kind) in kinds.iter().enumerate() {
+        if kind.is_master() {
+            w(
+                &mut v,
+                &format!("        if (i_wb_node == 16'd{k}) begin\n            o_wb_dat = wbdat_{k};\n            o_wb_ack = wback_{k};\n        end"),
+            );
+        }
+    }
+    w(&mut v, "    end");
+    // Global configuration.
+    w(
+        &mut v,
+        "    always @(posedge clk) begin\n        if (i_cfg_we && i_cfg_field == 8'd16) slots_m1 <= i_cfg_val[11:0];\n\
+         \x20       if (i_cfg_we && i_cfg_field == 8'd17) cs_timeout <= i_cfg_val[15:0];\n\
+         \x20       if (i_cfg_we && i_cfg_field == 8'd18) period <= i_cfg_val[15:0];\n    end\nendmodule",
+    );
+    v
+}

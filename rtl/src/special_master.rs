@@ -1,0 +1,532 @@
+//! # special_master — the ring's clock base (protocol §5, §8)
+//!
+//! Purpose: the one master per ring that starts every cycle. Every
+//! `i_period` bit times of its own clock it sends a DATA frame on PO (J K,
+//! H0 = `{00, FS, RWC, S−1}`, H1 = `{RWP, CYC, HOP = 0}`, S slot words) and a
+//! SEC packet on SO (H0 = `{01, 00, CYC[11:0]}`, H1 = NOT H0). The frame that
+//! returns on PI fills the **return store**, a slot-indexed memory (S words
+//! with the cycle they returned in), from which the next frame is built
+//! (protocol §8: the paper's FIFO; it cannot overflow, and a slot that did
+//! not return last cycle is sent as VOID). Per slot of the outgoing frame:
+//! - LOCAL: `{data memory, Alive}`, or an alarm in the home slot (§11, with
+//!   alternation);
+//! - ACT: the returned word with the data memory's value and the actuator's
+//!   Alive; a VOID is regenerated with the Alive the actuator would send;
+//!   an alarm passes;
+//! - otherwise the returned word; an alarm that returns after the SM already
+//!   retransmitted an alarm in that slot is not sent again (VOID).
+//!
+//! Like every master it has the real-time database [`Mdb`] (data memory,
+//! configuration, Alive check, interrupts, Wishbone host port): frames start
+//! once the host has loaded the configuration and set the start bit.
+//!
+//! Limits (this version): the special master itself stays in mode N — it
+//! does not wrap, relay a wrapped frame on its secondary ports or
+//! reintegrate; a ring whose fault is next to the special master is not
+//! supported yet.
+//!
+//! | port | dir | width | clock domain | meaning |
+//! |---|---|---|---|---|
+//! | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
+//! | `i_pi`, `i_si` | in | 2 | clock | physical inputs, DDR sample pairs |
+//! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
+//! | `i_address` | in | 12 | static | home slot |
+//! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
+//! | `i_period` | in | 16 | static | cycle period P in bit times (protocol §8) |
+//! | `i_cs_timeout` | in | 16 | static | clocks without a returned frame before failsafe |
+//! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
+//! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
+//! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received |
+//! | `o_mode` | out | 2 | clock | switchbox mode (always 0, N) |
+//! | `o_failsafe` | out | 1 | clock | failsafe |
+//! | `o_perr`, `o_ferr`, `o_aerr`, `o_serr` | out | 16 | clock | error counters (`serr`: SEC packets that did not return) |
+//! | `o_hop` | out | 12 | clock | HOP of the last returned frame (N − 1 in a healthy ring) |
+//! | `o_cycles` | out | 16 | clock | frames sent |
+//! | `o_running` | out | 1 | clock | the host started the ring |
+//!
+//! Latency: a frame's J starts 1–5 bit times after its period tick; a
+//! returned word is in the store ≈ 3.5 bit times after its last line bit.
+//!
+//! ```text
+//! period     |<------------------------- P bit times ------------------------>|
+//! PO         | J K | H0 | H1 | slot 0 | ... | slot S-1 |~~~~~~ idle ~~~~~~~~~~~| J K ...
+//! SO         | J K | H0 | H1 |~~~~~~~~~~~~~~~~~~~~~ idle ~~~~~~~~~~~~~~~~~~~~~| J K ...
+//! PI (back)        ...L later...  | J K | H0 | H1 | slot 0 | ... -> return store
+//! ```
+
+use crate::mdb::Mdb;
+use crate::pkt_tx::PktTx;
+use crate::port_rx::PortRx;
+use rust_hdl::prelude::*;
+
+/// Special master.
+#[derive(LogicBlock)]
+pub struct SpecialMaster {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// Primary input.
+    pub i_pi: Signal<In, Bits<2>>,
+    /// Secondary input.
+    pub i_si: Signal<In, Bits<2>>,
+    /// Primary output.
+    pub o_po: Signal<Out, Bits<2>>,
+    /// Secondary output.
+    pub o_so: Signal<Out, Bits<2>>,
+    /// Home slot.
+    pub i_address: Signal<In, Bits<12>>,
+    /// Slots − 1.
+    pub i_slots_m1: Signal<In, Bits<12>>,
+    /// Cycle period in bit times.
+    pub i_period: Signal<In, Bits<16>>,
+    /// CS timeout in clocks.
+    pub i_cs_timeout: Signal<In, Bits<16>>,
+    /// Wishbone cycle.
+    pub i_wb_cyc: Signal<In, Bit>,
+    /// Wishbone strobe.
+    pub i_wb_stb: Signal<In, Bit>,
+    /// Wishbone write enable.
+    pub i_wb_we: Signal<In, Bit>,
+    /// Wishbone word address.
+    pub i_wb_adr: Signal<In, Bits<14>>,
+    /// Wishbone write data.
+    pub i_wb_dat: Signal<In, Bits<16>>,
+    /// Wishbone read data.
+    pub o_wb_dat: Signal<Out, Bits<16>>,
+    /// Wishbone acknowledge.
+    pub o_wb_ack: Signal<Out, Bit>,
+    /// User interrupt 1 request.
+    pub i_irq1: Signal<In, Bit>,
+    /// User interrupt 2 request.
+    pub i_irq2: Signal<In, Bit>,
+    /// User failsafe request.
+    pub i_fs_req: Signal<In, Bit>,
+    /// IRQ1 alarm received.
+    pub o_irq1: Signal<Out, Bit>,
+    /// IRQ2 alarm received.
+    pub o_irq2: Signal<Out, Bit>,
+    /// FAILSAFE alarm received.
+    pub o_irq_fs: Signal<Out, Bit>,
+    /// Mode (always N).
+    pub o_mode: Signal<Out, Bits<2>>,
+    /// Failsafe.
+    pub o_failsafe: Signal<Out, Bit>,
+    /// Bad words at INPUT.
+    pub o_perr: Signal<Out, Bits<16>>,
+    /// Rejected headers at INPUT.
+    pub o_ferr: Signal<Out, Bits<16>>,
+    /// Alive-check failures.
+    pub o_aerr: Signal<Out, Bits<16>>,
+    /// SEC failures.
+    pub o_serr: Signal<Out, Bits<16>>,
+    /// HOP of the last returned frame.
+    pub o_hop: Signal<Out, Bits<12>>,
+    /// Frames sent.
+    pub o_cycles: Signal<Out, Bits<16>>,
+    /// Running.
+    pub o_running: Signal<Out, Bit>,
+    rx_in: PortRx,
+    rx_bsr: PortRx,
+    ftx: PktTx,
+    stx: PktTx,
+    mdb: Mdb,
+    store: RAM<Bits<22>, 12>,
+    sent_alarm: RAM<Bit, 12>,
+    aact: RAM<Bit, 12>,
+    half: DFF<Bit>,
+    bcnt: DFF<Bits<16>>,
+    cyc: DFF<Bits<12>>,
+    cycles: DFF<Bits<16>>,
+    toggle: DFF<Bit>,
+    fbusy: DFF<Bit>,
+    failsafe: DFF<Bit>,
+    ret_rwc: DFF<Bit>,
+    ret_cyc: DFF<Bits<3>>,
+    hop: DFF<Bits<12>>,
+    armed: DFF<Bit>,
+    quiet: DFF<Bits<16>>,
+    sec_sent: DFF<Bit>,
+    sec_ok: DFF<Bit>,
+    sec_word: DFF<Bits<16>>,
+    serr: DFF<Bits<16>>,
+    perr: DFF<Bits<16>>,
+    ferr: DFF<Bits<16>>,
+    pend_fs: DFF<Bit>,
+    pend_i1: DFF<Bit>,
+    pend_i2: DFF<Bit>,
+    prev_alarm: DFF<Bit>,
+    tick: Signal<Local, Bit>,
+    st: Signal<Local, Bits<22>>,
+    st_ok: Signal<Local, Bit>,
+    prev_cyc: Signal<Local, Bits<3>>,
+    reason: Signal<Local, Bits<4>>,
+    send_alarm: Signal<Local, Bit>,
+    w_data: Signal<Local, Bits<16>>,
+    w_alive: Signal<Local, Bit>,
+    w_alarm: Signal<Local, Bit>,
+    w_void: Signal<Local, Bit>,
+    home: Signal<Local, Bit>,
+    h0: Signal<Local, Bits<16>>,
+    h1: Signal<Local, Bits<16>>,
+    sec_h0: Signal<Local, Bits<16>>,
+    st_word: Signal<Local, Bits<22>>,
+}
+
+impl Default for SpecialMaster {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            i_pi: Default::default(),
+            i_si: Default::default(),
+            o_po: Default::default(),
+            o_so: Default::default(),
+            i_address: Default::default(),
+            i_slots_m1: Default::default(),
+            i_period: Default::default(),
+            i_cs_timeout: Default::default(),
+            i_wb_cyc: Default::default(),
+            i_wb_stb: Default::default(),
+            i_wb_we: Default::default(),
+            i_wb_adr: Default::default(),
+            i_wb_dat: Default::default(),
+            o_wb_dat: Default::default(),
+            o_wb_ack: Default::default(),
+            i_irq1: Default::default(),
+            i_irq2: Default::default(),
+            i_fs_req: Default::default(),
+            o_irq1: Default::default(),
+            o_irq2: Default::default(),
+            o_irq_fs: Default::default(),
+            o_mode: Default::default(),
+            o_failsafe: Default::default(),
+            o_perr: Default::default(),
+            o_ferr: Default::default(),
+            o_aerr: Default::default(),
+            o_serr: Default::default(),
+            o_hop: Default::default(),
+            o_cycles: Default::default(),
+            o_running: Default::default(),
+            rx_in: PortRx::new(false),
+            rx_bsr: PortRx::new(false),
+            ftx: Default::default(),
+            stx: Default::default(),
+            mdb: Default::default(),
+            store: Default::default(),
+            sent_alarm: Default::default(),
+            aact: Default::default(),
+            half: Default::default(),
+            bcnt: Default::default(),
+            cyc: Default::default(),
+            cycles: Default::default(),
+            toggle: Default::default(),
+            fbusy: Default::default(),
+            failsafe: Default::default(),
+            ret_rwc: Default::default(),
+            ret_cyc: Default::default(),
+            hop: Default::default(),
+            armed: Default::default(),
+            quiet: Default::default(),
+            sec_sent: Default::default(),
+            sec_ok: Default::default(),
+            sec_word: Default::default(),
+            serr: Default::default(),
+            perr: Default::default(),
+            ferr: Default::default(),
+            pend_fs: Default::default(),
+            pend_i1: Default::default(),
+            pend_i2: Default::default(),
+            prev_alarm: Default::default(),
+            tick: Default::default(),
+            st: Default::default(),
+            st_ok: Default::default(),
+            prev_cyc: Default::default(),
+            reason: Default::default(),
+            send_alarm: Default::default(),
+            w_data: Default::default(),
+            w_alive: Default::default(),
+            w_alarm: Default::default(),
+            w_void: Default::default(),
+            home: Default::default(),
+            h0: Default::default(),
+            h1: Default::default(),
+            sec_h0: Default::default(),
+            st_word: Default::default(),
+        }
+    }
+}
+
+impl Logic for SpecialMaster {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, ret_rwc, ret_cyc, hop,
+            armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1, pend_i2,
+            prev_alarm
+        );
+        self.rx_in.clock.next = self.clock.val();
+        self.rx_bsr.clock.next = self.clock.val();
+        self.ftx.clock.next = self.clock.val();
+        self.stx.clock.next = self.clock.val();
+        self.mdb.clock.next = self.clock.val();
+        self.store.read_clock.next = self.clock.val();
+        self.store.write_clock.next = self.clock.val();
+        self.sent_alarm.read_clock.next = self.clock.val();
+        self.sent_alarm.write_clock.next = self.clock.val();
+        self.aact.read_clock.next = self.clock.val();
+        self.aact.write_clock.next = self.clock.val();
+
+        // Receive ports (mode N: INPUT = PI, BSR = SI).
+        self.rx_in.i_samples.next = self.i_pi.val();
+        self.rx_bsr.i_samples.next = self.i_si.val();
+        self.rx_in.i_slots_m1.next = self.i_slots_m1.val();
+        self.rx_bsr.i_slots_m1.next = self.i_slots_m1.val();
+        self.rx_in.i_address.next = self.i_address.val();
+        self.rx_bsr.i_address.next = self.i_address.val();
+        self.rx_in.i_tst_fail.next = false;
+        self.rx_bsr.i_tst_fail.next = false;
+
+        // The period: one tick every i_period bit times once running.
+        self.half.d.next = !self.half.q.val();
+        self.tick.next = false;
+        if self.mdb.o_running.val() & self.half.q.val() {
+            self.bcnt.d.next = self.bcnt.q.val() + 1;
+            if (self.bcnt.q.val() + 1) == self.i_period.val() {
+                self.bcnt.d.next = 0.into();
+            }
+            if self.bcnt.q.val() == 0 {
+                self.tick.next = true;
+            }
+        }
+
+        // Headers (protocol §5).
+        self.h0.next = bit_cast::<16, 12>(self.i_slots_m1.val()) | 0;
+        if self.failsafe.q.val() {
+            self.h0.next = self.h0.val() | 0x2000;
+        }
+        self.h1.next = 0.into();
+        if self.ret_rwc.q.val() {
+            self.h1.next = 0x8000.into();
+        }
+        self.h1.next =
+            self.h1.val() | ((bit_cast::<16, 3>(self.cyc.q.val().get_bits::<3>(0)) | 0) << 12);
+        self.sec_h0.next = bit_cast::<16, 12>(self.cyc.q.val()) | 0x4000;
+        self.ftx.i_start.next = self.tick.val();
+        self.ftx.i_slots.next = true;
+        self.ftx.i_slots_m1.next = self.i_slots_m1.val();
+        self.ftx.i_h0.next = self.h0.val();
+        self.ftx.i_h1.next = self.h1.val();
+        self.stx.i_start.next = self.tick.val() & !self.ret_rwc.q.val();
+        self.stx.i_slots.next = false;
+        self.stx.i_slots_m1.next = self.i_slots_m1.val();
+        self.stx.i_h0.next = self.sec_h0.val();
+        self.stx.i_h1.next = !self.sec_h0.val();
+        self.stx.i_word_data.next = 0.into();
+        self.stx.i_word_alive.next = false;
+        self.stx.i_word_alarm.next = false;
+        self.stx.i_word_void.next = false;
+
+        // The word of slot ftx.o_slot (protocol §7, §8): store, data memory,
+        // configuration, actuator Alive, all read at that slot.
+        self.mdb.i_tx_slot.next = self.ftx.o_slot.val();
+        self.store.read_address.next = self.ftx.o_slot.val();
+        self.aact.read_address.next = self.ftx.o_slot.val();
+        self.st.next = self.store.read_data.val();
+        // Returned last cycle: valid bit and the previous cycle's CYC.
+        // (CYC − 1 in 3 bits: rust-hdl literals are 32 bits wide, so the
+        // subtraction is truncated in its own signal before comparing.)
+        self.prev_cyc.next = self.cyc.q.val().get_bits::<3>(0) - 1;
+        self.st_ok.next =
+            self.st.val().get_bit(18) & (self.st.val().get_bits::<3>(19) == self.prev_cyc.val());
+        self.w_data.next = self.st.val().get_bits::<16>(0);
+        self.w_alive.next = self.st.val().get_bit(16);
+        self.w_alarm.next = self.st.val().get_bit(17);
+        self.w_void.next = !self.st_ok.val();
+        self.home.next = self.ftx.o_slot.val() == self.i_address.val();
+        // Alarm queue of the home slot: FAILSAFE > IRQ1 > IRQ2.
+        self.reason.next = 2.into();
+        if self.pend_i1.q.val() {
+            self.reason.next = 1.into();
+        }
+        if self.pend_fs.q.val() {
+            self.reason.next = 3.into();
+        }
+        self.send_alarm.next = self.home.val()
+            & (self.pend_fs.q.val() | self.pend_i1.q.val() | self.pend_i2.q.val())
+            & !self.prev_alarm.q.val();
+        if !self.failsafe.q.val() {
+            if self.mdb.o_tx_local.val() {
+                // LOCAL.
+                self.w_data.next = self.mdb.o_tx_data.val();
+                self.w_alive.next = self.toggle.q.val();
+                self.w_alarm.next = false;
+                self.w_void.next = false;
+                if self.send_alarm.val() {
+                    self.w_data.next = (bit_cast::<16, 4>(self.reason.val()) | 0) << 12;
+                    self.w_alarm.next = true;
+                }
+            } else if self.mdb.o_tx_act.val() {
+                // ACT.
+                if !self.st_ok.val() {
+                    self.w_data.next = self.mdb.o_tx_data.val();
+                    self.w_alive.next = !self.aact.read_data.val();
+                    self.w_alarm.next = false;
+                    self.w_void.next = false;
+                } else if !self.w_alarm.val() {
+                    self.w_data.next = self.mdb.o_tx_data.val();
+                }
+            }
+        }
+        self.ftx.i_word_data.next = self.w_data.val();
+        self.ftx.i_word_alive.next = self.w_alive.val();
+        self.ftx.i_word_alarm.next = self.w_alarm.val();
+        self.ftx.i_word_void.next = self.w_void.val();
+        // What a taken word leaves behind (in the clock it is taken): its
+        // alarm flag (the retransmit-once rule), the actuator Alive, the
+        // alarm queue.
+        self.sent_alarm.write_enable.next = self.ftx.o_take.val();
+        self.sent_alarm.write_address.next = self.ftx.o_slot.val();
+        self.sent_alarm.write_data.next = self.w_alarm.val() & !self.w_void.val();
+        self.aact.write_enable.next = false;
+        self.aact.write_address.next = self.ftx.o_slot.val();
+        self.aact.write_data.next = self.w_alive.val();
+        if self.ftx.o_take.val() & !self.failsafe.q.val() & self.mdb.o_tx_act.val() {
+            self.aact.write_enable.next = true;
+        }
+        if self.ftx.o_take.val() & self.home.val() {
+            self.prev_alarm.d.next = self.send_alarm.val() & !self.failsafe.q.val();
+            if self.send_alarm.val() & !self.failsafe.q.val() {
+                if self.reason.val() == 3 {
+                    self.pend_fs.d.next = false;
+                    self.failsafe.d.next = true;
+                } else if self.reason.val() == 1 {
+                    self.pend_i1.d.next = false;
+                } else {
+                    self.pend_i2.d.next = false;
+                }
+            }
+        }
+        if self.i_irq1.val() {
+            self.pend_i1.d.next = true;
+        }
+        if self.i_irq2.val() {
+            self.pend_i2.d.next = true;
+        }
+        if self.i_fs_req.val() {
+            self.pend_fs.d.next = true;
+        }
+        // Frame start and end: CYC, the Alive toggle, the SEC check.
+        self.fbusy.d.next = self.ftx.o_busy.val();
+        if self.fbusy.q.val() & !self.ftx.o_busy.val() {
+            // CYC counts frames sent: during frame c it is c.
+            self.toggle.d.next = !self.toggle.q.val();
+            self.cyc.d.next = self.cyc.q.val() + 1;
+        }
+        if self.tick.val() {
+            self.sec_word.d.next = !self.sec_h0.val();
+            if self.cycles.q.val() != 0xffff {
+                self.cycles.d.next = self.cycles.q.val() + 1;
+            }
+            self.sec_sent.d.next = !self.ret_rwc.q.val();
+            self.sec_ok.d.next = false;
+            if self.sec_sent.q.val() & !self.sec_ok.q.val() & (self.serr.q.val() != 0xffff) {
+                self.serr.d.next = self.serr.q.val() + 1;
+            }
+        }
+        if self.rx_bsr.o_wvalid.val()
+            & self.rx_bsr.o_ok.val()
+            & (self.rx_bsr.o_kind.val() == 1)
+            & (self.rx_bsr.o_ptype.val() == 1)
+            & (self.rx_bsr.o_data.val() == self.sec_word.q.val())
+        {
+            self.sec_ok.d.next = true;
+        }
+
+        // The returning frame (protocol §5, §8, §12); a good header
+        // restarts the CS timeout.
+        if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
+            self.quiet.d.next = self.quiet.q.val() + 1;
+        }
+        if self.rx_in.o_wvalid.val() & self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 0) {
+            if self.rx_in.o_kind.val() == 0 {
+                self.ret_rwc.d.next = self.rx_in.o_data.val().get_bit(12);
+                if self.rx_in.o_data.val().get_bit(13) {
+                    self.failsafe.d.next = true;
+                }
+            }
+            if self.rx_in.o_kind.val() == 1 {
+                self.ret_cyc.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
+                self.hop.d.next = self.rx_in.o_data.val().get_bits::<12>(0);
+                self.armed.d.next = true;
+                self.quiet.d.next = 0.into();
+            }
+        }
+        if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
+            self.failsafe.d.next = true;
+        }
+        if self.rx_in.o_wvalid.val()
+            & !self.rx_in.o_ok.val()
+            & !self.rx_in.o_void.val()
+            & (self.perr.q.val() != 0xffff)
+        {
+            self.perr.d.next = self.perr.q.val() + 1;
+        }
+        if self.rx_in.o_hdr_bad.val() & (self.ferr.q.val() != 0xffff) {
+            self.ferr.d.next = self.ferr.q.val() + 1;
+        }
+        if self.mdb.o_irq_fs.val() {
+            self.failsafe.d.next = true;
+        }
+        // The return store: {CYC, valid, ALARM, ALIVE, data}; a bad or VOID
+        // word, or an alarm coming back after the SM sent an alarm in that
+        // slot, is stored as not valid (sent as VOID).
+        self.sent_alarm.read_address.next = self.rx_in.o_slot.val();
+        self.st_word.next = (bit_cast::<22, 16>(self.mdb.o_s2_data.val()) | 0)
+            | ((bit_cast::<22, 3>(self.ret_cyc.q.val()) | 0) << 19);
+        if self.mdb.o_s2_alive.val() {
+            self.st_word.next = self.st_word.val() | 0x10000;
+        }
+        if self.mdb.o_s2_alarm.val() {
+            self.st_word.next = self.st_word.val() | 0x20000;
+        }
+        if self.mdb.o_s2_ok.val() & !(self.mdb.o_s2_alarm.val() & self.sent_alarm.read_data.val()) {
+            self.st_word.next = self.st_word.val() | 0x40000;
+        }
+        self.store.write_enable.next = self.mdb.o_s2.val();
+        self.store.write_address.next = self.mdb.o_s2_slot.val();
+        self.store.write_data.next = self.st_word.val();
+
+        // The database.
+        self.mdb.i_wb_cyc.next = self.i_wb_cyc.val();
+        self.mdb.i_wb_stb.next = self.i_wb_stb.val();
+        self.mdb.i_wb_we.next = self.i_wb_we.val();
+        self.mdb.i_wb_adr.next = self.i_wb_adr.val();
+        self.mdb.i_wb_dat.next = self.i_wb_dat.val();
+        self.o_wb_dat.next = self.mdb.o_wb_dat.val();
+        self.o_wb_ack.next = self.mdb.o_wb_ack.val();
+        self.mdb.i_home.next = self.i_address.val();
+        self.mdb.i_fs.next = self.failsafe.q.val();
+        self.mdb.i_mode.next = 0.into();
+        self.mdb.i_wvalid.next = self.rx_in.o_wvalid.val();
+        self.mdb.i_kind.next = self.rx_in.o_kind.val();
+        self.mdb.i_slot.next = self.rx_in.o_slot.val();
+        self.mdb.i_data.next = self.rx_in.o_data.val();
+        self.mdb.i_alive.next = self.rx_in.o_alive.val();
+        self.mdb.i_alarm.next = self.rx_in.o_alarm.val();
+        self.mdb.i_ok.next = self.rx_in.o_ok.val();
+        self.mdb.i_void.next = self.rx_in.o_void.val();
+
+        self.o_irq1.next = self.mdb.o_irq1.val();
+        self.o_irq2.next = self.mdb.o_irq2.val();
+        self.o_irq_fs.next = self.mdb.o_irq_fs.val();
+        self.o_mode.next = 0.into();
+        self.o_failsafe.next = self.failsafe.q.val();
+        self.o_perr.next = self.perr.q.val();
+        self.o_ferr.next = self.ferr.q.val();
+        self.o_aerr.next = self.mdb.o_aerr.val();
+        self.o_serr.next = self.serr.q.val();
+        self.o_hop.next = self.hop.q.val();
+        self.o_cycles.next = self.cycles.q.val();
+        self.o_running.next = self.mdb.o_running.val();
+        self.o_po.next = self.ftx.o_line.val();
+        self.o_so.next = self.stx.o_line.val();
+    }
+}

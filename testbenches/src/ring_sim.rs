@@ -1,0 +1,681 @@
+//! Runs a scenario's whole ring as Verilog in Verilator ([`merkur_rtl::ring_top`])
+//! and compares it with the reference model's cycle records (the same records
+//! the golden trace in `tb-data/` is written from): every word every fibre
+//! carried in every cycle, the headers, and at the end every node's state
+//! (mode, failsafe, error counters, interrupts received, actuator outputs,
+//! masters' data memories read over Wishbone).
+//!
+//! The driver does what a scenario's environment does, at the moment the
+//! model says: sensor values per cycle, host writes and user requests
+//! "before cycle c" (after frame c−1 has passed the node, before frame c).
+
+use crate::verilator::Model;
+use crate::Rng;
+use merkur_model::config::Config;
+use merkur_model::ring::{Carry, CycleRecord, HeaderRx, Slot};
+use merkur_model::scenario::{IrqLine, Kind};
+use merkur_rtl::mdb::{ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
+use merkur_rtl::ring_top::{cap_slots, ring_verilog, TICKS_PER_BIT};
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+/// One difference between RTL and model.
+#[derive(Debug, Clone)]
+pub struct Mismatch {
+    /// Cycle (the last cycle for end-of-run state).
+    pub cycle: u32,
+    /// Where: a fibre (`P3`), a node (`node 5`).
+    pub place: String,
+    /// What: `slot 4`, `H1`, `perr`, `db[7]` …
+    pub what: String,
+    /// The model's value.
+    pub expected: String,
+    /// The RTL's value.
+    pub got: String,
+}
+
+impl std::fmt::Display for Mismatch {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "cycle {} {} {}: expected {}, got {}",
+            self.cycle, self.place, self.what, self.expected, self.got
+        )
+    }
+}
+
+/// One node's row of the summary table.
+#[derive(Debug, Clone)]
+pub struct NodeRow {
+    /// Node index.
+    pub node: usize,
+    /// Kind name.
+    pub kind: &'static str,
+    /// Mode name (RTL).
+    pub mode: &'static str,
+    /// Failsafe (RTL).
+    pub failsafe: bool,
+    /// Bad words at INPUT (RTL).
+    pub perr: u64,
+    /// Interrupts received (RTL, masters).
+    pub irqs: u64,
+    /// Mismatches found at this node.
+    pub mismatches: usize,
+}
+
+/// The result of one run.
+#[derive(Debug)]
+pub struct Report {
+    /// Cycles compared.
+    pub cycles: u32,
+    /// Words (slots and headers) compared.
+    pub words: u64,
+    /// Every mismatch, in the order found.
+    pub mismatches: Vec<Mismatch>,
+    /// Simulation ticks (4 per bit time).
+    pub ticks: u64,
+    /// Wall time of the simulation (without the Verilator build).
+    pub wall: Duration,
+    /// Wall time of the Verilator build (0 when cached).
+    pub build: Duration,
+    /// Measured cycle period at the special master, bit times.
+    pub period_bits: f64,
+    /// Per-node summary.
+    pub rows: Vec<NodeRow>,
+}
+
+/// Options of a run.
+#[derive(Debug, Clone, Default)]
+pub struct Options {
+    /// Write an FST waveform here.
+    pub wave: Option<std::path::PathBuf>,
+    /// Seed of the clock phases.
+    pub seed: u64,
+    /// Print progress to stderr.
+    pub progress: bool,
+}
+
+/// What the RTL ring does not model yet, as a message naming the field.
+pub fn unsupported(cfg: &Config) -> Option<String> {
+    if cfg.ext {
+        return Some(
+            "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
+        );
+    }
+    if let Some((c, f)) = cfg.faults.first() {
+        return Some(format!(
+            "fault[0] (cycle {c}, {f:?}): fault injection in RTL simulation is issue 5; this scenario has {} fault(s)",
+            cfg.faults.len()
+        ));
+    }
+    if cfg.period >= 1 << 16 {
+        return Some(format!(
+            "frame.period_bits = {}: the RTL period register has 16 bits",
+            cfg.period
+        ));
+    }
+    None
+}
+
+struct Ring {
+    m: Model,
+    clk: usize,
+    cfg_we: usize,
+    cfg_sel: usize,
+    cfg_field: usize,
+    cfg_val: usize,
+    rd_sel: usize,
+    rd_field: usize,
+    rd: usize,
+    cap_f: usize,
+    cap_i: usize,
+    cap: usize,
+    wb: [usize; 8],
+    ticks: u64,
+}
+
+impl Ring {
+    fn tick(&mut self) {
+        self.m.tick(self.clk);
+        self.ticks += 1;
+    }
+    fn cfg(&mut self, sel: usize, field: u32, val: u64) {
+        self.m.set(self.cfg_we, 1);
+        self.m.set(self.cfg_sel, sel as u64);
+        self.m.set(self.cfg_field, field as u64);
+        self.m.set(self.cfg_val, val);
+        self.tick();
+        self.m.set(self.cfg_we, 0);
+    }
+    fn rd(&mut self, sel: usize, field: u32) -> u64 {
+        self.m.set(self.rd_sel, sel as u64);
+        self.m.set(self.rd_field, field as u64);
+        self.m.eval();
+        self.m.get(self.rd)
+    }
+    fn cap(&mut self, fibre: usize, idx: usize) -> u64 {
+        self.m.set(self.cap_f, fibre as u64);
+        self.m.set(self.cap_i, idx as u64);
+        self.m.eval();
+        self.m.get(self.cap)
+    }
+    /// One Wishbone B4 classic transfer with master `node`.
+    fn wb(&mut self, node: usize, adr: u16, write: Option<u16>) -> Result<u16, String> {
+        let [n, cyc, stb, we, a, d, dat, ack] = self.wb;
+        self.m.set(n, node as u64);
+        self.m.set(a, adr as u64);
+        self.m.set(we, write.is_some() as u64);
+        self.m.set(d, write.unwrap_or(0) as u64);
+        self.m.set(cyc, 1);
+        self.m.set(stb, 1);
+        for _ in 0..200 {
+            self.tick();
+            if self.m.get(ack) == 1 {
+                let v = self.m.get(dat) as u16;
+                self.m.set(cyc, 0);
+                self.m.set(stb, 0);
+                self.tick();
+                self.tick();
+                self.tick();
+                return Ok(v);
+            }
+        }
+        Err(format!(
+            "Wishbone of node {node}: no acknowledge for address {adr:#06x}"
+        ))
+    }
+}
+
+/// Status fields of `merkur_ring` (see [`merkur_rtl::ring_top`]).
+mod st {
+    pub const MODE: u32 = 0;
+    pub const FS: u32 = 1;
+    pub const PERR: u32 = 2;
+    pub const FERR: u32 = 3;
+    pub const AERR: u32 = 4;
+    pub const SERR: u32 = 5;
+    pub const HOP: u32 = 6;
+    pub const ACT: u32 = 7;
+    pub const CYCLES: u32 = 8;
+    pub const IRQ1: u32 = 9;
+    pub const IRQ2: u32 = 10;
+    pub const IRQFS: u32 = 11;
+    pub const NSEC: u32 = 19;
+    pub const NEND: u32 = 22;
+}
+
+fn slot_token(s: &Slot) -> String {
+    match s {
+        Slot::Data(w) => format!(
+            "{}{:04x}{}",
+            if w.alarm { "!" } else { "" },
+            w.data,
+            if w.alive { "+" } else { "-" }
+        ),
+        Slot::Bad(_) => "x".into(),
+        Slot::Void => "v".into(),
+        Slot::Missing => ".".into(),
+    }
+}
+
+fn cap_token(e: u64, cyc: u32) -> String {
+    if (e >> 20) & 7 != (cyc & 7) as u64 {
+        return ".".into();
+    }
+    match (e >> 18) & 3 {
+        1 => format!(
+            "{}{:04x}{}",
+            if (e >> 17) & 1 == 1 { "!" } else { "" },
+            e & 0xffff,
+            if (e >> 16) & 1 == 1 { "+" } else { "-" }
+        ),
+        3 => "v".into(),
+        _ => "x".into(),
+    }
+}
+
+fn fibre_name(f: usize, n: usize) -> String {
+    if f < n {
+        format!("P{f}")
+    } else {
+        format!("S{}", f - n)
+    }
+}
+
+/// Runs `cfg` (whose model records are `recs`) as RTL and compares.
+pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report, String> {
+    if let Some(why) = unsupported(cfg) {
+        return Err(why);
+    }
+    let n = cfg.nodes.len();
+    let s = cfg.slots;
+    let capn = cap_slots(s);
+    let kinds: Vec<Kind> = cfg.nodes.iter().map(|x| x.kind).collect();
+    let verilog = ring_verilog(&kinds, s);
+    let t0 = Instant::now();
+    let m = Model::build_top_traced(&verilog, "merkur_ring", opts.wave.as_deref())?;
+    let build = t0.elapsed();
+    let p = |name: &str| m.port(name);
+    let mut r = Ring {
+        clk: p("clk"),
+        cfg_we: p("i_cfg_we"),
+        cfg_sel: p("i_cfg_sel"),
+        cfg_field: p("i_cfg_field"),
+        cfg_val: p("i_cfg_val"),
+        rd_sel: p("i_rd_sel"),
+        rd_field: p("i_rd_field"),
+        rd: p("o_rd"),
+        cap_f: p("i_cap_fibre"),
+        cap_i: p("i_cap_idx"),
+        cap: p("o_cap"),
+        wb: [
+            p("i_wb_node"),
+            p("i_wb_cyc"),
+            p("i_wb_stb"),
+            p("i_wb_we"),
+            p("i_wb_adr"),
+            p("i_wb_dat"),
+            p("o_wb_dat"),
+            p("o_wb_ack"),
+        ],
+        m,
+        ticks: 0,
+    };
+    let t1 = Instant::now();
+    let mut rng = Rng::new(opts.seed ^ cfg.seed);
+    let period = cfg.period as u64;
+    // Shared configuration: S−1, CS timeout 2.5 periods (2 per protocol
+    // §12 plus margin for the clock offsets), period.
+    r.cfg(0, 16, s as u64 - 1);
+    r.cfg(0, 17, (5 * period).min(0xfffe));
+    r.cfg(0, 18, period);
+    for (k, nd) in cfg.nodes.iter().enumerate() {
+        let inc = ((1u64 << 31) as f64 * (1.0 + nd.ppm * 1e-6)).round() as u64;
+        r.cfg(k, 0, inc);
+        r.cfg(k, 1, rng.next_u64() & 0xffff_ffff);
+        r.cfg(k, 2, nd.address as u64);
+        if nd.kind == Kind::Sensor {
+            for c in 0..4u32.min(cfg.cycles) {
+                let v = merkur_model::ring::sensor_value(cfg, nd.address, c);
+                r.cfg(k, 3, ((c as u64 & 3) << 16) | v as u64);
+            }
+        }
+    }
+    // Let every receiver lock to the idle lines.
+    for _ in 0..400 * TICKS_PER_BIT {
+        r.tick();
+    }
+    // Masters: configuration bytes, host writes of cycle 0, start; the
+    // special master last (its start bit starts the frames).
+    let mut order: Vec<usize> = (0..n).filter(|&k| kinds[k] == Kind::Master).collect();
+    order.push(cfg.sm);
+    for &k in &order {
+        for slot in 0..s {
+            let b = cfg.config_byte(k, slot);
+            if b != 0 {
+                r.wb(k, WB_CFG + slot as u16, Some(b as u16))?;
+            }
+        }
+        for &(c, node, slot, data) in &cfg.host_writes {
+            if c == 0 && node == k {
+                r.wb(k, slot as u16, Some(data))?;
+            }
+        }
+    }
+    // Requests of cycle 0 are raised now, later ones after the previous
+    // frame has passed the node.
+    let mut reqs: Vec<(u32, usize, u64)> = vec![];
+    for &(c, node, line) in &cfg.irqs {
+        let bit = match line {
+            IrqLine::Irq1 => 1,
+            IrqLine::Irq2 => 2,
+            IrqLine::Failsafe => 4,
+        };
+        match reqs.iter_mut().find(|x| x.0 == c && x.1 == node) {
+            Some(x) => x.2 |= bit,
+            None => reqs.push((c, node, bit)),
+        }
+    }
+    reqs.sort();
+    let mut writes: Vec<(u32, usize, usize, u16)> = cfg
+        .host_writes
+        .iter()
+        .copied()
+        .filter(|w| w.0 > 0)
+        .collect();
+    writes.sort_by_key(|w| w.0);
+    for &(c, node, bits) in reqs.iter().filter(|x| x.0 == 0) {
+        let _ = c;
+        r.cfg(node, 4, 0xc0 | bits);
+    }
+    reqs.retain(|x| x.0 > 0);
+    for &k in &order {
+        r.wb(k, WB_STATUS, Some(ST_RUN))?;
+    }
+
+    let into = |k: usize| (k + n - 1) % n; // fibre P(k-1) feeds node k's PI
+    let mut mism: Vec<Mismatch> = vec![];
+    let mut words = 0u64;
+    let mut sent = 0u32; // frames the SM has started
+    let mut compared = 0u32; // cycles compared
+    let mut starts: Vec<u64> = vec![];
+    let last_cycle = cfg.cycles - 1;
+    let mut stopped_at: Option<u64> = None;
+    let limit = (cfg.cycles as u64 + 4) * period * TICKS_PER_BIT as u64 * 2 + 100_000;
+    let progress_every = (cfg.cycles / 20).max(1);
+    loop {
+        r.tick();
+        if r.ticks % 4 != 0 {
+            continue;
+        }
+        if r.ticks > limit {
+            let ends: Vec<String> = (0..2 * n)
+                .map(|f| format!("{} {}", fibre_name(f, n), r.rd(f, st::NEND)))
+                .collect();
+            return Err(format!(
+                "the ring did not finish: {sent} of {} frames sent after {} ticks; frames ended per fibre: {}",
+                cfg.cycles,
+                r.ticks,
+                ends.join(", ")
+            ));
+        }
+        let now = r.rd(cfg.sm, st::CYCLES) as u32;
+        while sent < now {
+            // Frame `sent` started.
+            starts.push(r.ticks);
+            let c = sent;
+            sent += 1;
+            if opts.progress && c % progress_every == 0 {
+                eprint!("\rcycle {c}/{} ", cfg.cycles);
+            }
+            if c == last_cycle {
+                r.wb(cfg.sm, WB_STATUS, Some(ST_STOP))?;
+            }
+            for (k, nd) in cfg.nodes.iter().enumerate() {
+                // Cycle c+2 reuses the entry of cycle c−2, which has passed
+                // every node (a frame's trip is shorter than 2 periods).
+                if nd.kind == Kind::Sensor && c + 2 < cfg.cycles {
+                    let v = merkur_model::ring::sensor_value(cfg, nd.address, c + 2);
+                    r.cfg(k, 3, (((c + 2) as u64 & 3) << 16) | v as u64);
+                }
+            }
+            if c >= 2 {
+                compare_cycle(
+                    &mut r,
+                    cfg,
+                    &recs[(c - 2) as usize],
+                    capn,
+                    &mut mism,
+                    &mut words,
+                );
+                compared = c - 1;
+            }
+        }
+        // Host writes of cycle c: once frame c−1 has passed the node (a
+        // master: ended on its PI fibre; the special master: sent on PO).
+        let mut i = 0;
+        while i < writes.len() {
+            let (c, node, slot, data) = writes[i];
+            if c > sent {
+                break;
+            }
+            let pace = if node == cfg.sm { node } else { into(node) };
+            if r.rd(pace, st::NEND) >= c as u64 {
+                r.wb(node, slot as u16, Some(data))?;
+                writes.remove(i);
+            } else {
+                i += 1;
+            }
+        }
+        // Requests of cycle c: armed for the end of frame c−1 on the fibre
+        // that paces the node (the ring top raises them then).
+        while let Some(&(c, node, bits)) = reqs.first() {
+            if c > sent {
+                break;
+            }
+            r.cfg(node, 4, 0x40 | ((((c - 1) & 7) as u64) << 3) | bits);
+            reqs.remove(0);
+        }
+        if sent == cfg.cycles && stopped_at.is_none() {
+            stopped_at = Some(r.ticks);
+        }
+        if stopped_at.is_some() && r.rd(into(cfg.sm), st::NEND) >= cfg.cycles as u64 {
+            // The last frame has come back to the special master.
+            break;
+        }
+    }
+    if opts.progress {
+        eprintln!("\rcycle {}/{} ", cfg.cycles, cfg.cycles);
+    }
+    // End-of-run state, read at once (the special master has stopped; the
+    // CS timeout will put every node in failsafe 2.5 periods later).
+    let last = recs.last().expect("at least one cycle");
+    let mut rows = vec![];
+    let mut state = vec![];
+    for k in 0..n {
+        let vals: Vec<u64> = [
+            st::MODE,
+            st::FS,
+            st::PERR,
+            st::FERR,
+            st::AERR,
+            st::SERR,
+            st::HOP,
+            st::ACT,
+            st::IRQ1,
+            st::IRQ2,
+            st::IRQFS,
+        ]
+        .iter()
+        .map(|&f| r.rd(k, f))
+        .collect();
+        state.push(vals);
+    }
+    for c in compared..cfg.cycles {
+        compare_cycle(&mut r, cfg, &recs[c as usize], capn, &mut mism, &mut words);
+    }
+    let mut nsec_exp = vec![0u64; 2 * n];
+    for rec in recs {
+        for (f, carry) in rec.fibres.iter().enumerate() {
+            if matches!(carry, Carry::Sec { ok: true }) {
+                nsec_exp[f] += 1;
+            }
+        }
+    }
+    for (f, &want) in nsec_exp.iter().enumerate() {
+        let got = r.rd(f, st::NSEC);
+        if got != want {
+            mism.push(Mismatch {
+                cycle: last_cycle,
+                place: fibre_name(f, n),
+                what: "SEC packets".into(),
+                expected: want.to_string(),
+                got: got.to_string(),
+            });
+        }
+    }
+    for (k, nd) in cfg.nodes.iter().enumerate() {
+        let before = mism.len();
+        let want = &last.nodes[k];
+        let v = &state[k];
+        let place = format!("node {k}");
+        let mut check = |what: &str, e: u64, g: u64| {
+            if e != g {
+                mism.push(Mismatch {
+                    cycle: last_cycle,
+                    place: place.clone(),
+                    what: what.into(),
+                    expected: e.to_string(),
+                    got: g.to_string(),
+                });
+            }
+        };
+        check("mode", want.mode.code() as u64, v[0]);
+        check("failsafe", want.failsafe as u64, v[1]);
+        check("perr", want.perr as u64, v[2]);
+        check("ferr", want.ferr as u64, v[3]);
+        if nd.kind.is_master() {
+            check("aerr", want.aerr as u64, v[4]);
+        }
+        if k == cfg.sm {
+            check("serr", want.serr as u64, v[5]);
+            check("hop", want.hop.unwrap_or(0) as u64, v[6]);
+        }
+        if nd.kind == Kind::Actuator {
+            check("output", want.output as u64, v[7]);
+        }
+        let mut irq = [0u64; 3];
+        for rec in recs {
+            for ev in &rec.events {
+                if ev.node == k {
+                    if let merkur_model::ring::EventKind::Irq { reason, .. } = ev.kind {
+                        match reason {
+                            1 => irq[0] += 1,
+                            2 => irq[1] += 1,
+                            3 => irq[2] += 1,
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
+        if nd.kind.is_master() {
+            check("IRQ1 alarms received", irq[0], v[8]);
+            check("IRQ2 alarms received", irq[1], v[9]);
+            check("FAILSAFE alarms received", irq[2], v[10]);
+        }
+        let mut irqs_got = v[8] + v[9] + v[10];
+        if nd.kind.is_master() {
+            for slot in 0..s {
+                let g = r.wb(k, slot as u16, None)? as u64;
+                if g != want.db[slot] as u64 {
+                    mism.push(Mismatch {
+                        cycle: last_cycle,
+                        place: format!("node {k}"),
+                        what: format!("db[{slot}]"),
+                        expected: format!("{:04x}", want.db[slot]),
+                        got: format!("{g:04x}"),
+                    });
+                }
+                words += 1;
+            }
+        } else {
+            irqs_got = 0;
+        }
+        rows.push(NodeRow {
+            node: k,
+            kind: nd.kind.name(),
+            mode: ["N", "WU", "WD", "?"][(v[0] & 3) as usize],
+            failsafe: v[1] == 1,
+            perr: v[2],
+            irqs: irqs_got,
+            mismatches: mism.len() - before,
+        });
+    }
+    let period_bits = if starts.len() >= 2 {
+        (starts[starts.len() - 1] - starts[0]) as f64
+            / (starts.len() - 1) as f64
+            / TICKS_PER_BIT as f64
+    } else {
+        0.0
+    };
+    Ok(Report {
+        cycles: cfg.cycles,
+        words,
+        mismatches: mism,
+        ticks: r.ticks,
+        wall: t1.elapsed(),
+        build,
+        period_bits,
+        rows,
+    })
+}
+
+/// Compares every fibre's capture of cycle `rec.cycle` with the model.
+fn compare_cycle(
+    r: &mut Ring,
+    cfg: &Config,
+    rec: &CycleRecord,
+    capn: usize,
+    mism: &mut Vec<Mismatch>,
+    words: &mut u64,
+) {
+    let n = cfg.nodes.len();
+    let c = rec.cycle;
+    let b = (c & 3) as usize;
+    for (f, carry) in rec.fibres.iter().enumerate() {
+        let hdr = |r: &mut Ring, i: usize| r.cap(f, 4 * capn + 2 * b + i);
+        let mut push = |what: String, e: String, g: String| {
+            mism.push(Mismatch {
+                cycle: c,
+                place: fibre_name(f, n),
+                what,
+                expected: e,
+                got: g,
+            })
+        };
+        match carry {
+            Carry::Data(frame) => {
+                let HeaderRx::Ok(h) = frame.hdr else {
+                    continue;
+                };
+                for (i, want) in [h.h0(cfg.slots).data, h.h1().data].into_iter().enumerate() {
+                    let e = hdr(r, i);
+                    *words += 1;
+                    let ok = (e >> 20) & 7 == (c & 7) as u64 && (e & 0xffff) as u16 == want;
+                    if !ok {
+                        let g = if (e >> 20) & 7 == (c & 7) as u64 {
+                            format!("{:04x}", e & 0xffff)
+                        } else {
+                            "none".into()
+                        };
+                        push(format!("H{i}"), format!("{want:04x}"), g);
+                    }
+                }
+                for (slot, w) in frame.words.iter().enumerate() {
+                    let e = r.cap(f, b * capn + slot);
+                    let (want, got) = (slot_token(w), cap_token(e, c));
+                    *words += 1;
+                    if want != got {
+                        push(format!("slot {slot}"), want, got);
+                    }
+                }
+            }
+            _ => {
+                // No frame on this fibre in this cycle.
+                let e = hdr(r, 1);
+                if (e >> 20) & 7 == (c & 7) as u64 && (e >> 18) & 3 == 1 {
+                    push(
+                        "frame".into(),
+                        "none".into(),
+                        format!("H1 {:04x}", e & 0xffff),
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A GTKWave save file for a ring's waveform: per node its clock, lines,
+/// mode and failsafe, per fibre its line, grouped.
+pub fn gtkw(cfg: &Config, wave: &Path) -> String {
+    let n = cfg.nodes.len();
+    let mut g = format!("[dumpfile] \"{}\"\n", wave.display());
+    for (k, nd) in cfg.nodes.iter().enumerate() {
+        g.push_str(&format!("@800200\n-node {k} {}\n@28\n", nd.kind.name()));
+        for sig in ["nclk", "fs", "fired"] {
+            g.push_str(&format!("TOP.merkur_ring.{sig}_{k}\n"));
+        }
+        g.push_str(&format!(
+            "@22\nTOP.merkur_ring.mode_{k}[1:0]\nTOP.merkur_ring.perr_{k}[15:0]\n@1000200\n-node {k} {}\n",
+            nd.kind.name()
+        ));
+    }
+    g.push_str("@800200\n-fibres\n@28\n");
+    for f in 0..2 * n {
+        g.push_str(&format!("TOP.merkur_ring.line_{f}\n"));
+        let _ = fibre_name(f, n);
+    }
+    g.push_str("@1000200\n-fibres\n");
+    g
+}
