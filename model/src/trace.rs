@@ -16,7 +16,9 @@ pub fn scenario_hash(text: &str) -> String {
     d.iter().map(|b| format!("{b:02x}")).collect()
 }
 
-fn word_token(out: &mut String, w: &Slot) {
+/// Appends the trace token of a slot word (docs/traces.md): `1234+`,
+/// `!4000-`, `…r3`, `x`, `v`, `.`.
+pub fn word_token(out: &mut String, w: &Slot) {
     match w {
         Slot::Data(d) => {
             if d.alarm {

@@ -181,7 +181,6 @@ impl Logic for Master {
         self.mdb.i_alive.next = self.node.o_alive.val();
         self.mdb.i_alarm.next = self.node.o_alarm.val();
         self.mdb.i_ok.next = self.node.o_ok.val();
-        self.mdb.i_void.next = self.node.o_void.val();
 
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();

@@ -37,10 +37,10 @@
 //! | `i_home` | in | 12 | static | home slot (no interrupt for its own alarms) |
 //! | `i_fs` | in | 1 | clock | node in failsafe: no updates |
 //! | `i_mode` | in | 2 | clock | switchbox mode (status register) |
-//! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok`, `i_void` | in | | clock | received words (from the node's INPUT port) |
+//! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
 //! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 //! | `o_tx_data`, `o_tx_local`, `o_tx_act` | out | 16, 1, 1 | clock | data memory and configuration (LOCAL, ACT) of `i_tx_slot`, valid 2–3 clocks after it changes |
-//! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_void`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+//! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 //! | `o_running` | out | 1 | clock | the host started the ring |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received (one clock per alarm word) |
 //! | `o_aerr` | out | 16 | clock | Alive-check failures |
@@ -112,8 +112,6 @@ pub struct Mdb {
     pub i_alarm: Signal<In, Bit>,
     /// Word good.
     pub i_ok: Signal<In, Bit>,
-    /// Word VOID.
-    pub i_void: Signal<In, Bit>,
     /// Slot the send side needs.
     pub i_tx_slot: Signal<In, Bits<12>>,
     /// Data memory of `i_tx_slot`.
@@ -130,8 +128,6 @@ pub struct Mdb {
     pub o_s2_act: Signal<Out, Bit>,
     /// Stage 2 good.
     pub o_s2_ok: Signal<Out, Bit>,
-    /// Stage 2 VOID.
-    pub o_s2_void: Signal<Out, Bit>,
     /// Stage 2 ALIVE.
     pub o_s2_alive: Signal<Out, Bit>,
     /// Stage 2 ALARM.
@@ -160,7 +156,6 @@ pub struct Mdb {
     s2: DFF<Bit>,
     s2_slot: DFF<Bits<12>>,
     s2_ok: DFF<Bit>,
-    s2_void: DFF<Bit>,
     s2_alive: DFF<Bit>,
     s2_alarm: DFF<Bit>,
     s2_data: DFF<Bits<16>>,
@@ -192,9 +187,9 @@ impl Logic for Mdb {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, tx_served, tx_data, tx_cfg, s2, s2_slot, s2_ok, s2_void, s2_alive,
-            s2_alarm, s2_data, irq1, irq2, irq_fs, aerr, last_irq, running, err_cfg, err_wr,
-            hstate, ack, rdat, perm
+            self, clock, tx_served, tx_data, tx_cfg, s2, s2_slot, s2_ok, s2_alive, s2_alarm,
+            s2_data, irq1, irq2, irq_fs, aerr, last_irq, running, err_cfg, err_wr, hstate, ack,
+            rdat, perm
         );
         self.db.read_clock.next = self.clock.val();
         self.db.write_clock.next = self.clock.val();
@@ -231,7 +226,6 @@ impl Logic for Mdb {
         self.s2.d.next = self.i_wvalid.val() & (self.i_kind.val() == 2);
         self.s2_slot.d.next = self.i_slot.val();
         self.s2_ok.d.next = self.i_ok.val();
-        self.s2_void.d.next = self.i_void.val();
         self.s2_alive.d.next = self.i_alive.val();
         self.s2_alarm.d.next = self.i_alarm.val();
         self.s2_data.d.next = self.i_data.val();
@@ -455,7 +449,6 @@ impl Logic for Mdb {
         self.o_s2_slot.next = self.s2_slot.q.val();
         self.o_s2_act.next = self.s2_cfg.val().get_bit(1);
         self.o_s2_ok.next = self.s2_ok.q.val();
-        self.o_s2_void.next = self.s2_void.q.val();
         self.o_s2_alive.next = self.s2_alive.q.val();
         self.o_s2_alarm.next = self.s2_alarm.q.val();
         self.o_s2_data.next = self.s2_data.q.val();

@@ -46,26 +46,88 @@
 //! | `i_wb_node`, `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr`, `i_wb_dat` | in | | Wishbone of master `i_wb_node` (its own clock) |
 //! | `o_wb_dat`, `o_wb_ack` | out | 16, 1 | its Wishbone answer |
 //!
-//! Configuration fields (`i_cfg_sel` = node or fibre index): node fields
-//! 0 `inc`, 1 phase, 2 address, 3 sensor value for cycles with CYC ≡ 0..3
-//! (`i_cfg_val[17:16]` selects, `[15:0]` value; the node sees the one of
-//! the frame after the last that ended on its PI fibre), 4 request `{now, armed, CYC[2:0],
-//! fs, irq2, irq1}` (raised at once, or when the node's input monitor sees
-//! the end of the DATA frame with that CYC, i.e. before the next frame); fibre fields 8 break (1 dark), 9 flip (start now); global
-//! fields 16 slots − 1, 17 CS timeout (node clocks), 18 period (bit times).
-//!
-//! Status fields (`i_rd_sel` = node): 0 mode, 1 failsafe, 2 perr, 3 ferr,
-//! 4 aerr, 5 serr, 6 HOP returned, 7 actuator output, 8 frames sent,
-//! 9/10/11 IRQ1/IRQ2/FAILSAFE alarms received, 12 running; fibre fields
-//! (`i_rd_sel` = fibre): 16 `{in frame, last CYC[2:0]}` of the monitor,
-//! 17 last DATA header H1, 18 last H0, 19 SEC packets seen, 20 TST packets
-//! seen, 21 loss of signal, 22 DATA frames ended.
+//! Configuration fields ([`cfg`]; `i_cfg_sel` = node or fibre index; global
+//! fields ignore it) and status fields ([`status`]) are named in this file
+//! and used by name by the driver (`testbenches/src/ring_sim.rs`). A user
+//! request is raised at once (`now`) or when the node's pacing monitor (its
+//! PI fibre; the special master's PO) sees the end of the DATA frame with
+//! the request's CYC, i.e. before the next frame; a sensor sees the value
+//! of the frame after the last that ended on its PI fibre.
 
 use crate::verilog::block_verilog;
 use merkur_model::scenario::Kind;
 
 /// Ticks of the simulation clock per nominal bit time.
 pub const TICKS_PER_BIT: u32 = 4;
+
+/// Configuration fields of `merkur_ring` (`i_cfg_field`).
+pub mod cfg {
+    /// Node: clock increment per tick (2³¹ = nominal).
+    pub const INC: u32 = 0;
+    /// Node: clock accumulator start value (phase).
+    pub const PHASE: u32 = 1;
+    /// Node: home slot.
+    pub const ADDRESS: u32 = 2;
+    /// Sensor: value for cycles with CYC ≡ `val[17:16]` (mod 4).
+    pub const SENSOR: u32 = 3;
+    /// Node: user request `{now, armed, CYC[2:0], fs, irq2, irq1}`.
+    pub const REQUEST: u32 = 4;
+    /// Fibre: 1 dark, 0 lit.
+    pub const BREAK: u32 = 8;
+    /// Fibre: invert the line for one bit time, now.
+    pub const FLIP: u32 = 9;
+    /// Global: slots − 1.
+    pub const SLOTS_M1: u32 = 16;
+    /// Global: CS timeout in node clocks.
+    pub const CS_TIMEOUT: u32 = 17;
+    /// Global: cycle period in bit times.
+    pub const PERIOD: u32 = 18;
+}
+
+/// Status fields of `merkur_ring` (`i_rd_field`): node fields for
+/// `i_rd_sel` = node, fibre fields for `i_rd_sel` = fibre.
+pub mod status {
+    /// Node: switchbox mode.
+    pub const MODE: u32 = 0;
+    /// Node: failsafe.
+    pub const FS: u32 = 1;
+    /// Node: bad words at INPUT.
+    pub const PERR: u32 = 2;
+    /// Node: rejected headers at INPUT.
+    pub const FERR: u32 = 3;
+    /// Master: Alive-check failures.
+    pub const AERR: u32 = 4;
+    /// Special master: SEC failures.
+    pub const SERR: u32 = 5;
+    /// Special master: HOP returned.
+    pub const HOP: u32 = 6;
+    /// Actuator: output register.
+    pub const ACT: u32 = 7;
+    /// Special master: frames sent.
+    pub const CYCLES: u32 = 8;
+    /// Master: IRQ1 alarms received.
+    pub const IRQ1: u32 = 9;
+    /// Master: IRQ2 alarms received.
+    pub const IRQ2: u32 = 10;
+    /// Master: FAILSAFE alarms received.
+    pub const IRQFS: u32 = 11;
+    /// Master: running.
+    pub const RUN: u32 = 12;
+    /// Fibre: `{in frame, last CYC[2:0]}`.
+    pub const FRAME: u32 = 16;
+    /// Fibre: last DATA H1.
+    pub const H1: u32 = 17;
+    /// Fibre: last DATA H0.
+    pub const H0: u32 = 18;
+    /// Fibre: SEC packets seen.
+    pub const NSEC: u32 = 19;
+    /// Fibre: TST packets seen.
+    pub const NTST: u32 = 20;
+    /// Fibre: loss of signal.
+    pub const LOS: u32 = 21;
+    /// Fibre: DATA frames ended.
+    pub const NEND: u32 = 22;
+}
 
 /// Module name of a node kind in the ring Verilog.
 pub fn module_name(kind: Kind) -> &'static str {
@@ -165,83 +227,102 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     }
     w(&mut v, "    /* verilator lint_on UNUSEDSIGNAL */");
     // Nodes: clock gates, configuration, instances.
+    let hit = |sel: usize, field: u32| {
+        format!("i_cfg_we && i_cfg_sel == 16'd{sel} && i_cfg_field == 8'd{field}")
+    };
     for (k, &kind) in kinds.iter().enumerate() {
         // The fibre whose frame ends pace the node's stimulus: its PI
         // (P(k-1)); for the special master, which builds frames, its PO.
-        let up = if kind == Kind::SpecialMaster {
-            k
-        } else {
-            (k + n - 1) % n
-        };
         let pi_f = (k + n - 1) % n;
+        let up = if kind == Kind::SpecialMaster { k } else { pi_f };
+        let (h_inc, h_phase, h_addr, h_req) = (
+            hit(k, cfg::INC),
+            hit(k, cfg::PHASE),
+            hit(k, cfg::ADDRESS),
+            hit(k, cfg::REQUEST),
+        );
         w(
             &mut v,
             &format!(
                 "    // ---- node {k}: {kind} ----\n\
                  \x20   reg [31:0] inc_{k} = 32'h80000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0;\n\
                  \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd0) inc_{k} <= i_cfg_val;\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd1) acc_{k} <= i_cfg_val;\n    end\n\
+                 \x20       if ({h_inc}) inc_{k} <= i_cfg_val;\n\
+                 \x20       if ({h_phase}) acc_{k} <= i_cfg_val;\n    end\n\
                  \x20   always @(negedge clk) enl_{k} <= en_{k};\n    wire nclk_{k} = clk & enl_{k};\n\
-                 \x20   reg [11:0] addr_{k} = 12'd0;\n    reg [15:0] sens_{k}_0 = 16'd0, sens_{k}_1 = 16'd0, sens_{k}_2 = 16'd0, sens_{k}_3 = 16'd0;\n\
+                 \x20   reg [11:0] addr_{k} = 12'd0;\n\
                  \x20   reg [7:0] req_{k} = 8'd0;\n    reg [3:0] reqhold_{k} = 4'd0;\n    reg [2:0] reqbits_{k} = 3'd0;\n\
                  \x20   always @(posedge clk) begin\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd2) addr_{k} <= i_cfg_val[11:0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd0) sens_{k}_0 <= i_cfg_val[15:0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd1) sens_{k}_1 <= i_cfg_val[15:0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd2) sens_{k}_2 <= i_cfg_val[15:0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd3 && i_cfg_val[17:16] == 2'd3) sens_{k}_3 <= i_cfg_val[15:0];\n\
+                 \x20       if ({h_addr}) addr_{k} <= i_cfg_val[11:0];\n\
                  \x20       if (reqhold_{k} != 4'd0) reqhold_{k} <= reqhold_{k} - 4'd1;\n\
                  \x20       if (req_{k}[6] && (req_{k}[7] || (hdr_new_{up} && hdr_cyc_{up} == req_{k}[5:3]))) begin\n\
                  \x20           reqbits_{k} <= req_{k}[2:0];\n            reqhold_{k} <= 4'd8;\n            req_{k}[6] <= 1'b0;\n        end\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd4) req_{k} <= i_cfg_val[7:0];\n    end\n\
+                 \x20       if ({h_req}) req_{k} <= i_cfg_val[7:0];\n    end\n\
                  \x20   wire [2:0] ureq_{k} = (reqhold_{k} != 4'd0) ? reqbits_{k} : 3'd0;\n\
-                 \x20   reg [1:0] sel_{k} = 2'd0;\n    always @(posedge clk) if (hdr_new_{up}) sel_{k} <= hdr_cyc_{up}[1:0] + 2'd1;\n\
-                 \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;",
+                 \x20   wire [1:0] po_{k}, so_{k};\n    wire [1:0] mode_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
                 kind = kind.name()
             ),
         );
+        if kind == Kind::Sensor {
+            // Four values, chosen by the CYC after the last frame that
+            // ended on the sensor's PI fibre.
+            let h = hit(k, cfg::SENSOR);
+            let regs: Vec<String> = (0..4)
+                .map(|i| format!("        if ({h} && i_cfg_val[17:16] == 2'd{i}) sens_{k}_{i} <= i_cfg_val[15:0];"))
+                .collect();
+            w(
+                &mut v,
+                &format!(
+                    "    reg [15:0] sens_{k}_0 = 16'd0, sens_{k}_1 = 16'd0, sens_{k}_2 = 16'd0, sens_{k}_3 = 16'd0;\n\
+                     \x20   reg [1:0] sel_{k} = 2'd0;\n    always @(posedge clk) begin\n{}\n        if (hdr_new_{up}) sel_{k} <= hdr_cyc_{up}[1:0] + 2'd1;\n    end\n\
+                     \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;",
+                    regs.join("\n")
+                ),
+            );
+        }
         let pi = format!("{{line_{pi_f}, prev_{pi_f}}}");
         let si = format!("{{line_{}, prev_{}}}", n + k, n + k);
         let common = format!(
             ".clock(nclk_{k}), .i_pi({pi}), .i_si({si}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_{k}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_irq1(ureq_{k}[0]), .i_irq2(ureq_{k}[1]), .i_fs_req(ureq_{k}[2])"
         );
-        w(&mut v, &format!("    wire [1:0] po_{k}, so_{k};\n    wire [1:0] mode_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};"));
         match kind {
             Kind::Sensor | Kind::Actuator => {
-                let act = (kind == Kind::Actuator) as u8;
+                let (act, sens) = if kind == Kind::Actuator {
+                    (1, "16'd0".to_string())
+                } else {
+                    (0, format!("sens_{k}"))
+                };
                 w(
                     &mut v,
                     &format!(
                         "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
-                         \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_void_{k}, u_hdr_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
-                         \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data(sens_{k}),\n\
+                         \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                         \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
                          \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
                          \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
-                         \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_void(u_void_{k}), .o_hdr_ok(u_hdr_{k}),\n\
+                         \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}),\n\
                          \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
-                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0;\n\
-                         \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Sensor values are read in the node's cycle only.\n    wire u_sens_{k} = ^sens_{k};\n    /* verilator lint_on UNUSEDSIGNAL */"
+                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0;"
                     ),
                 );
             }
             Kind::Master | Kind::SpecialMaster => {
-                let extra = if kind == Kind::SpecialMaster {
-                    format!(".i_period(period), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),")
+                let (defs, extra) = if kind == Kind::SpecialMaster {
+                    (
+                        format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};"),
+                        format!(".i_period(period), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),"),
+                    )
                 } else {
-                    String::new()
-                };
-                let defs = if kind == Kind::SpecialMaster {
-                    format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};")
-                } else {
-                    format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;")
+                    (
+                        format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;"),
+                        String::new(),
+                    )
                 };
                 w(
                     &mut v,
                     &format!(
                         "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    wire irq1_{k}, irq2_{k}, irqfs_{k};\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
                          \x20   wire wbsel_{k} = i_wb_node == 16'd{k};\n\
-                         \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Masters have no sensor input.\n    wire u_sens_{k} = ^sens_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                          \x20   {m} n{k}({common}, {extra}\n\
                          \x20       .i_wb_cyc(i_wb_cyc & wbsel_{k}), .i_wb_stb(i_wb_stb & wbsel_{k}), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),\n\
                          \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}),\n\
@@ -274,8 +355,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20   wire txl_{f} = fired_{src} ? {port}_{src}[0] : {port}_{src}[1];\n\
                  \x20   always @(posedge clk) begin\n        line_{f} <= brk_{f} ? 1'b0 : (txl_{f} ^ (flip_{f} != 3'd0));\n        prev_{f} <= line_{f};\n\
                  \x20       if (flip_{f} != 3'd0) flip_{f} <= flip_{f} - 3'd1;\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd8) brk_{f} <= i_cfg_val[0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd9) flip_{f} <= 3'd4;\n    end\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_brk}) brk_{f} <= i_cfg_val[0];\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) flip_{f} <= 3'd4;\n    end\n\
                  \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
                  \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_phase_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f};\n    wire [3:0] m_reason_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                  \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, prev_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff),\n\
@@ -295,39 +376,53 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n\
                  \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{hdr_cyc_{f}, mstat_{f}, m_alarm_{f}, m_alive_{f}, m_data_{f}}};\n\
                  \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
+                c_brk = cfg::BREAK,
+                c_flip = cfg::FLIP,
                 hz = if capw > 4 { format!("{}'d0, ", capw - 4) } else { String::new() },
                 last = 8 * cap - 1,
                 cb = capw - 4,
             ),
         );
     }
-    // Status read.
+    // Status read: every field by name (`status`), `K` = node or fibre.
+    let node_fields: [(u32, &str); 13] = [
+        (status::MODE, "{30'd0, mode_K}"),
+        (status::FS, "{31'd0, fs_K}"),
+        (status::PERR, "{16'd0, perr_K}"),
+        (status::FERR, "{16'd0, ferr_K}"),
+        (status::AERR, "{16'd0, aerr_K}"),
+        (status::SERR, "{16'd0, serr_K}"),
+        (status::HOP, "{20'd0, hop_K}"),
+        (status::ACT, "{16'd0, act_K}"),
+        (status::CYCLES, "{16'd0, cycles_K}"),
+        (status::IRQ1, "{16'd0, nirq1_K}"),
+        (status::IRQ2, "{16'd0, nirq2_K}"),
+        (status::IRQFS, "{16'd0, nirqfs_K}"),
+        (status::RUN, "{31'd0, run_K}"),
+    ];
+    let fibre_fields: [(u32, &str); 7] = [
+        (status::FRAME, "{28'd0, infr_K, hdr_cyc_K}"),
+        (status::H1, "{16'd0, h1_K}"),
+        (status::H0, "{16'd0, h0_K}"),
+        (status::NSEC, "{16'd0, nsec_K}"),
+        (status::NTST, "{16'd0, ntst_K}"),
+        (status::LOS, "{31'd0, m_los_K}"),
+        (status::NEND, "{16'd0, nend_K}"),
+    ];
     w(
         &mut v,
         "    always @(*) begin\n        o_rd = 32'd0;\n        case ({i_rd_sel, i_rd_field})",
     );
-    for k in 0..n {
-        let f = |x: u32| format!("{{16'd{k}, 8'd{x}}}");
-        w(
-            &mut v,
-            &format!(
-                "            {}: o_rd = {{30'd0, mode_{k}}};\n            {}: o_rd = {{31'd0, fs_{k}}};\n            {}: o_rd = {{16'd0, perr_{k}}};\n            {}: o_rd = {{16'd0, ferr_{k}}};\n\
-                 \x20           {}: o_rd = {{16'd0, aerr_{k}}};\n            {}: o_rd = {{16'd0, serr_{k}}};\n            {}: o_rd = {{20'd0, hop_{k}}};\n            {}: o_rd = {{16'd0, act_{k}}};\n\
-                 \x20           {}: o_rd = {{16'd0, cycles_{k}}};\n            {}: o_rd = {{16'd0, nirq1_{k}}};\n            {}: o_rd = {{16'd0, nirq2_{k}}};\n            {}: o_rd = {{16'd0, nirqfs_{k}}};\n            {}: o_rd = {{31'd0, run_{k}}};",
-                f(0), f(1), f(2), f(3), f(4), f(5), f(6), f(7), f(8), f(9), f(10), f(11), f(12)
-            ),
-        );
-    }
-    for fi in 0..nf {
-        let f = |x: u32| format!("{{16'd{fi}, 8'd{x}}}");
-        w(
-            &mut v,
-            &format!(
-                "            {}: o_rd = {{28'd0, infr_{fi}, hdr_cyc_{fi}}};\n            {}: o_rd = {{16'd0, h1_{fi}}};\n            {}: o_rd = {{16'd0, h0_{fi}}};\n\
-                 \x20           {}: o_rd = {{16'd0, nsec_{fi}}};\n            {}: o_rd = {{16'd0, ntst_{fi}}};\n            {}: o_rd = {{31'd0, m_los_{fi}}};\n            {}: o_rd = {{16'd0, nend_{fi}}};",
-                f(16), f(17), f(18), f(19), f(20), f(21), f(22)
-            ),
-        );
+    for (count, fields) in [(n, &node_fields[..]), (nf, &fibre_fields[..])] {
+        for i in 0..count {
+            for (field, expr) in fields {
+                let expr = expr.replace('K', &i.to_string());
+                w(
+                    &mut v,
+                    &format!("            {{16'd{i}, 8'd{field}}}: o_rd = {expr};"),
+                );
+            }
+        }
     }
     w(
         &mut v,
@@ -365,9 +460,14 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     // Global configuration.
     w(
         &mut v,
-        "    always @(posedge clk) begin\n        if (i_cfg_we && i_cfg_field == 8'd16) slots_m1 <= i_cfg_val[11:0];\n\
-         \x20       if (i_cfg_we && i_cfg_field == 8'd17) cs_timeout <= i_cfg_val[15:0];\n\
-         \x20       if (i_cfg_we && i_cfg_field == 8'd18) period <= i_cfg_val[15:0];\n    end\nendmodule",
+        &format!(
+            "    always @(posedge clk) begin\n        if (i_cfg_we && i_cfg_field == 8'd{}) slots_m1 <= i_cfg_val[11:0];\n\
+             \x20       if (i_cfg_we && i_cfg_field == 8'd{}) cs_timeout <= i_cfg_val[15:0];\n\
+             \x20       if (i_cfg_we && i_cfg_field == 8'd{}) period <= i_cfg_val[15:0];\n    end\nendmodule",
+            cfg::SLOTS_M1,
+            cfg::CS_TIMEOUT,
+            cfg::PERIOD
+        ),
     );
     v
 }

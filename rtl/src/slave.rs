@@ -27,7 +27,7 @@
 //! | `o_ferr` | out | 16 | clock | frame errors: rejected headers at INPUT (saturating) |
 //! | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::master`] |
 //! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
-//! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_hdr_ok` | out | | clock | INPUT's words, for a master's memories |
+//! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok` | out | | clock | INPUT's words, for a master's memories |
 //!
 //! Latency: INPUT to OUTPUT ≈ 6.5 bit times (CDR + one group, [`Fwd`]);
 //! BSR to BSS ≈ 1.5 bit times (bit repeater).
@@ -107,10 +107,6 @@ pub struct Slave {
     pub o_alarm: Signal<Out, Bit>,
     /// Good word.
     pub o_ok: Signal<Out, Bit>,
-    /// VOID word.
-    pub o_void: Signal<Out, Bit>,
-    /// Good DATA header (the frame is processed).
-    pub o_hdr_ok: Signal<Out, Bit>,
     /// Actuator output register.
     pub o_act_data: Signal<Out, Bits<16>>,
     /// Mode.
@@ -192,8 +188,6 @@ impl Slave {
             o_alive: Default::default(),
             o_alarm: Default::default(),
             o_ok: Default::default(),
-            o_void: Default::default(),
-            o_hdr_ok: Default::default(),
             o_act_data: Default::default(),
             o_mode: Default::default(),
             o_failsafe: Default::default(),
@@ -289,11 +283,6 @@ impl Logic for Slave {
         self.o_alive.next = self.rx_in.o_alive.val();
         self.o_alarm.next = self.rx_in.o_alarm.val();
         self.o_ok.next = self.rx_in.o_ok.val();
-        self.o_void.next = self.rx_in.o_void.val();
-        self.o_hdr_ok.next = self.rx_in.o_wvalid.val()
-            & self.rx_in.o_ok.val()
-            & (self.rx_in.o_ptype.val() == 0)
-            & (self.rx_in.o_kind.val() == 1);
         if self.i_fs_set.val() {
             self.failsafe.d.next = true;
         }

@@ -512,7 +512,6 @@ impl Logic for SpecialMaster {
         self.mdb.i_alive.next = self.rx_in.o_alive.val();
         self.mdb.i_alarm.next = self.rx_in.o_alarm.val();
         self.mdb.i_ok.next = self.rx_in.o_ok.val();
-        self.mdb.i_void.next = self.rx_in.o_void.val();
 
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();

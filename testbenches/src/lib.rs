@@ -60,6 +60,7 @@ pub fn pinned_tools() -> Result<Vec<PinnedTool>, String> {
 pub mod ring_sim;
 pub mod stim;
 pub mod verilator;
+pub mod wishbone;
 
 /// A small seeded generator for stimulus (xorshift64*). Tests print the seed
 /// on failure; `MERKUR_SEED` overrides the default.

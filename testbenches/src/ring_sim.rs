@@ -10,12 +10,14 @@
 //! "before cycle c" (after frame c−1 has passed the node, before frame c).
 
 use crate::verilator::Model;
+use crate::wishbone::Wishbone;
 use crate::Rng;
 use merkur_model::config::Config;
+use merkur_model::line::{Lead, Word};
 use merkur_model::ring::{Carry, CycleRecord, HeaderRx, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
 use merkur_rtl::mdb::{ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
-use merkur_rtl::ring_top::{cap_slots, ring_verilog, TICKS_PER_BIT};
+use merkur_rtl::ring_top::{cap_slots, cfg as field, ring_verilog, status as st, TICKS_PER_BIT};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -130,7 +132,8 @@ struct Ring {
     cap_f: usize,
     cap_i: usize,
     cap: usize,
-    wb: [usize; 8],
+    wb_node: usize,
+    wb: Wishbone,
     ticks: u64,
 }
 
@@ -159,78 +162,41 @@ impl Ring {
         self.m.eval();
         self.m.get(self.cap)
     }
-    /// One Wishbone B4 classic transfer with master `node`.
+    /// One Wishbone B4 classic transfer with master `node` (on its own
+    /// clock; the ring runs on meanwhile).
     fn wb(&mut self, node: usize, adr: u16, write: Option<u16>) -> Result<u16, String> {
-        let [n, cyc, stb, we, a, d, dat, ack] = self.wb;
-        self.m.set(n, node as u64);
-        self.m.set(a, adr as u64);
-        self.m.set(we, write.is_some() as u64);
-        self.m.set(d, write.unwrap_or(0) as u64);
-        self.m.set(cyc, 1);
-        self.m.set(stb, 1);
-        for _ in 0..200 {
-            self.tick();
-            if self.m.get(ack) == 1 {
-                let v = self.m.get(dat) as u16;
-                self.m.set(cyc, 0);
-                self.m.set(stb, 0);
-                self.tick();
-                self.tick();
-                self.tick();
-                return Ok(v);
-            }
-        }
-        Err(format!(
-            "Wishbone of node {node}: no acknowledge for address {adr:#06x}"
-        ))
+        self.m.set(self.wb_node, node as u64);
+        let clk = self.clk;
+        let (v, ticks) = self
+            .wb
+            .transfer(&mut self.m, &mut |m| m.tick(clk), adr, write)
+            .map_err(|e| format!("node {node}: {e}"))?;
+        self.ticks += ticks as u64;
+        Ok(v)
     }
 }
 
-/// Status fields of `merkur_ring` (see [`merkur_rtl::ring_top`]).
-mod st {
-    pub const MODE: u32 = 0;
-    pub const FS: u32 = 1;
-    pub const PERR: u32 = 2;
-    pub const FERR: u32 = 3;
-    pub const AERR: u32 = 4;
-    pub const SERR: u32 = 5;
-    pub const HOP: u32 = 6;
-    pub const ACT: u32 = 7;
-    pub const CYCLES: u32 = 8;
-    pub const IRQ1: u32 = 9;
-    pub const IRQ2: u32 = 10;
-    pub const IRQFS: u32 = 11;
-    pub const NSEC: u32 = 19;
-    pub const NEND: u32 = 22;
-}
-
+/// The trace token of a slot (docs/traces.md), as the golden trace prints it.
 fn slot_token(s: &Slot) -> String {
-    match s {
-        Slot::Data(w) => format!(
-            "{}{:04x}{}",
-            if w.alarm { "!" } else { "" },
-            w.data,
-            if w.alive { "+" } else { "-" }
-        ),
-        Slot::Bad(_) => "x".into(),
-        Slot::Void => "v".into(),
-        Slot::Missing => ".".into(),
-    }
+    let mut o = String::new();
+    merkur_model::trace::word_token(&mut o, s);
+    o
 }
 
-fn cap_token(e: u64, cyc: u32) -> String {
+/// A captured entry of cycle `cyc` as the slot the monitor saw.
+fn cap_slot(e: u64, cyc: u32) -> Slot {
     if (e >> 20) & 7 != (cyc & 7) as u64 {
-        return ".".into();
+        return Slot::Missing;
     }
     match (e >> 18) & 3 {
-        1 => format!(
-            "{}{:04x}{}",
-            if (e >> 17) & 1 == 1 { "!" } else { "" },
-            e & 0xffff,
-            if (e >> 16) & 1 == 1 { "+" } else { "-" }
-        ),
-        3 => "v".into(),
-        _ => "x".into(),
+        1 => Slot::Data(Word {
+            data: (e & 0xffff) as u16,
+            alive: (e >> 16) & 1 == 1,
+            alarm: (e >> 17) & 1 == 1,
+            reason: 0,
+        }),
+        3 => Slot::Void,
+        _ => Slot::Bad(Lead::Other),
     }
 }
 
@@ -268,16 +234,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         cap_f: p("i_cap_fibre"),
         cap_i: p("i_cap_idx"),
         cap: p("o_cap"),
-        wb: [
-            p("i_wb_node"),
-            p("i_wb_cyc"),
-            p("i_wb_stb"),
-            p("i_wb_we"),
-            p("i_wb_adr"),
-            p("i_wb_dat"),
-            p("o_wb_dat"),
-            p("o_wb_ack"),
-        ],
+        wb_node: p("i_wb_node"),
+        wb: Wishbone::new(&m),
         m,
         ticks: 0,
     };
@@ -286,18 +244,18 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let period = cfg.period as u64;
     // Shared configuration: S−1, CS timeout 2.5 periods (2 per protocol
     // §12 plus margin for the clock offsets), period.
-    r.cfg(0, 16, s as u64 - 1);
-    r.cfg(0, 17, (5 * period).min(0xfffe));
-    r.cfg(0, 18, period);
+    r.cfg(0, field::SLOTS_M1, s as u64 - 1);
+    r.cfg(0, field::CS_TIMEOUT, (5 * period).min(0xfffe));
+    r.cfg(0, field::PERIOD, period);
     for (k, nd) in cfg.nodes.iter().enumerate() {
         let inc = ((1u64 << 31) as f64 * (1.0 + nd.ppm * 1e-6)).round() as u64;
-        r.cfg(k, 0, inc);
-        r.cfg(k, 1, rng.next_u64() & 0xffff_ffff);
-        r.cfg(k, 2, nd.address as u64);
+        r.cfg(k, field::INC, inc);
+        r.cfg(k, field::PHASE, rng.next_u64() & 0xffff_ffff);
+        r.cfg(k, field::ADDRESS, nd.address as u64);
         if nd.kind == Kind::Sensor {
             for c in 0..4u32.min(cfg.cycles) {
                 let v = merkur_model::ring::sensor_value(cfg, nd.address, c);
-                r.cfg(k, 3, ((c as u64 & 3) << 16) | v as u64);
+                r.cfg(k, field::SENSOR, ((c as u64 & 3) << 16) | v as u64);
             }
         }
     }
@@ -344,9 +302,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         .filter(|w| w.0 > 0)
         .collect();
     writes.sort_by_key(|w| w.0);
-    for &(c, node, bits) in reqs.iter().filter(|x| x.0 == 0) {
-        let _ = c;
-        r.cfg(node, 4, 0xc0 | bits);
+    for &(_, node, bits) in reqs.iter().filter(|x| x.0 == 0) {
+        r.cfg(node, field::REQUEST, 0xc0 | bits);
     }
     reqs.retain(|x| x.0 > 0);
     for &k in &order {
@@ -396,7 +353,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 // every node (a frame's trip is shorter than 2 periods).
                 if nd.kind == Kind::Sensor && c + 2 < cfg.cycles {
                     let v = merkur_model::ring::sensor_value(cfg, nd.address, c + 2);
-                    r.cfg(k, 3, (((c + 2) as u64 & 3) << 16) | v as u64);
+                    r.cfg(k, field::SENSOR, (((c + 2) as u64 & 3) << 16) | v as u64);
                 }
             }
             if c >= 2 {
@@ -433,7 +390,11 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             if c > sent {
                 break;
             }
-            r.cfg(node, 4, 0x40 | ((((c - 1) & 7) as u64) << 3) | bits);
+            r.cfg(
+                node,
+                field::REQUEST,
+                0x40 | ((((c - 1) & 7) as u64) << 3) | bits,
+            );
             reqs.remove(0);
         }
         if sent == cfg.cycles && stopped_at.is_none() {
@@ -634,7 +595,7 @@ fn compare_cycle(
                 }
                 for (slot, w) in frame.words.iter().enumerate() {
                     let e = r.cap(f, b * capn + slot);
-                    let (want, got) = (slot_token(w), cap_token(e, c));
+                    let (want, got) = (slot_token(w), slot_token(&cap_slot(e, c)));
                     *words += 1;
                     if want != got {
                         push(format!("slot {slot}"), want, got);
@@ -674,7 +635,6 @@ pub fn gtkw(cfg: &Config, wave: &Path) -> String {
     g.push_str("@800200\n-fibres\n@28\n");
     for f in 0..2 * n {
         g.push_str(&format!("TOP.merkur_ring.line_{f}\n"));
-        let _ = fibre_name(f, n);
     }
     g.push_str("@1000200\n-fibres\n");
     g

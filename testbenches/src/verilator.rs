@@ -335,14 +335,8 @@ impl Model {
         Model::load(&lib, ports)
     }
 
-    /// As [`Model::build`] for a design whose top module is `top`.
-    pub fn build_top(verilog: &str, top: &str) -> Result<Model, String> {
-        let (lib, ports) = build_library_top(verilog, top)?;
-        Model::load(&lib, ports)
-    }
-
-    /// As [`Model::build_top`], writing an FST waveform to `wave` if given
-    /// (else as `MERKUR_WAVE` says).
+    /// As [`Model::build`] for a design whose top module is `top`, writing
+    /// an FST waveform to `wave` if given (else as `MERKUR_WAVE` says).
     pub fn build_top_traced(
         verilog: &str,
         top: &str,

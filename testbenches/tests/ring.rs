@@ -10,6 +10,7 @@ use merkur_rtl::master::Master;
 use merkur_rtl::mdb::{ST_RUN, WB_CFG, WB_STATUS};
 use merkur_rtl::verilog::block_verilog;
 use merkur_testbenches::ring_sim::{run, Options};
+use merkur_testbenches::wishbone::Wishbone;
 use merkur_testbenches::{repo_root, verilator::Model, Rng};
 
 fn load(name: &str) -> config::Config {
@@ -95,65 +96,41 @@ fn a_wrong_expectation_is_reported() {
     eprintln!("first mismatch of the broken expectation: {m}");
 }
 
-fn wb(m: &mut Model, adr: u16, write: Option<u16>) -> u16 {
-    let p = |m: &Model, s: &str| m.port(s);
-    let (clk, cyc, stb, we, a, d, dat, ack) = (
-        p(m, "clock"),
-        p(m, "i_wb_cyc"),
-        p(m, "i_wb_stb"),
-        p(m, "i_wb_we"),
-        p(m, "i_wb_adr"),
-        p(m, "i_wb_dat"),
-        p(m, "o_wb_dat"),
-        p(m, "o_wb_ack"),
-    );
-    m.set(a, adr as u64);
-    m.set(we, write.is_some() as u64);
-    m.set(d, write.unwrap_or(0) as u64);
-    m.set(cyc, 1);
-    m.set(stb, 1);
-    for _ in 0..20 {
-        m.tick(clk);
-        if m.get(ack) == 1 {
-            let v = m.get(dat) as u16;
-            m.set(cyc, 0);
-            m.set(stb, 0);
-            m.tick(clk);
-            return v;
-        }
-    }
-    panic!("no Wishbone acknowledge at {adr:#x}")
+fn wb(m: &mut Model, bus: &Wishbone, adr: u16, write: Option<u16>) -> u16 {
+    let clk = m.port("clock");
+    bus.transfer(m, &mut |m| m.tick(clk), adr, write).unwrap().0
 }
 
 #[test]
 fn the_host_bus_refuses_foreign_slots_and_late_configuration() {
     let mut m = Model::build(&block_verilog(Master::default())).unwrap();
+    let bus = Wishbone::new(&m);
     let local = cfg_bits::LOCAL as u16;
     // Before the start: configuration is written and read back.
-    wb(&mut m, WB_CFG + 3, Some(local));
-    assert_eq!(wb(&mut m, WB_CFG + 3, None), local);
-    assert_eq!(wb(&mut m, WB_STATUS, None) & 7, 0);
+    wb(&mut m, &bus, WB_CFG + 3, Some(local));
+    assert_eq!(wb(&mut m, &bus, WB_CFG + 3, None), local);
+    assert_eq!(wb(&mut m, &bus, WB_STATUS, None) & 7, 0);
     // A LOCAL slot takes data; a slot the master does not write refuses it.
-    wb(&mut m, 3, Some(0x1234));
-    assert_eq!(wb(&mut m, 3, None), 0x1234);
-    wb(&mut m, 4, Some(0x5678));
-    assert_eq!(wb(&mut m, 4, None), 0, "foreign slot written");
+    wb(&mut m, &bus, 3, Some(0x1234));
+    assert_eq!(wb(&mut m, &bus, 3, None), 0x1234);
+    wb(&mut m, &bus, 4, Some(0x5678));
+    assert_eq!(wb(&mut m, &bus, 4, None), 0, "foreign slot written");
     assert_eq!(
-        wb(&mut m, WB_STATUS, None) & 4,
+        wb(&mut m, &bus, WB_STATUS, None) & 4,
         4,
         "data write refusal flagged"
     );
     // Running: configuration writes are refused and flagged.
-    wb(&mut m, WB_STATUS, Some(ST_RUN | 4));
-    assert_eq!(wb(&mut m, WB_STATUS, None) & 7, 1);
-    wb(&mut m, WB_CFG + 4, Some(local));
+    wb(&mut m, &bus, WB_STATUS, Some(ST_RUN | 4));
+    assert_eq!(wb(&mut m, &bus, WB_STATUS, None) & 7, 1);
+    wb(&mut m, &bus, WB_CFG + 4, Some(local));
     assert_eq!(
-        wb(&mut m, WB_CFG + 4, None),
+        wb(&mut m, &bus, WB_CFG + 4, None),
         0,
         "configuration changed while running"
     );
     assert_eq!(
-        wb(&mut m, WB_STATUS, None) & 2,
+        wb(&mut m, &bus, WB_STATUS, None) & 2,
         2,
         "configuration refusal flagged"
     );
