@@ -75,7 +75,7 @@ pub fn sim(path: &Path, wave: Option<&Path>, seed: u64) -> Result<bool, String> 
     println!(
         "simulated {} ticks ({} bit times) in {:.2} s (build {:.1} s)",
         rep.ticks,
-        rep.ticks / 4,
+        rep.ticks / u64::from(merkur_rtl::ring_top::TICKS_PER_BIT),
         rep.wall.as_secs_f64(),
         rep.build.as_secs_f64()
     );

@@ -74,7 +74,7 @@ pub struct Report {
     pub words: u64,
     /// Every mismatch, in the order found.
     pub mismatches: Vec<Mismatch>,
-    /// Simulation ticks (4 per bit time).
+    /// Simulation ticks (`TICKS_PER_BIT` per bit time).
     pub ticks: u64,
     /// Wall time of the simulation (without the Verilator build).
     pub wall: Duration,

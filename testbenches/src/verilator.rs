@@ -206,8 +206,9 @@ pub fn build_library_top(verilog: &str, top: &str) -> Result<(PathBuf, Vec<Port>
     let ports = parse_ports(verilog, "top")?;
     let wrapper = wrapper_cpp(&ports);
     let version = verilator_version()?;
+    let vlt = no_inline_config(verilog);
     let mut h = Sha256::new();
-    for part in [verilog, &wrapper, &version, &VFLAGS.join(" ")] {
+    for part in [verilog, &wrapper, &version, &VFLAGS.join(" "), &vlt] {
         h.update(part.as_bytes());
         h.update([0]);
     }
@@ -235,9 +236,11 @@ pub fn build_library_top(verilog: &str, top: &str) -> Result<(PathBuf, Vec<Port>
     std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
     std::fs::write(tmp.join("top.v"), verilog).map_err(|e| e.to_string())?;
     std::fs::write(tmp.join("wrapper.cpp"), &wrapper).map_err(|e| e.to_string())?;
+    std::fs::write(tmp.join("build.vlt"), &vlt).map_err(|e| e.to_string())?;
     run(
         Command::new("verilator")
             .args(VFLAGS)
+            .arg("build.vlt")
             .arg("top.v")
             .args(["-Mdir", "obj"])
             .current_dir(&tmp),
@@ -262,29 +265,87 @@ pub fn build_library_top(verilog: &str, top: &str) -> Result<(PathBuf, Vec<Port>
         }
     }
     srcs.push(tmp.join("wrapper.cpp"));
-    run(
-        Command::new("g++")
-            .args([
-                "-shared",
-                "-fPIC",
-                "-O2",
-                "-std=c++17",
-                "-w",
-                "-DVM_TRACE=1",
-                "-DVM_TRACE_FST=1",
-            ])
-            .arg(format!("-I{}", inc.display()))
-            .arg(format!("-I{}", inc.join("vltstd").display()))
-            .arg("-Iobj")
-            .args(&srcs)
-            .args(["-o", "libmodel.so", "-lz", "-lpthread"])
-            .current_dir(&tmp),
-        "g++ (Verilated model)",
-    )?;
+    compile_and_link(&tmp, &inc, &srcs)?;
     std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
     std::fs::rename(tmp.join("libmodel.so"), &lib).map_err(|e| e.to_string())?;
     let _ = std::fs::remove_dir_all(&tmp);
     Ok((lib, ports))
+}
+
+/// Verilator configuration for the build: every `merkur_*` node module of
+/// a ring top (instantiated many times) stays a module of its own instead of
+/// being inlined into the top, so the generated C++ grows with the number of
+/// node kinds rather than the number of nodes. Rust-hdl's small leaf modules
+/// are still inlined into their node. Empty for single blocks.
+fn no_inline_config(verilog: &str) -> String {
+    let mut v = String::from("`verilator_config\n");
+    for line in verilog.lines() {
+        if let Some(rest) = line.strip_prefix("module merkur_") {
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            // `merkur_x$y` are the node's own submodules: leave them inlined.
+            if !rest[name.len()..].starts_with('$') {
+                v.push_str(&format!("no_inline -module \"merkur_{name}\"\n"));
+            }
+        }
+    }
+    v
+}
+
+/// Compiles every source to an object file, as many at a time as the machine
+/// has cores, then links `libmodel.so` in `dir`.
+fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf]) -> Result<(), String> {
+    let flags = |c: &mut Command| {
+        c.args([
+            "-fPIC",
+            "-O2",
+            "-std=c++17",
+            "-w",
+            "-DVM_TRACE=1",
+            "-DVM_TRACE_FST=1",
+        ])
+        .arg(format!("-I{}", inc.display()))
+        .arg(format!("-I{}", inc.join("vltstd").display()))
+        .arg("-Iobj")
+        .current_dir(dir);
+    };
+    let jobs = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let failed: Mutex<Option<String>> = Mutex::new(None);
+    let objs: Vec<PathBuf> = (0..srcs.len())
+        .map(|i| dir.join(format!("o{i}.o")))
+        .collect();
+    std::thread::scope(|s| {
+        for _ in 0..jobs {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                if i >= srcs.len() || failed.lock().map_or(true, |f| f.is_some()) {
+                    break;
+                }
+                let mut c = Command::new("g++");
+                flags(&mut c);
+                c.arg("-c").arg(&srcs[i]).arg("-o").arg(&objs[i]);
+                if let Err(e) = run(&mut c, "g++ (Verilated model)") {
+                    if let Ok(mut f) = failed.lock() {
+                        f.get_or_insert(e);
+                    }
+                }
+            });
+        }
+    });
+    if let Some(e) = failed.into_inner().unwrap_or_else(|e| e.into_inner()) {
+        return Err(e);
+    }
+    run(
+        Command::new("g++")
+            .args(["-shared", "-fPIC"])
+            .args(&objs)
+            .args(["-o", "libmodel.so", "-lz", "-lpthread"])
+            .current_dir(dir),
+        "g++ (link Verilated model)",
+    )
 }
 
 fn verilator_root() -> Result<PathBuf, String> {

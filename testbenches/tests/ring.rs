@@ -73,6 +73,24 @@ fn ring8_interrupts_agree_with_the_model() {
     passes("ring8_irq.toml");
 }
 
+/// Known failure (issue 4 is open on it): on rings of 32 and more nodes edge
+/// jitter adds up along the chain until a node misreads a bit (see
+/// docs/benchmarks.md, "Long rings do not pass yet"). Run with
+/// `cargo test --release -p merkur-testbenches --test ring -- --ignored`.
+#[test]
+#[ignore = "fails: jitter accumulation on long rings (docs/benchmarks.md)"]
+fn ring32_agrees_with_the_model() {
+    passes("ring32.toml");
+}
+
+/// As `ring32_agrees_with_the_model`, the BRIEF §6 size; the first build of
+/// its Verilator model takes about 4.5 minutes on 2 cores.
+#[test]
+#[ignore = "fails: jitter accumulation on long rings (docs/benchmarks.md)"]
+fn ring100_agrees_with_the_model() {
+    passes("ring100.toml");
+}
+
 /// The checker can fail: one slot of one fibre changed in the expectation
 /// is reported at exactly that place.
 #[test]
