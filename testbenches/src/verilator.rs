@@ -276,7 +276,7 @@ pub fn build_library_top(verilog: &str, top: &str) -> Result<(PathBuf, Vec<Port>
 /// a ring top (instantiated many times) stays a module of its own instead of
 /// being inlined into the top, so the generated C++ grows with the number of
 /// node kinds rather than the number of nodes. Rust-hdl's small leaf modules
-/// are still inlined into their node. Empty for single blocks.
+/// are still inlined into their node. No rules for single blocks.
 fn no_inline_config(verilog: &str) -> String {
     let mut v = String::from("`verilator_config\n");
     for line in verilog.lines() {
