@@ -61,6 +61,7 @@ pub fn sim(path: &Path, wave: Option<&Path>, seed: u64) -> Result<bool, String> 
         wave: wave.map(Path::to_path_buf),
         seed,
         progress: true,
+        record: false,
     };
     let rep = ring_sim::run(&cfg, &recs, &opts).map_err(|e| format!("error: {e}"))?;
     println!(
@@ -79,6 +80,18 @@ pub fn sim(path: &Path, wave: Option<&Path>, seed: u64) -> Result<bool, String> 
         rep.wall.as_secs_f64(),
         rep.build.as_secs_f64()
     );
+    let d = &rep.fwd_delay_bits;
+    if !d.is_empty() {
+        let min = d.iter().cloned().fold(f64::INFINITY, f64::min);
+        let max = d.iter().cloned().fold(0.0, f64::max);
+        let mean = d.iter().sum::<f64>() / d.len() as f64;
+        println!(
+            "forwarding delay (PI fibre to PO fibre, {} nodes): min {min:.1} / mean {mean:.2} / max {max:.1} bit times = {:.0} ns mean at {} Mbit/s",
+            d.len(),
+            mean * 1000.0 / cfg.line_rate_mbps,
+            cfg.line_rate_mbps
+        );
+    }
     println!("node  kind            mode  failsafe  perr  irqs  mismatches");
     for r in &rep.rows {
         println!(

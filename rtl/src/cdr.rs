@@ -1,77 +1,85 @@
 //! # cdr — clock and data recovery by oversampling (protocol §9)
 //!
-//! Purpose: recovers line bits from an asynchronous NRZI line sampled 4 times
-//! per bit time. The core clock runs at 2× the line rate and takes 2 samples
-//! per clock (a DDR input register in hardware: `i_samples[0]` is the sample at
-//! the rising edge, `i_samples[1]` half a clock later). Every transition
-//! restarts a sample counter; the bit is taken 2 samples after the last
-//! transition and every 4 samples after that, so the sampling point follows
-//! the incoming stream: frequency offsets between the sender's and the
-//! receiver's clocks (±1000 ppm each) and edge jitter are absorbed without
-//! slipping a bit. Tested (`testbenches/tests/cdr.rs`): 10^6 bits at ±2000 ppm
-//! relative offset with every bit boundary moved by up to ±0.45 sample;
-//! ±0.7 sample slips. So a node's transmitter must place its edges with
-//! half-clock (one-sample) resolution: a DDR output register, not a plain
-//! flip-flop, in the node top. At most one bit is recovered per clock;
-//! the recovered bit rate is the sender's, so a node that transmits one bit
-//! per recovered bit retransmits on the recovered timing.
+//! Purpose: recovers line bits from an asynchronous NRZI line sampled
+//! [`SAMPLES_PER_BIT`] = 8 times per bit time. The core clock runs at 2× the
+//! line rate and takes [`SAMPLES_PER_CLOCK`] = 4 samples per clock (quadrature
+//! DDR capture in hardware: both edges of the core clock and of its 90°
+//! copy; `i_samples[0]` is the earliest). Every transition restarts a sample
+//! counter; the bit is taken 4 samples after the last transition (the first
+//! sample showing the new level) and every 8 samples after that, so the
+//! sampling point follows the incoming stream: clock offsets between the
+//! sender and the receiver (±1000 ppm each) and edge jitter are absorbed
+//! without slipping a bit. An edge interval of k bits is read as k bits when
+//! it measures 8k − 3 … 8k + 4 samples: the sender's retimer
+//! ([`crate::retime`]) moves an edge by at most 2 samples (one output half
+//! clock), which leaves a sample of margin. Tested
+//! (`testbenches/tests/cdr.rs`): 10^6 bits at ±2000 ppm relative offset with
+//! every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
+//! fail. At most one bit is recovered per clock.
 //!
-//! Loss of signal: no transition for 64 samples (16 bit times) raises
-//! `o_los` until the next transition.
+//! Loss of signal: no transition for [`LOS_SAMPLES`] = 128 samples (16 bit
+//! times) raises `o_los` until the next transition.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_samples` | in | 2 | clock | line samples, bit 0 first in time |
+//! | `i_samples` | in | 4 | clock | line samples, bit 0 first in time |
 //! | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
 //! | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
 //! | `o_los` | out | 1 | clock | loss of signal (no edge for 16 bit times) |
-//! | `o_phase` | out | 1 | clock | the bit's centre was sample 0 or 1 of its clock |
+//! | `o_phase` | out | 2 | clock | which sample of its clock the bit was taken from (0 first) |
 //!
-//! Latency: `o_valid`/`o_bit` are registered: a bit appears one clock after
-//! the clock whose samples contained its centre (2 samples after its edge).
+//! Latency: `o_valid`/`o_bit`/`o_phase` are registered: a bit appears one
+//! clock after the clock whose samples contained its centre (4 samples after
+//! its edge), so 0.5–1 bit time after the edge.
 //!
 //! ```text
-//! samples   0 0 0 0 | 1 1 1 1 | 1 1 1 1 | 0 0 0 0     (4 per bit, 2 per clock)
-//! count     . . 2 .   0 1 2 3   0 1 2 3   0 1 2 3      (restarts at each edge)
-//! take          ^         ^         ^         ^        (count == 2)
-//! o_valid   ____/‾\_____/‾\_______/‾\_______/‾\__     (one clock later)
-//! o_bit          0        1         1         0
+//! samples  0 0 0 0 0 0 0 0 | 1 1 1 1 1 1 1 1 | 1 1 1 1 1 1 1 1 | 0 0 ...   (8 per bit, 4 per clock)
+//! count    . . . . 4 . . .   0 1 2 3 4 5 6 7   0 1 2 3 4 5 6 7   0         (restarts at each edge)
+//! take             ^                 ^                 ^                   (count == 4)
+//! o_valid  ________/‾‾\_____________/‾‾\_____________/‾‾\____              (one clock later)
+//! o_bit             0                 1                 1
 //! ```
 
 use rust_hdl::prelude::*;
 
+/// Line samples per bit time.
+pub const SAMPLES_PER_BIT: usize = 8;
+/// Line samples per core clock (the width of `i_samples`).
+pub const SAMPLES_PER_CLOCK: usize = 4;
 /// Samples without a transition before `o_los` rises (16 bit times).
-pub const LOS_SAMPLES: u64 = 64;
+pub const LOS_SAMPLES: u64 = 16 * SAMPLES_PER_BIT as u64;
 
 /// Oversampling clock and data recovery.
 #[derive(LogicBlock)]
 pub struct Cdr {
     /// Core clock (2× line rate).
     pub clock: Signal<In, Clock>,
-    /// Two line samples per clock, bit 0 earlier.
-    pub i_samples: Signal<In, Bits<2>>,
+    /// Four line samples per clock, bit 0 earliest.
+    pub i_samples: Signal<In, Bits<4>>,
     /// A recovered bit is valid.
     pub o_valid: Signal<Out, Bit>,
     /// Recovered line level.
     pub o_bit: Signal<Out, Bit>,
     /// Loss of signal.
     pub o_los: Signal<Out, Bit>,
-    /// Which sample of its clock was the bit's centre (0 first, 1 second):
-    /// lets a transmitter repeat the edge with half-clock resolution.
-    pub o_phase: Signal<Out, Bit>,
-    quiet_last: Constant<Bits<7>>,
+    /// Which sample of its clock the bit was taken from (0 first): the
+    /// bit's arrival time to a quarter clock, for a retimer's phase measure.
+    pub o_phase: Signal<Out, Bits<2>>,
+    quiet_last: Constant<Bits<6>>,
     last: DFF<Bit>,
-    phase: DFF<Bit>,
-    count: DFF<Bits<2>>,
-    quiet: DFF<Bits<7>>,
+    phase: DFF<Bits<2>>,
+    count: DFF<Bits<3>>,
+    quiet: DFF<Bits<6>>,
     rx_valid: DFF<Bit>,
     rx_bit: DFF<Bit>,
     los_flag: DFF<Bit>,
-    edge_a: Signal<Local, Bit>,
-    edge_b: Signal<Local, Bit>,
-    count_a: Signal<Local, Bits<2>>,
-    count_b: Signal<Local, Bits<2>>,
+    c0: Signal<Local, Bits<3>>,
+    c1: Signal<Local, Bits<3>>,
+    c2: Signal<Local, Bits<3>>,
+    c3: Signal<Local, Bits<3>>,
+    prior: Signal<Local, Bits<4>>,
+    edges: Signal<Local, Bits<4>>,
 }
 
 impl Default for Cdr {
@@ -83,8 +91,8 @@ impl Default for Cdr {
             o_bit: Default::default(),
             o_los: Default::default(),
             o_phase: Default::default(),
-            // Two samples per clock: LOS_SAMPLES / 2 clocks, counted from 0.
-            quiet_last: Constant::new((LOS_SAMPLES / 2 - 1).to_bits()),
+            // LOS_SAMPLES / SAMPLES_PER_CLOCK clocks, counted from 0.
+            quiet_last: Constant::new((LOS_SAMPLES / SAMPLES_PER_CLOCK as u64 - 1).to_bits()),
             last: Default::default(),
             phase: Default::default(),
             count: Default::default(),
@@ -92,10 +100,12 @@ impl Default for Cdr {
             rx_valid: Default::default(),
             rx_bit: Default::default(),
             los_flag: Default::default(),
-            edge_a: Default::default(),
-            edge_b: Default::default(),
-            count_a: Default::default(),
-            count_b: Default::default(),
+            c0: Default::default(),
+            c1: Default::default(),
+            c2: Default::default(),
+            c3: Default::default(),
+            prior: Default::default(),
+            edges: Default::default(),
         }
     }
 }
@@ -104,34 +114,57 @@ impl Logic for Cdr {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, last, phase, count, quiet, rx_valid, rx_bit, los_flag);
-        // First sample of this clock.
-        self.edge_a.next = self.i_samples.val().get_bit(0) ^ self.last.q.val();
-        self.count_a.next = self.count.q.val() + 1;
-        if self.edge_a.val() {
-            self.count_a.next = 0.into();
+        // Each sample's predecessor, and where the level changed.
+        self.prior.next = self.i_samples.val() << 1;
+        if self.last.q.val() {
+            self.prior.next = (self.i_samples.val() << 1) | 1;
         }
-        // Second sample.
-        self.edge_b.next = self.i_samples.val().get_bit(1) ^ self.i_samples.val().get_bit(0);
-        self.count_b.next = self.count_a.val() + 1;
-        if self.edge_b.val() {
-            self.count_b.next = 0.into();
+        self.edges.next = self.i_samples.val() ^ self.prior.val();
+        // The sample counter through the clock's four samples: 0 on the
+        // first sample of a new level, else one more than before.
+        self.c0.next = self.count.q.val() + 1;
+        if self.edges.val().get_bit(0) {
+            self.c0.next = 0.into();
         }
-        self.last.d.next = self.i_samples.val().get_bit(1);
-        self.count.d.next = self.count_b.val();
-        // Take the sample 2 after an edge, then every 4.
+        self.c1.next = self.c0.val() + 1;
+        if self.edges.val().get_bit(1) {
+            self.c1.next = 0.into();
+        }
+        self.c2.next = self.c1.val() + 1;
+        if self.edges.val().get_bit(2) {
+            self.c2.next = 0.into();
+        }
+        self.c3.next = self.c2.val() + 1;
+        if self.edges.val().get_bit(3) {
+            self.c3.next = 0.into();
+        }
+        self.last.d.next = self.i_samples.val().get_bit(3);
+        self.count.d.next = self.c3.val();
+        // Take the sample at count 4 (the bit's centre); takes are at least
+        // 5 samples apart, so at most one per clock.
         self.rx_valid.d.next = false;
-        if self.count_a.val() == 2 {
+        if self.c0.val() == 4 {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(0);
-            self.phase.d.next = false;
+            self.phase.d.next = 0.into();
         }
-        if self.count_b.val() == 2 {
+        if self.c1.val() == 4 {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(1);
-            self.phase.d.next = true;
+            self.phase.d.next = 1.into();
         }
-        // Loss of signal: 64 samples (32 clocks) without an edge.
-        if self.edge_a.val() | self.edge_b.val() {
+        if self.c2.val() == 4 {
+            self.rx_valid.d.next = true;
+            self.rx_bit.d.next = self.i_samples.val().get_bit(2);
+            self.phase.d.next = 2.into();
+        }
+        if self.c3.val() == 4 {
+            self.rx_valid.d.next = true;
+            self.rx_bit.d.next = self.i_samples.val().get_bit(3);
+            self.phase.d.next = 3.into();
+        }
+        // Loss of signal: LOS_SAMPLES samples without an edge.
+        if self.edges.val().any() {
             self.quiet.d.next = 0.into();
             self.los_flag.d.next = false;
         } else if self.quiet.q.val() == self.quiet_last.val() {

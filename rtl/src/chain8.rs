@@ -10,7 +10,7 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock of every node |
-//! | `i_pi`, `i_si` | in | 2 | clock | chain inputs (DDR pairs) |
+//! | `i_pi`, `i_si` | in | 4 | clock | chain inputs (4 samples per clock) |
 //! | `o_po`, `o_so` | out | 2 | clock | chain outputs |
 //! | `i_slots_m1`, `i_cs_timeout` | in | 12, 16 | static | shared configuration |
 //! | `i_address<k>`, `i_actuator<k>`, `i_sensor<k>`, `i_irq1_<k>` | in | | clock | node k's [`Slave`] inputs |
@@ -26,15 +26,41 @@
 use crate::slave::Slave;
 use rust_hdl::prelude::*;
 
+/// A link between two nodes on the same clock: each DDR half of the
+/// sender's pair is two of the receiver's four samples.
+#[derive(LogicBlock, Default)]
+pub struct Loopback {
+    /// Sender's DDR pair.
+    pub i_pair: Signal<In, Bits<2>>,
+    /// Receiver's samples.
+    pub o_samples: Signal<Out, Bits<4>>,
+}
+
+impl Logic for Loopback {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.o_samples.next = 0.into();
+        if self.i_pair.val() == 1 {
+            self.o_samples.next = 3.into();
+        }
+        if self.i_pair.val() == 2 {
+            self.o_samples.next = 12.into();
+        }
+        if self.i_pair.val() == 3 {
+            self.o_samples.next = 15.into();
+        }
+    }
+}
+
 /// Eight slaves in a row.
 #[derive(LogicBlock, Default)]
 pub struct Chain8 {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Chain primary input.
-    pub i_pi: Signal<In, Bits<2>>,
+    pub i_pi: Signal<In, Bits<4>>,
     /// Chain secondary input.
-    pub i_si: Signal<In, Bits<2>>,
+    pub i_si: Signal<In, Bits<4>>,
     /// Chain primary output.
     pub o_po: Signal<Out, Bits<2>>,
     /// Chain secondary output.
@@ -179,6 +205,20 @@ pub struct Chain8 {
     n5: Slave,
     n6: Slave,
     n7: Slave,
+    lp1: Loopback,
+    lp2: Loopback,
+    lp3: Loopback,
+    lp4: Loopback,
+    lp5: Loopback,
+    lp6: Loopback,
+    lp7: Loopback,
+    ls0: Loopback,
+    ls1: Loopback,
+    ls2: Loopback,
+    ls3: Loopback,
+    ls4: Loopback,
+    ls5: Loopback,
+    ls6: Loopback,
 }
 
 impl Logic for Chain8 {
@@ -222,8 +262,10 @@ impl Logic for Chain8 {
         self.o_mode1.next = self.n1.o_mode.val();
         self.o_fs1.next = self.n1.o_failsafe.val();
         self.o_perr1.next = self.n1.o_perr.val();
-        self.n1.i_pi.next = self.n0.o_po.val();
-        self.n0.i_si.next = self.n1.o_so.val();
+        self.lp1.i_pair.next = self.n0.o_po.val();
+        self.n1.i_pi.next = self.lp1.o_samples.val();
+        self.ls0.i_pair.next = self.n1.o_so.val();
+        self.n0.i_si.next = self.ls0.o_samples.val();
         self.n2.clock.next = self.clock.val();
         self.n2.i_slots_m1.next = self.i_slots_m1.val();
         self.n2.i_cs_timeout.next = self.i_cs_timeout.val();
@@ -242,8 +284,10 @@ impl Logic for Chain8 {
         self.o_mode2.next = self.n2.o_mode.val();
         self.o_fs2.next = self.n2.o_failsafe.val();
         self.o_perr2.next = self.n2.o_perr.val();
-        self.n2.i_pi.next = self.n1.o_po.val();
-        self.n1.i_si.next = self.n2.o_so.val();
+        self.lp2.i_pair.next = self.n1.o_po.val();
+        self.n2.i_pi.next = self.lp2.o_samples.val();
+        self.ls1.i_pair.next = self.n2.o_so.val();
+        self.n1.i_si.next = self.ls1.o_samples.val();
         self.n3.clock.next = self.clock.val();
         self.n3.i_slots_m1.next = self.i_slots_m1.val();
         self.n3.i_cs_timeout.next = self.i_cs_timeout.val();
@@ -262,8 +306,10 @@ impl Logic for Chain8 {
         self.o_mode3.next = self.n3.o_mode.val();
         self.o_fs3.next = self.n3.o_failsafe.val();
         self.o_perr3.next = self.n3.o_perr.val();
-        self.n3.i_pi.next = self.n2.o_po.val();
-        self.n2.i_si.next = self.n3.o_so.val();
+        self.lp3.i_pair.next = self.n2.o_po.val();
+        self.n3.i_pi.next = self.lp3.o_samples.val();
+        self.ls2.i_pair.next = self.n3.o_so.val();
+        self.n2.i_si.next = self.ls2.o_samples.val();
         self.n4.clock.next = self.clock.val();
         self.n4.i_slots_m1.next = self.i_slots_m1.val();
         self.n4.i_cs_timeout.next = self.i_cs_timeout.val();
@@ -282,8 +328,10 @@ impl Logic for Chain8 {
         self.o_mode4.next = self.n4.o_mode.val();
         self.o_fs4.next = self.n4.o_failsafe.val();
         self.o_perr4.next = self.n4.o_perr.val();
-        self.n4.i_pi.next = self.n3.o_po.val();
-        self.n3.i_si.next = self.n4.o_so.val();
+        self.lp4.i_pair.next = self.n3.o_po.val();
+        self.n4.i_pi.next = self.lp4.o_samples.val();
+        self.ls3.i_pair.next = self.n4.o_so.val();
+        self.n3.i_si.next = self.ls3.o_samples.val();
         self.n5.clock.next = self.clock.val();
         self.n5.i_slots_m1.next = self.i_slots_m1.val();
         self.n5.i_cs_timeout.next = self.i_cs_timeout.val();
@@ -302,8 +350,10 @@ impl Logic for Chain8 {
         self.o_mode5.next = self.n5.o_mode.val();
         self.o_fs5.next = self.n5.o_failsafe.val();
         self.o_perr5.next = self.n5.o_perr.val();
-        self.n5.i_pi.next = self.n4.o_po.val();
-        self.n4.i_si.next = self.n5.o_so.val();
+        self.lp5.i_pair.next = self.n4.o_po.val();
+        self.n5.i_pi.next = self.lp5.o_samples.val();
+        self.ls4.i_pair.next = self.n5.o_so.val();
+        self.n4.i_si.next = self.ls4.o_samples.val();
         self.n6.clock.next = self.clock.val();
         self.n6.i_slots_m1.next = self.i_slots_m1.val();
         self.n6.i_cs_timeout.next = self.i_cs_timeout.val();
@@ -322,8 +372,10 @@ impl Logic for Chain8 {
         self.o_mode6.next = self.n6.o_mode.val();
         self.o_fs6.next = self.n6.o_failsafe.val();
         self.o_perr6.next = self.n6.o_perr.val();
-        self.n6.i_pi.next = self.n5.o_po.val();
-        self.n5.i_si.next = self.n6.o_so.val();
+        self.lp6.i_pair.next = self.n5.o_po.val();
+        self.n6.i_pi.next = self.lp6.o_samples.val();
+        self.ls5.i_pair.next = self.n6.o_so.val();
+        self.n5.i_si.next = self.ls5.o_samples.val();
         self.n7.clock.next = self.clock.val();
         self.n7.i_slots_m1.next = self.i_slots_m1.val();
         self.n7.i_cs_timeout.next = self.i_cs_timeout.val();
@@ -342,8 +394,10 @@ impl Logic for Chain8 {
         self.o_mode7.next = self.n7.o_mode.val();
         self.o_fs7.next = self.n7.o_failsafe.val();
         self.o_perr7.next = self.n7.o_perr.val();
-        self.n7.i_pi.next = self.n6.o_po.val();
-        self.n6.i_si.next = self.n7.o_so.val();
+        self.lp7.i_pair.next = self.n6.o_po.val();
+        self.n7.i_pi.next = self.lp7.o_samples.val();
+        self.ls6.i_pair.next = self.n7.o_so.val();
+        self.n6.i_si.next = self.ls6.o_samples.val();
         self.o_po.next = self.n7.o_po.val();
         self.n7.i_si.next = self.i_si.val();
     }

@@ -20,8 +20,8 @@
 //! toggles after each processed DATA packet. Alarms: `i_alarm_req` with
 //! `i_alarm_reason` is sent in the home slot if the previous cycle's home word
 //! was data (alternation); `o_alarm_sent` pulses when it goes out.
-//! The output is a DDR pair that repeats each edge in the half clock where the
-//! CDR saw its bit centre, so edge timing passes on within half a clock.
+//! The output bits go through a [`Retime`] buffer and out on the node's own
+//! clock (DDR pair), so the receiver's sampling error is not passed on.
 //!
 //! Parameters: none (basic 25-bit words; the extended-alarm variant is not
 //! implemented by this block yet).
@@ -29,7 +29,7 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_bvalid`, `i_level`, `i_phase` | in | 1 | clock | recovered INPUT bits (from [`crate::port_rx`]) |
+//! | `i_bvalid`, `i_level`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits (from [`crate::port_rx`]) |
 //! | `i_hdr_bad` | in | 1 | clock | header rejected: pass the rest unchanged |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | slot count − 1, home slot |
 //! | `i_actuator` | in | 1 | static | 1 actuator, 0 sensor |
@@ -46,14 +46,17 @@
 //! | `o_toggle` | out | 1 | clock | the Alive flip-flop |
 //! | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
 //!
-//! Latency: 5 bit times (one group) + 1 clock from INPUT bit to OUTPUT bit;
-//! with the CDR ≈ 6.5 bit times from line to line.
+//! Latency: 5 bit times (one group) from INPUT bit to the retime buffer,
+//! which sends it 2.5 ± 0.5 bit times after its receive clock; with the
+//! CDR 8–9.5 bit times from line to line (measured at the fibres of rings
+//! of 8 to 100 nodes: mean 8.3–8.6, docs/benchmarks.md).
 //!
 //! ```text
 //! in code   | N0 | N1 | N2 | N3 | N4 | ...
 //! out code       | N0'| N1'| N2'| N3'| N4'|        N0 decides, N4' fixes the parities
 //! ```
 
+use crate::retime::Retime;
 use rust_hdl::prelude::*;
 
 // Word actions (register `action`, rust-hdl emits literals, not Rust consts):
@@ -70,7 +73,7 @@ pub struct Fwd {
     /// Recovered line level.
     pub i_level: Signal<In, Bit>,
     /// Sample phase of the recovered bit.
-    pub i_phase: Signal<In, Bit>,
+    pub i_phase: Signal<In, Bits<2>>,
     /// Header rejected.
     pub i_hdr_bad: Signal<In, Bit>,
     /// Slot count − 1.
@@ -133,7 +136,7 @@ pub struct Fwd {
     toggle: DFF<Bit>,
     prev_alarm: DFF<Bit>,
     out_level: DFF<Bit>,
-    pair: DFF<Bits<2>>,
+    out: Retime,
     sent: DFF<Bit>,
     sent_reason: DFF<Bits<4>>,
     done: DFF<Bit>,
@@ -218,7 +221,7 @@ impl Fwd {
             toggle: Default::default(),
             prev_alarm: Default::default(),
             out_level: Default::default(),
-            pair: Default::default(),
+            out: Default::default(),
             sent: Default::default(),
             sent_reason: Default::default(),
             done: Default::default(),
@@ -275,7 +278,6 @@ impl Logic for Fwd {
             toggle,
             prev_alarm,
             out_level,
-            pair,
             sent,
             sent_reason,
             done,
@@ -700,23 +702,12 @@ impl Logic for Fwd {
                 self.slot.d.next = 0.into();
                 self.dead.d.next = false;
             }
-            // The edge goes out in the half clock where it came in.
-            self.pair.d.next = 0.into();
-            if self.new_level.val() {
-                self.pair.d.next = 3.into();
-            }
-            if self.i_phase.val() & (self.new_level.val() != self.out_level.q.val()) {
-                self.pair.d.next = 1.into();
-                if self.new_level.val() {
-                    self.pair.d.next = 2.into();
-                }
-            }
-        } else {
-            self.pair.d.next = 0.into();
-            if self.out_level.q.val() {
-                self.pair.d.next = 3.into();
-            }
         }
+        // Out on the node's own timing.
+        self.out.clock.next = self.clock.val();
+        self.out.i_valid.next = self.i_bvalid.val();
+        self.out.i_level.next = self.new_level.val();
+        self.out.i_phase.next = self.i_phase.val();
         if self.i_hdr_bad.val() {
             self.dead.d.next = true;
         }
@@ -726,6 +717,6 @@ impl Logic for Fwd {
         self.o_sent_reason.next = self.sent_reason.q.val();
         self.o_pkt_done.next = self.done.q.val();
         self.o_toggle.next = self.toggle.q.val();
-        self.o_line.next = self.pair.q.val();
+        self.o_line.next = self.out.o_line.val();
     }
 }

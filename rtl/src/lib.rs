@@ -10,7 +10,7 @@
 //!
 //! Blocks:
 //! - [`chain8`]: eight slaves in a row (test top)
-//! - [`cdr`]: 4×-oversampling clock and data recovery, loss of signal
+//! - [`cdr`]: 8×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
 //! - [`fwd`]: cut-through forwarder, the slot shift register (slave and master mode)
@@ -19,6 +19,7 @@
 //! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`pkt_tx`]: packet generator (DATA frames, SEC) of the special master
+//! - [`retime`]: elastic output buffer, sends forwarded bits on the node's own clock
 //! - [`ring_top`]: Verilog of a whole ring for simulation (clock gates, fibres, fault points, monitors)
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
 //! - [`stream_ctrl`]: channel failure (pcf/scf) and test signal (ptst/stst)
@@ -40,6 +41,7 @@ pub mod monitor;
 pub mod nrzi_tx;
 pub mod pkt_tx;
 pub mod port_rx;
+pub mod retime;
 pub mod ring_top;
 pub mod rx_framer;
 pub mod rx_word;

@@ -17,7 +17,7 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
-//! | `i_pi`, `i_si` | in | 2 | clock | physical inputs, DDR sample pairs |
+//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 //! | `i_address` | in | 12 | static | home slot (one of the LOCAL slots) |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
@@ -30,7 +30,7 @@
 //! | `o_perr`, `o_ferr`, `o_aerr` | out | 16 | clock | error counters |
 //! | `o_running` | out | 1 | clock | the host started the ring |
 //!
-//! Latency: as [`Slave`] (INPUT to OUTPUT ≈ 6.5 bit times); a received word
+//! Latency: as [`Slave`] (INPUT to OUTPUT 8–9.5 bit times); a received word
 //! is in the data memory ≈ 3.5 bit times after its last line bit.
 //!
 //! ```text
@@ -49,9 +49,9 @@ pub struct Master {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Primary input.
-    pub i_pi: Signal<In, Bits<2>>,
+    pub i_pi: Signal<In, Bits<4>>,
     /// Secondary input.
-    pub i_si: Signal<In, Bits<2>>,
+    pub i_si: Signal<In, Bits<4>>,
     /// Primary output.
     pub o_po: Signal<Out, Bits<2>>,
     /// Secondary output.

@@ -11,10 +11,10 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_samples` | in | 2 | clock | line samples (DDR), bit 0 first |
+//! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit), bit 0 first |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`RxWord`] |
 //! | `o_los` | out | 1 | clock | loss of signal |
-//! | `o_bvalid`, `o_level`, `o_phase` | out | 1 | clock | recovered bit stream (from the CDR) |
+//! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 //! | `o_start` | out | 1 | clock | J K found |
 //! | `o_inpkt` | out | 1 | clock | inside a packet |
 //! | `o_wvalid` … `o_ptype` | out | | clock | as [`RxWord`] |
@@ -39,7 +39,7 @@ pub struct Monitor {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Line samples.
-    pub i_samples: Signal<In, Bits<2>>,
+    pub i_samples: Signal<In, Bits<4>>,
     /// Slot count − 1.
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// Node address.
@@ -51,7 +51,7 @@ pub struct Monitor {
     /// Recovered line level.
     pub o_level: Signal<Out, Bit>,
     /// Sample phase of the recovered bit.
-    pub o_phase: Signal<Out, Bit>,
+    pub o_phase: Signal<Out, Bits<2>>,
     /// Packet start.
     pub o_start: Signal<Out, Bit>,
     /// Inside a packet.

@@ -6,12 +6,12 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_samples` | in | 2 | clock | line samples (DDR) |
+//! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::rx_word::RxWord`] |
 //! | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
 //! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
 //! | `o_los`, `o_cf`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
-//! | `o_bvalid`, `o_level`, `o_phase` | out | 1 | clock | recovered bit stream (from the CDR) |
+//! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 //!
 //! Latency: as [`Monitor`]; stream-controller outputs one clock later.
 //!
@@ -31,7 +31,7 @@ pub struct PortRx {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Line samples.
-    pub i_samples: Signal<In, Bits<2>>,
+    pub i_samples: Signal<In, Bits<4>>,
     /// Slot count − 1.
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// Node address.
@@ -73,7 +73,7 @@ pub struct PortRx {
     /// Recovered line level.
     pub o_level: Signal<Out, Bit>,
     /// Sample phase of the recovered bit.
-    pub o_phase: Signal<Out, Bit>,
+    pub o_phase: Signal<Out, Bits<2>>,
     /// Channel failure.
     pub o_cf: Signal<Out, Bit>,
     /// Test signal.

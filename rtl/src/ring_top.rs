@@ -11,10 +11,11 @@
 //! through one configuration port, so one Verilator build serves every
 //! scenario with the same node kinds and slot-count class.
 //!
-//! **Clocks.** The top's `clk` is the simulation tick, 4 ticks per nominal
-//! bit time. Node k runs on its own clock `nclk_k = clk & en_k`: a 32-bit
-//! fractional accumulator adds `inc_k` (≈ 2³¹ · (1 + ppm·10⁻⁶), half the tick
-//! rate = 2× the line rate) every tick and its carry enables the next tick's
+//! **Clocks.** The top's `clk` is the simulation tick, 8 ticks per nominal
+//! bit time (one receive sample). Node k runs on its own clock
+//! `nclk_k = clk & en_k`: a 32-bit fractional accumulator adds `inc_k`
+//! (≈ 2³⁰ · (1 + ppm·10⁻⁶), a quarter of the tick rate = 2× the line rate)
+//! every tick and its carry enables the next tick's
 //! edge (the enable is latched on the falling edge, so the gated clock has no
 //! glitch); the accumulator's start value is the node's random phase. So
 //! every node has its scenario's frequency offset and its own phase, with one
@@ -23,10 +24,13 @@
 //!
 //! **Fibres.** Fibre P*k* (node k PO → node k+1 PI) and S*k* (node k+1 SO →
 //! node k SI) are line levels at tick resolution: the sender's DDR pair
-//! shows bit 0 in the tick after its clock edge and bit 1 until its next
-//! edge; the receiver's DDR pair is {line now, line one tick ago}. Each fibre
-//! has a **fault point** (break: the line goes dark; flip: the line is
-//! inverted for 4 ticks = one bit time) and a **monitor** (clock recovery,
+//! shows bit 0 in the 2 ticks after its clock edge and bit 1 until its next
+//! edge; the receiver's 4 samples are the line in the last 4 ticks (oldest
+//! in bit 0). A node clock period of 3 or 5 ticks (how the accumulator
+//! makes the offset) moves that node's edges or samples by one tick = one
+//! receive sample; the receiver's margin (`cdr`, `retime`) covers it. Each
+//! fibre has a **fault point** (break: the line goes dark; flip: the line is
+//! inverted for 8 ticks = one bit time) and a **monitor** (clock recovery,
 //! framer, word decoder at the nominal rate) whose DATA words are captured
 //! per cycle: entry `(cyc & 3) · CAP + slot` holds `{CYC[2:0], status[1:0],
 //! ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3 VOID; a slot
@@ -37,7 +41,7 @@
 //!
 //! | port | dir | width | meaning |
 //! |---|---|---|---|
-//! | `clk` | in | 1 | simulation tick (4 per nominal bit time) |
+//! | `clk` | in | 1 | simulation tick (8 per nominal bit time) |
 //! | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | configuration write (table below) |
 //! | `i_rd_sel`, `i_rd_field` | in | 16, 8 | status read address |
 //! | `o_rd` | out | 32 | status read data (combinational) |
@@ -57,12 +61,17 @@
 use crate::verilog::block_verilog;
 use merkur_model::scenario::Kind;
 
-/// Ticks of the simulation clock per nominal bit time.
-pub const TICKS_PER_BIT: u32 = 4;
+/// Ticks of the simulation clock per nominal bit time (one tick per
+/// receive sample, [`crate::cdr::SAMPLES_PER_BIT`]).
+pub const TICKS_PER_BIT: u32 = crate::cdr::SAMPLES_PER_BIT as u32;
+
+/// A node's clock increment per tick at 0 ppm: its clock (2 per bit time)
+/// is a quarter of the tick rate on a 32-bit accumulator.
+pub const INC_NOMINAL: u64 = 1 << 30;
 
 /// Configuration fields of `merkur_ring` (`i_cfg_field`).
 pub mod cfg {
-    /// Node: clock increment per tick (2³¹ = nominal).
+    /// Node: clock increment per tick ([`INC_NOMINAL`] at 0 ppm).
     pub const INC: u32 = 0;
     /// Node: clock accumulator start value (phase).
     pub const PHASE: u32 = 1;
@@ -127,6 +136,10 @@ pub mod status {
     pub const LOS: u32 = 21;
     /// Fibre: DATA frames ended.
     pub const NEND: u32 = 22;
+    /// Fibre: simulation tick (low 32 bits) at which the monitor decoded the
+    /// last DATA H1; between the fibres into and out of a node, the node's
+    /// forwarding delay (the monitors are identical and on one clock).
+    pub const TH1: u32 = 23;
 }
 
 /// Module name of a node kind in the ring Verilog.
@@ -211,8 +224,9 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     w(
         &mut v,
         "    // Shared configuration.\n    reg [11:0] slots_m1 = 12'd0;\n    reg [15:0] cs_timeout = 16'hffff;\n    reg [15:0] period = 16'd0;\n\
-         \x20   // Monitors run at the nominal rate (half the tick rate).\n    reg men = 1'b0;\n    always @(posedge clk) men <= ~men;\n\
-         \x20   reg men_l = 1'b0;\n    always @(negedge clk) men_l <= men;\n    wire mclk = clk & men_l;",
+         \x20   // Ticks since the start (for the fibres' H1 times).\n    reg [31:0] tick = 32'd0;\n    always @(posedge clk) tick <= tick + 32'd1;\n\
+         \x20   // Monitors run at the nominal rate (a quarter of the tick rate).\n    reg [1:0] mcnt = 2'd0;\n    always @(posedge clk) mcnt <= mcnt + 2'd1;\n\
+         \x20   reg men_l = 1'b0;\n    always @(negedge clk) men_l <= mcnt == 2'd3;\n    wire mclk = clk & men_l;",
     );
     // Each fibre monitor's last DATA header (used by the nodes' stimulus).
     w(
@@ -245,8 +259,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             &mut v,
             &format!(
                 "    // ---- node {k}: {kind} ----\n\
-                 \x20   reg [31:0] inc_{k} = 32'h80000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0;\n\
-                 \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n\
+                 \x20   reg [31:0] inc_{k} = 32'h40000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0, fired2_{k} = 1'b0;\n\
+                 \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n        fired2_{k} <= fired_{k};\n\
                  \x20       if ({h_inc}) inc_{k} <= i_cfg_val;\n\
                  \x20       if ({h_phase}) acc_{k} <= i_cfg_val;\n    end\n\
                  \x20   always @(negedge clk) enl_{k} <= en_{k};\n    wire nclk_{k} = clk & enl_{k};\n\
@@ -280,8 +294,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 ),
             );
         }
-        let pi = format!("{{line_{pi_f}, prev_{pi_f}}}");
-        let si = format!("{{line_{}, prev_{}}}", n + k, n + k);
+        let pi = format!("{{line_{pi_f}, sh_{pi_f}}}");
+        let si = format!("{{line_{}, sh_{}}}", n + k, n + k);
         let common = format!(
             ".clock(nclk_{k}), .i_pi({pi}), .i_si({si}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_{k}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_irq1(ureq_{k}[0]), .i_irq2(ureq_{k}[1]), .i_fs_req(ureq_{k}[2])"
         );
@@ -351,24 +365,24 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             &mut v,
             &format!(
                 "    // ---- fibre {name} (from node {src}) ----\n\
-                 \x20   reg line_{f} = 1'b0, prev_{f} = 1'b0, brk_{f} = 1'b0;\n    reg [2:0] flip_{f} = 3'd0;\n\
-                 \x20   wire txl_{f} = fired_{src} ? {port}_{src}[0] : {port}_{src}[1];\n\
-                 \x20   always @(posedge clk) begin\n        line_{f} <= brk_{f} ? 1'b0 : (txl_{f} ^ (flip_{f} != 3'd0));\n        prev_{f} <= line_{f};\n\
-                 \x20       if (flip_{f} != 3'd0) flip_{f} <= flip_{f} - 3'd1;\n\
+                 \x20   reg line_{f} = 1'b0, brk_{f} = 1'b0;\n    reg [2:0] sh_{f} = 3'd0;\n    reg [3:0] flip_{f} = 4'd0;\n\
+                 \x20   wire txl_{f} = (fired_{src} | fired2_{src}) ? {port}_{src}[0] : {port}_{src}[1];\n\
+                 \x20   always @(posedge clk) begin\n        line_{f} <= brk_{f} ? 1'b0 : (txl_{f} ^ (flip_{f} != 4'd0));\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
+                 \x20       if (flip_{f} != 4'd0) flip_{f} <= flip_{f} - 4'd1;\n\
                  \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_brk}) brk_{f} <= i_cfg_val[0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) flip_{f} <= 3'd4;\n    end\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) flip_{f} <= 4'd{TICKS_PER_BIT};\n    end\n\
                  \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
-                 \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_phase_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f};\n    wire [3:0] m_reason_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
-                 \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, prev_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff),\n\
+                 \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                 \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff),\n\
                  \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
                  \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
                  \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_void(m_void_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
-                 \x20   reg [22:0] cap_{f} [0:{last}];\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
+                 \x20   reg [22:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 23'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
                  \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
                  \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
-                 \x20           h1_{f} <= m_data_{f};\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
+                 \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
                  \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
                  \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
@@ -400,7 +414,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         (status::IRQFS, "{16'd0, nirqfs_K}"),
         (status::RUN, "{31'd0, run_K}"),
     ];
-    let fibre_fields: [(u32, &str); 7] = [
+    let fibre_fields: [(u32, &str); 8] = [
+        (status::TH1, "th1_K"),
         (status::FRAME, "{28'd0, infr_K, hdr_cyc_K}"),
         (status::H1, "{16'd0, h1_K}"),
         (status::H0, "{16'd0, h0_K}"),

@@ -12,7 +12,7 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_pi`, `i_si` | in | 2 | clock | physical inputs, DDR sample pairs |
+//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 //! | `i_address` | in | 12 | static (DIP switches) | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
@@ -29,8 +29,8 @@
 //! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
 //! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok` | out | | clock | INPUT's words, for a master's memories |
 //!
-//! Latency: INPUT to OUTPUT ≈ 6.5 bit times (CDR + one group, [`Fwd`]);
-//! BSR to BSS ≈ 1.5 bit times (bit repeater).
+//! Latency: INPUT to OUTPUT 8–9.5 bit times (CDR + one group + retime
+//! buffer, [`Fwd`]); BSR to BSS ≈ 3.5 bit times (CDR + [`Retime`]).
 //!
 //! ```text
 //! PI ─┐            ┌─ port_rx (INPUT) ── fwd ── OUTPUT ─┐            ┌─ PO
@@ -40,6 +40,7 @@
 
 use crate::fwd::Fwd;
 use crate::port_rx::PortRx;
+use crate::retime::Retime;
 use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
 use rust_hdl::prelude::*;
@@ -56,9 +57,9 @@ pub struct Slave {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Primary input.
-    pub i_pi: Signal<In, Bits<2>>,
+    pub i_pi: Signal<In, Bits<4>>,
     /// Secondary input.
-    pub i_si: Signal<In, Bits<2>>,
+    pub i_si: Signal<In, Bits<4>>,
     /// Primary output.
     pub o_po: Signal<Out, Bits<2>>,
     /// Secondary output.
@@ -124,6 +125,7 @@ pub struct Slave {
     rx_bsr: PortRx,
     fwd: Fwd,
     tst: TstTx,
+    rep: Retime,
     mode: DFF<Bits<2>>,
     failsafe: DFF<Bit>,
     rw: DFF<Bit>,
@@ -140,8 +142,6 @@ pub struct Slave {
     act_data: DFF<Bits<16>>,
     perr: DFF<Bits<16>>,
     ferr: DFF<Bits<16>>,
-    rep_level: DFF<Bit>,
-    rep_pair: DFF<Bits<2>>,
     idle_level: DFF<Bit>,
     idle_half: DFF<Bit>,
     reason: Signal<Local, Bits<4>>,
@@ -200,6 +200,7 @@ impl Slave {
             rx_bsr: PortRx::new(false),
             fwd: Fwd::new(),
             tst: Default::default(),
+            rep: Default::default(),
             mode: Default::default(),
             failsafe: Default::default(),
             rw: Default::default(),
@@ -216,8 +217,6 @@ impl Slave {
             act_data: Default::default(),
             perr: Default::default(),
             ferr: Default::default(),
-            rep_level: Default::default(),
-            rep_pair: Default::default(),
             idle_level: Default::default(),
             idle_half: Default::default(),
             reason: Default::default(),
@@ -234,8 +233,7 @@ impl Logic for Slave {
     fn update(&mut self) {
         dff_setup!(
             self, clock, mode, failsafe, rw, armed, quiet, grace, settle, ack_time, seen_ack,
-            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_level, rep_pair,
-            idle_level, idle_half
+            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, idle_level, idle_half
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -459,27 +457,15 @@ impl Logic for Slave {
             }
         }
         // BSS: in mode N the BSR stream repeated bit for bit; wrapped: TST.
-        if self.rx_bsr.o_bvalid.val() {
-            self.rep_level.d.next = self.rx_bsr.o_level.val();
-            self.rep_pair.d.next = 0.into();
-            if self.rx_bsr.o_level.val() {
-                self.rep_pair.d.next = 3.into();
-            }
-            if self.rx_bsr.o_phase.val() & (self.rx_bsr.o_level.val() != self.rep_level.q.val()) {
-                self.rep_pair.d.next = 1.into();
-                if self.rx_bsr.o_level.val() {
-                    self.rep_pair.d.next = 2.into();
-                }
-            }
-        } else {
-            self.rep_pair.d.next = 0.into();
-            if self.rep_level.q.val() {
-                self.rep_pair.d.next = 3.into();
-            }
-        }
+        // (Retimed like OUTPUT, so the secondary ring's edges do not
+        // wander either.)
+        self.rep.clock.next = self.clock.val();
+        self.rep.i_valid.next = self.rx_bsr.o_bvalid.val();
+        self.rep.i_level.next = self.rx_bsr.o_level.val();
+        self.rep.i_phase.next = self.rx_bsr.o_phase.val();
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
         self.tst.i_address.next = self.i_address.val();
-        self.bss_pair.next = self.rep_pair.q.val();
+        self.bss_pair.next = self.rep.o_line.val();
         if self.wrapped.val() {
             self.bss_pair.next = self.tst.o_line.val();
         }

@@ -28,7 +28,7 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
-//! | `i_pi`, `i_si` | in | 2 | clock | physical inputs, DDR sample pairs |
+//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 //! | `i_address` | in | 12 | static | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
@@ -65,9 +65,9 @@ pub struct SpecialMaster {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Primary input.
-    pub i_pi: Signal<In, Bits<2>>,
+    pub i_pi: Signal<In, Bits<4>>,
     /// Secondary input.
-    pub i_si: Signal<In, Bits<2>>,
+    pub i_si: Signal<In, Bits<4>>,
     /// Primary output.
     pub o_po: Signal<Out, Bits<2>>,
     /// Secondary output.

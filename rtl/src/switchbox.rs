@@ -2,7 +2,8 @@
 //!
 //! Purpose: connects the physical ports PI, SI, PO, SO to the logical
 //! streams INPUT, BSR (receive) and OUTPUT, BSS (send) by the node's mode.
-//! Lines are carried as 2-sample pairs (DDR, one pair per core clock).
+//! Inputs are carried as 4-sample words (quadrature DDR capture, one word
+//! per core clock), outputs as DDR pairs (two halves per core clock).
 //!
 //! | mode | code | INPUT | OUTPUT | BSR | BSS |
 //! |---|---|---|---|---|---|
@@ -14,9 +15,9 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `i_mode` | in | 2 | clock (static between changes) | mode code |
-//! | `i_pi`, `i_si` | in | 2 | clock | physical inputs |
+//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs (samples) |
 //! | `i_output`, `i_bss` | in | 2 | clock | logical outputs of the node |
-//! | `o_input`, `o_bsr` | out | 2 | clock | logical inputs of the node |
+//! | `o_input`, `o_bsr` | out | 4 | clock | logical inputs of the node |
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs |
 //!
 //! Latency: combinational (0 clocks); the node registers its I/O.
@@ -44,17 +45,17 @@ pub struct Switchbox {
     /// Mode.
     pub i_mode: Signal<In, Bits<2>>,
     /// Physical primary input.
-    pub i_pi: Signal<In, Bits<2>>,
+    pub i_pi: Signal<In, Bits<4>>,
     /// Physical secondary input.
-    pub i_si: Signal<In, Bits<2>>,
+    pub i_si: Signal<In, Bits<4>>,
     /// Logical OUTPUT stream.
     pub i_output: Signal<In, Bits<2>>,
     /// Logical BSS stream.
     pub i_bss: Signal<In, Bits<2>>,
     /// Logical INPUT stream.
-    pub o_input: Signal<Out, Bits<2>>,
+    pub o_input: Signal<Out, Bits<4>>,
     /// Logical BSR stream.
-    pub o_bsr: Signal<Out, Bits<2>>,
+    pub o_bsr: Signal<Out, Bits<4>>,
     /// Physical primary output.
     pub o_po: Signal<Out, Bits<2>>,
     /// Physical secondary output.

@@ -3,10 +3,36 @@
 use rust_hdl::prelude::*;
 
 /// The Verilog of a block as a top module named `top`, after rust-hdl's
-/// connectivity and logic-loop checks.
+/// connectivity and logic-loop checks, with every memory zero at power-up
+/// ([`zero_memories`]).
 pub fn block_verilog<U: Block>(mut uut: U) -> String {
     uut.connect_all();
-    generate_verilog(&uut)
+    zero_memories(&generate_verilog(&uut))
+}
+
+/// Gives every rust-hdl memory (`reg[W:0] mem[D:0];`) an `initial` loop
+/// that clears it. The blocks rely on memories starting at zero, as FPGA
+/// block RAM does (iCE40 and Xilinx bitstreams initialise it; Yosys keeps
+/// the zero init), and as Verilator's `--x-initial fast` happens to give;
+/// without the loop Icarus starts them at x and a special master's return
+/// store, read before its first frame has come back, differs.
+pub fn zero_memories(verilog: &str) -> String {
+    let mut out = String::with_capacity(verilog.len() + 1024);
+    for line in verilog.lines() {
+        out.push_str(line);
+        out.push('\n');
+        let t = line.trim();
+        if let Some(rest) = t.strip_prefix("reg[") {
+            if let Some((_, tail)) = rest.split_once(":0] mem[") {
+                if let Some(depth) = tail.strip_suffix(":0];") {
+                    out.push_str(&format!(
+                        "    integer mem_i;\n    initial for (mem_i = 0; mem_i <= {depth}; mem_i = mem_i + 1) mem[mem_i] = 0;\n"
+                    ));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Every block with its default parameters: (name = file name in `rtl/src`, Verilog).
@@ -27,6 +53,7 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(stream_ctrl::StreamCtrl::default()),
         ),
         ("port_rx", block_verilog(port_rx::PortRx::new(false))),
+        ("retime", block_verilog(retime::Retime::default())),
         ("fwd", block_verilog(fwd::Fwd::new())),
         ("tst_tx", block_verilog(tst_tx::TstTx::default())),
         ("slave", block_verilog(slave::Slave::new())),

@@ -13,7 +13,7 @@ use rust_hdl::prelude::*;
 use std::time::Instant;
 
 fn samples(clocks: usize) -> Vec<u64> {
-    // A repeating frame: idles, J K, 50 data groups; 4 samples per bit, 2 per clock.
+    // A repeating frame: idles, J K, 50 data groups; 8 samples per bit, 4 per clock.
     let mut code = vec![];
     (0..8).for_each(|_| push_group(&mut code, CODE_I));
     push_group(&mut code, CODE_J);
@@ -24,7 +24,7 @@ fn samples(clocks: usize) -> Vec<u64> {
     (0..clocks)
         .map(|c| {
             let b = line[(c / 2) % line.len()] as u64;
-            b | b << 1
+            b * 0b1111
         })
         .collect()
 }
@@ -50,7 +50,7 @@ fn icarus(verilog: &str, s: &[u64]) -> Result<f64, String> {
     let mem: String = s.iter().map(|x| format!("{x:x}\n")).collect();
     std::fs::write(d.join("samples.hex"), mem).map_err(|e| e.to_string())?;
     let tb = format!(
-        "module tb; reg clock = 0; reg [1:0] s; reg [1:0] mem [0:{n}]; integer i; integer words = 0;\n\
+        "module tb; reg clock = 0; reg [3:0] s; reg [3:0] mem [0:{n}]; integer i; integer words = 0;\n\
          wire o_wvalid; top dut(.clock(clock), .i_samples(s), .i_slots_m1(12'd99), .i_address(12'd0), .o_wvalid(o_wvalid));\n\
          initial begin $readmemh(\"samples.hex\", mem); for (i = 0; i < {n}; i = i + 1) begin s = mem[i]; #1 clock = 1; #1 clock = 0; if (o_wvalid) words = words + 1; end $display(\"%0d\", words); $finish; end endmodule\n",
         n = s.len()

@@ -23,7 +23,7 @@ fn stimulus(clocks: usize) -> Vec<u64> {
     (0..clocks)
         .map(|c| {
             let b = line[(c / 2) % line.len()] as u64;
-            b | b << 1
+            b * 0b1111
         })
         .collect()
 }
@@ -70,7 +70,7 @@ fn icarus(verilog: &str, chain: bool, s: &[u64]) -> Result<f64, String> {
         .map(|(n, x)| format!(".{n}({x})"))
         .collect();
     let tb = format!(
-        "module tb; reg clock = 0; reg [1:0] x; reg [1:0] mem [0:{n}]; integer i;\n\
+        "module tb; reg clock = 0; reg [3:0] x; reg [3:0] mem [0:{n}]; integer i;\n\
          top dut(.clock(clock), .i_pi(x), .i_si(x), {c});\n\
          initial begin $readmemh(\"s.hex\", mem); for (i = 0; i < {n}; i = i + 1) begin x = mem[i]; #1 clock = 1; #1 clock = 0; end $finish; end endmodule\n",
         n = s.len(),

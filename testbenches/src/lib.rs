@@ -8,6 +8,7 @@
 //!
 //! The tests in `tests/` check every RTL block against the reference model.
 
+pub use merkur_rtl::cdr::{SAMPLES_PER_BIT, SAMPLES_PER_CLOCK};
 use std::path::PathBuf;
 
 /// One pinned tool from `scripts/tools.lock`.
@@ -91,8 +92,8 @@ impl Rng {
     }
 }
 
-/// Line samples of NRZI `levels` sent by a node whose bit period is 4·(1+δ)
-/// receiver samples (δ = `delta_ppm`·10⁻⁶), starting at `phase` samples, with
+/// Line samples of NRZI `levels` sent by a node whose bit period is
+/// [`SAMPLES_PER_BIT`]·(1+δ) receiver samples (δ = `delta_ppm`·10⁻⁶), starting at `phase` samples, with
 /// every bit boundary moved by uniform jitter in ±`jitter` samples. The
 /// first bit is stretched by the phase: lead a stream with idles.
 pub fn line_samples(
@@ -102,8 +103,8 @@ pub fn line_samples(
     jitter: f64,
     rng: &mut Rng,
 ) -> Vec<u8> {
-    let period = 4.0 * (1.0 + delta_ppm * 1e-6);
-    let mut out = Vec::with_capacity(levels.len() * 4 + 8);
+    let period = SAMPLES_PER_BIT as f64 * (1.0 + delta_ppm * 1e-6);
+    let mut out = Vec::with_capacity(levels.len() * SAMPLES_PER_BIT + 8);
     let mut k = 0usize;
     let mut next = phase + period;
     let mut t = 0.0;
@@ -121,10 +122,17 @@ pub fn line_samples(
     out
 }
 
-/// Sample pairs as the DDR input port value (bit 0 first in time).
-pub fn ddr_pairs(samples: &[u8]) -> Vec<u64> {
+/// Samples grouped per clock as the input port value `i_samples` (bit 0
+/// first in time); a last incomplete group is dropped.
+pub fn sample_words(samples: &[u8]) -> Vec<u64> {
     samples
-        .chunks_exact(2)
-        .map(|p| (p[0] | p[1] << 1) as u64)
+        .chunks_exact(SAMPLES_PER_CLOCK)
+        .map(|w| w.iter().rev().fold(0u64, |a, &s| a << 1 | s as u64))
         .collect()
+}
+
+/// What a receiver on the sender's clock samples from a DDR output pair:
+/// each half of the clock is two of its four samples.
+pub fn pair_to_samples(pair: u64) -> u64 {
+    ((pair & 1) * 0b0011) | ((pair >> 1 & 1) * 0b1100)
 }

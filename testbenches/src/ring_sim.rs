@@ -17,7 +17,9 @@ use merkur_model::line::{Lead, Word};
 use merkur_model::ring::{Carry, CycleRecord, HeaderRx, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
 use merkur_rtl::mdb::{ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
-use merkur_rtl::ring_top::{cap_slots, cfg as field, ring_verilog, status as st, TICKS_PER_BIT};
+use merkur_rtl::ring_top::{
+    cap_slots, cfg as field, ring_verilog, status as st, INC_NOMINAL, TICKS_PER_BIT,
+};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -82,8 +84,15 @@ pub struct Report {
     pub build: Duration,
     /// Measured cycle period at the special master, bit times.
     pub period_bits: f64,
+    /// Forwarding delay of every node but the special master, bit times:
+    /// when the last frame's H1 was decoded on the node's PO fibre minus on
+    /// its PI fibre (identical monitors on one clock; each reading is
+    /// quantised to the monitors' clock, half a bit time).
+    pub fwd_delay_bits: Vec<f64>,
     /// Per-node summary.
     pub rows: Vec<NodeRow>,
+    /// The run's ports per tick, when [`Options::record`] asked for it.
+    pub recording: Option<crate::verilator::Recording>,
 }
 
 /// Options of a run.
@@ -95,6 +104,9 @@ pub struct Options {
     pub seed: u64,
     /// Print progress to stderr.
     pub progress: bool,
+    /// Record every tick's ports for a replay in another simulator
+    /// ([`Report::recording`]).
+    pub record: bool,
 }
 
 /// What the RTL ring does not model yet, as a message naming the field.
@@ -106,7 +118,7 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
     }
     if let Some((c, f)) = cfg.faults.first() {
         return Some(format!(
-            "fault[0] (cycle {c}, {f:?}): fault injection in RTL simulation is issue 5; this scenario has {} fault(s)",
+            "fault[0] (cycle {c}, {f}): fault injection in RTL simulation is issue 5 (it needs the special master's secondary relay); this scenario has {} fault(s)",
             cfg.faults.len()
         ));
     }
@@ -219,8 +231,12 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let kinds: Vec<Kind> = cfg.nodes.iter().map(|x| x.kind).collect();
     let verilog = ring_verilog(&kinds, s);
     let t0 = Instant::now();
-    let m = Model::build_top_traced(&verilog, "merkur_ring", opts.wave.as_deref())?;
+    let mut m = Model::build_top_traced(&verilog, "merkur_ring", opts.wave.as_deref())?;
     let build = t0.elapsed();
+    if opts.record {
+        let clk = m.port("clk");
+        m.start_recording(clk);
+    }
     let p = |name: &str| m.port(name);
     let mut r = Ring {
         clk: p("clk"),
@@ -248,7 +264,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     r.cfg(0, field::CS_TIMEOUT, (5 * period).min(0xfffe));
     r.cfg(0, field::PERIOD, period);
     for (k, nd) in cfg.nodes.iter().enumerate() {
-        let inc = ((1u64 << 31) as f64 * (1.0 + nd.ppm * 1e-6)).round() as u64;
+        let inc = (INC_NOMINAL as f64 * (1.0 + nd.ppm * 1e-6)).round() as u64;
         r.cfg(k, field::INC, inc);
         r.cfg(k, field::PHASE, rng.next_u64() & 0xffff_ffff);
         r.cfg(k, field::ADDRESS, nd.address as u64);
@@ -533,6 +549,14 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             mismatches: mism.len() - before,
         });
     }
+    let fwd_delay_bits = (0..n)
+        .filter(|&k| k != cfg.sm)
+        .map(|k| {
+            let out = r.rd(k, st::TH1);
+            let inp = r.rd((k + n - 1) % n, st::TH1);
+            (out.wrapping_sub(inp) & 0xffff_ffff) as f64 / TICKS_PER_BIT as f64
+        })
+        .collect();
     let period_bits = if starts.len() >= 2 {
         (starts[starts.len() - 1] - starts[0]) as f64
             / (starts.len() - 1) as f64
@@ -548,7 +572,9 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         wall: t1.elapsed(),
         build,
         period_bits,
+        fwd_delay_bits,
         rows,
+        recording: r.m.take_recording(),
     })
 }
 

@@ -13,7 +13,9 @@ use merkur_model::ring::{self, sensor_value, Carry, HeaderRx};
 use merkur_model::scenario::Kind;
 use merkur_rtl::{chain8::Chain8, monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, seen, PacketReader, Seen};
-use merkur_testbenches::{ddr_pairs, line_samples, repo_root, verilator::Model, Rng};
+use merkur_testbenches::{
+    line_samples, pair_to_samples, repo_root, sample_words, verilator::Model, Rng,
+};
 
 #[test]
 fn eight_slaves_carry_the_models_frames() {
@@ -43,12 +45,12 @@ fn eight_slaves_carry_the_models_frames() {
         (0..40).for_each(|_| push_group(&mut code, CODE_I));
         let mut level = 0;
         let line = nrzi_encode(&code, &mut level);
-        let pairs = ddr_pairs(&line_samples(&line, ppm, 0.9, 0.25, &mut rng));
+        let pairs = sample_words(&line_samples(&line, ppm, 0.9, 0.5, &mut rng));
         // Idles on the last node's SI (the secondary ring's carrier).
         let mut idle_code = vec![];
         (0..code.len() / 5 + 10).for_each(|_| push_group(&mut idle_code, CODE_I));
         let idle_line = nrzi_encode(&idle_code, &mut 0);
-        let idle_pairs = ddr_pairs(&line_samples(&idle_line, -ppm, 2.3, 0.25, &mut rng));
+        let idle_pairs = sample_words(&line_samples(&idle_line, -ppm, 2.3, 0.5, &mut rng));
 
         let mut c8 = Model::build(&block_verilog(Chain8::default())).unwrap();
         let mut mo = Model::build(&block_verilog(Monitor::new(false))).unwrap();
@@ -81,11 +83,11 @@ fn eight_slaves_carry_the_models_frames() {
         let mut reader = PacketReader::new(&mo);
         for (t, &pair) in pairs.iter().enumerate() {
             // Node k's inputs belong to the frame that has reached it: the
-            // frame enters the chain at `starts[c]` and needs about 7 bit
-            // times per node.
+            // frame enters the chain at `starts[c]` and needs about 8 bit
+            // times per node (the slave's latency is 8–9.5).
             for k in 0..8 {
                 let node = k + 1;
-                let here = (t / 2).saturating_sub(7 * (k + 1));
+                let here = (t / 2).saturating_sub(8 * (k + 1));
                 let c = starts.iter().rposition(|&s| s <= here).unwrap_or(0);
                 c8.set(
                     sensor_port[k],
@@ -101,7 +103,7 @@ fn eight_slaves_carry_the_models_frames() {
             c8.set(pi, pair);
             c8.set(si, idle_pairs[t.min(idle_pairs.len() - 1)]);
             c8.tick(clk);
-            mo.set(osmp, c8.get(po));
+            mo.set(osmp, pair_to_samples(c8.get(po)));
             mo.tick(oclk);
             reader.sample(&mo);
         }

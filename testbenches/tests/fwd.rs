@@ -12,7 +12,9 @@ use merkur_model::ring::{self, sensor_value, Carry, CycleRecord, EventKind, Head
 use merkur_model::scenario::Kind;
 use merkur_rtl::{fwd::Fwd, monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, seen, PacketReader, Seen};
-use merkur_testbenches::{ddr_pairs, line_samples, repo_root, verilator::Model, Rng};
+use merkur_testbenches::{
+    line_samples, pair_to_samples, repo_root, sample_words, verilator::Model, Rng,
+};
 
 fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64) {
     let n = cfg.nodes.len();
@@ -50,7 +52,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
     }
     let mut level = 0;
     let line = nrzi_encode(&code, &mut level);
-    let pairs = ddr_pairs(&line_samples(&line, ppm, 2.1, 0.25, &mut rng));
+    let pairs = sample_words(&line_samples(&line, ppm, 2.1, 0.5, &mut rng));
 
     let mut f = Model::build(&block_verilog(Fwd::new())).unwrap();
     let mut mi = Model::build(&block_verilog(Monitor::new(false))).unwrap();
@@ -117,7 +119,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         f.set(fph, mi.get(iph));
         f.set(fhb, mi.get(ihb));
         f.tick(fclk);
-        mo.set(osmp, f.get(fline));
+        mo.set(osmp, pair_to_samples(f.get(fline)));
         mo.tick(oclk);
         reader.sample(&mo);
     }

@@ -13,7 +13,7 @@ use merkur_model::line::{
 use merkur_model::ring::{self, Carry, HeaderRx, Slot};
 use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::stim::Seen;
-use merkur_testbenches::{line_samples, repo_root, verilator::Model, Rng};
+use merkur_testbenches::{line_samples, repo_root, sample_words, verilator::Model, Rng};
 
 struct Packet {
     hdr: HeaderRx,
@@ -108,8 +108,8 @@ fn run_scenario(name: &str, delta_ppm: f64) {
     for &f in &flips {
         line[f] ^= 1;
     }
-    let phase = rng.below(400) as f64 / 100.0;
-    let samples = line_samples(&line, delta_ppm, phase, 0.3, &mut rng);
+    let phase = rng.below(800) as f64 / 100.0;
+    let samples = line_samples(&line, delta_ppm, phase, 0.6, &mut rng);
     let mut m = Model::build(&block_verilog(Monitor::new(false))).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
     let (clk, smp, wv, kind, data, alive, alarm, ok, void, hbad, start) = (
@@ -128,8 +128,8 @@ fn run_scenario(name: &str, delta_ppm: f64) {
     m.set(p(&m, "i_slots_m1"), cfg.slots as u64 - 1);
     m.set(p(&m, "i_address"), 0);
     let mut got: Vec<(bool, Vec<Seen>)> = vec![];
-    for pair in samples.chunks_exact(2) {
-        m.set(smp, (pair[0] | pair[1] << 1) as u64);
+    for word in sample_words(&samples) {
+        m.set(smp, word);
         m.tick(clk);
         if m.get(start) == 1 {
             got.push((false, vec![]));

@@ -10,7 +10,7 @@ use merkur_model::ring::Header;
 use merkur_rtl::stream_ctrl::{BAD_WORDS, TST_HOLD_CLOCKS};
 use merkur_rtl::{port_rx::PortRx, verilog::block_verilog};
 use merkur_testbenches::stim::tst_code;
-use merkur_testbenches::{ddr_pairs, line_samples, verilator::Model, Rng};
+use merkur_testbenches::{line_samples, sample_words, verilator::Model, Rng};
 
 const SLOTS: usize = 16;
 
@@ -97,7 +97,7 @@ fn to_pairs(code: &[u8], flips: &[usize], ppm: f64, rng: &mut Rng) -> Vec<u64> {
     for &f in flips {
         line[f] ^= 1;
     }
-    ddr_pairs(&line_samples(&line, ppm, 1.7, 0.3, rng))
+    sample_words(&line_samples(&line, ppm, 1.7, 0.6, rng))
 }
 
 #[test]
@@ -120,7 +120,7 @@ fn healthy_stream_then_dark_line() {
         );
         // Dark: the line keeps its last level.
         let last = *pairs.last().unwrap() >> 1 & 1;
-        let dark = vec![last | last << 1; 60];
+        let dark = vec![last * 0b1111; 60];
         let out = p.run(&dark);
         let first = out
             .iter()

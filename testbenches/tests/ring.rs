@@ -73,20 +73,15 @@ fn ring8_interrupts_agree_with_the_model() {
     passes("ring8_irq.toml");
 }
 
-/// Known failure (issue 4 is open on it): on rings of 32 and more nodes edge
-/// jitter adds up along the chain until a node misreads a bit (see
-/// docs/benchmarks.md, "Long rings do not pass yet"). Run with
-/// `cargo test --release -p merkur-testbenches --test ring -- --ignored`.
+/// 32 hops at clocks from −1000 to +934 ppm: edge errors must not add up
+/// along the chain (the retimed forwarder, docs/architecture.md).
 #[test]
-#[ignore = "fails: jitter accumulation on long rings (docs/benchmarks.md)"]
 fn ring32_agrees_with_the_model() {
     passes("ring32.toml");
 }
 
-/// As `ring32_agrees_with_the_model`, the BRIEF §6 size; the first build of
-/// its Verilator model takes about 4.5 minutes on 2 cores.
+/// The BRIEF §6 size: 100 nodes, 100 slots of 16 bit, ±1000 ppm.
 #[test]
-#[ignore = "fails: jitter accumulation on long rings (docs/benchmarks.md)"]
 fn ring100_agrees_with_the_model() {
     passes("ring100.toml");
 }

@@ -10,7 +10,7 @@ use merkur_model::line::{nrzi_encode, push_group, Word, CODE_I};
 use merkur_model::ring::{Frame, Header, HeaderRx, Mode, Slot};
 use merkur_rtl::{monitor::Monitor, slave::Slave, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, tst_code, PacketReader, Seen};
-use merkur_testbenches::{ddr_pairs, line_samples, verilator::Model, Rng};
+use merkur_testbenches::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};
 
 const SLOTS: usize = 4;
 const ADDRESS: u64 = 2;
@@ -83,18 +83,18 @@ fn wrap_reintegrate_and_failsafe() {
         segment(&mut pi_code, *pi, c as u8, &mut rng);
         segment(&mut si_code, *si, c as u8, &mut rng);
     }
-    let pi = ddr_pairs(&line_samples(
+    let pi = sample_words(&line_samples(
         &nrzi_encode(&pi_code, &mut 0),
         400.0,
         1.3,
-        0.2,
+        0.4,
         &mut rng,
     ));
-    let si = ddr_pairs(&line_samples(
+    let si = sample_words(&line_samples(
         &nrzi_encode(&si_code, &mut 0),
         -300.0,
         0.6,
-        0.2,
+        0.4,
         &mut rng,
     ));
     let n = pi.len().min(si.len());
@@ -146,10 +146,10 @@ fn wrap_reintegrate_and_failsafe() {
         if fs_at.is_none() && s.get(ofs) == 1 {
             fs_at = Some(t / 2);
         }
-        mpo.set(psmp, s.get(opo));
+        mpo.set(psmp, pair_to_samples(s.get(opo)));
         mpo.tick(pclk);
         rpo.sample(&mpo);
-        mso.set(ssmp, s.get(oso));
+        mso.set(ssmp, pair_to_samples(s.get(oso)));
         mso.tick(sclk);
         rso.sample(&mso);
     }

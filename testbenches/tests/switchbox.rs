@@ -35,8 +35,8 @@ fn table1_exhaustively() {
     let cases = [Mode::N, Mode::Wu, Mode::Wd].map(|m| (m.code() as u64, m));
     for (code, md) in cases.into_iter().chain([(3, Mode::N)]) {
         let (t_in, t_out, t_bsr, t_bss) = table1(md);
-        for v in 0..256u64 {
-            let (vpi, vsi, vout, vbss) = (v & 3, v >> 2 & 3, v >> 4 & 3, v >> 6 & 3);
+        for v in 0..4096u64 {
+            let (vpi, vsi, vout, vbss) = (v & 15, v >> 4 & 15, v >> 8 & 3, v >> 10 & 3);
             m.set(mode, code);
             m.set(pi, vpi);
             m.set(si, vsi);

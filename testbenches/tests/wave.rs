@@ -14,7 +14,7 @@ fn merkur_wave_writes_an_fst() {
         let mut m = Model::build(&block_verilog(Monitor::new(false))).unwrap();
         let (clk, s) = (m.port("clock"), m.port("i_samples"));
         for t in 0..2000u64 {
-            m.set(s, if (t / 2) % 2 == 0 { 3 } else { 0 });
+            m.set(s, if (t / 2) % 2 == 0 { 0b1111 } else { 0 });
             m.tick(clk);
         }
     }

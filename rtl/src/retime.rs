@@ -1,0 +1,311 @@
+//! # retime — elastic output buffer: sends recovered bits on the node's own clock (protocol §9)
+//!
+//! Purpose: a node retransmits at the rate of the stream it receives, but a
+//! transmitter that repeats every edge where its receiver saw it also repeats
+//! that receiver's sampling error, and on a long ring those errors add up
+//! hop by hop until an edge moves by half a bit. This block breaks the chain:
+//! bits go into a small buffer at the receive timing and come out on the
+//! node's own clock, one bit per 4 half clocks (the DDR output's two halves
+//! per clock); to follow the stream's rate it makes one bit 3 or 5 half
+//! clocks long now and then. So an edge on the line is off by at most one
+//! output half clock (2 receiver samples) from where the node's clock puts
+//! it, whatever the input did, and a downstream receiver
+//! ([`crate::cdr`]: 8k − 3 … 8k + 4 samples for a k-bit interval) has a
+//! sample of margin on every link.
+//!
+//! **Phase measure.** At each write the block computes how long, in receive
+//! samples (quarter clocks), the new bit will wait until it is sent:
+//! `lag = 2·rem + 8·cnt − i_phase`, with `rem` the half clocks to the next
+//! send at the start of the next clock, `cnt` the bits buffered and
+//! `i_phase` the sample of its clock the bit was taken from. The target is
+//! [`TARGET`] = 20 (2.5 bit times; a bit sent in the clock after its write
+//! has a lag of 5–8). After [`VOTES`] writes in a row with
+//! `lag` more than [`BAND`] above (below) the target, the next bit is sent
+//! 3 (5) half clocks long, at most once per [`GAP`] bits, so that no edge
+//! interval on the line carries two corrections. That follows a clock
+//! difference of up to 1/(4·GAP) (31 000 ppm); a node's offset needs
+//! ±2000 ppm.
+//!
+//! **Start and errors.** Idle until two bits have arrived; the second starts
+//! the send timing at the target wait. A send with an empty buffer
+//! (underflow: the input stopped) or a write into a full one (overflow)
+//! pulses `o_slip`, empties the buffer and holds the line; the next bit
+//! starts again. A live stream within ±2000 ppm never slips.
+//!
+//! | port | dir | width | clock domain | meaning |
+//! |---|---|---|---|---|
+//! | `clock` | in | 1 | — | core clock, 2× line rate |
+//! | `i_valid` | in | 1 | clock | a bit to send (at most one per clock) |
+//! | `i_level` | in | 1 | clock | its line level (NRZI already applied) |
+//! | `i_phase` | in | 2 | clock | its receive sample within the clock ([`crate::cdr`]'s `o_phase`) |
+//! | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
+//! | `o_slip` | out | 1 | clock | pulse: underflow or overflow, the buffer restarted |
+//!
+//! Latency: a bit is sent [`TARGET`] receive samples (2.5 bit times,
+//! ± [`BAND`]) after the clock of its receive sample, plus the output
+//! register.
+//!
+//! ```text
+//! i_valid   _/‾\___/‾\___/‾\___/‾\___/‾\___     (receive timing: jitters)
+//! rem         3 1 3 1 3 1 3 1 3 1 3 1 3 1        (half clocks to the next send)
+//! o_line    ==X=======X=======X=======X====      (own clock: 4 half clocks per bit)
+//! correction: one bit of 3 or 5 half clocks, at most every GAP bits
+//! ```
+
+use rust_hdl::prelude::*;
+
+/// Target wait of a bit in the buffer, receive samples (quarter clocks).
+pub const TARGET: u64 = 20;
+/// Dead band around [`TARGET`], receive samples.
+pub const BAND: u64 = 4;
+/// Writes in a row outside the band before a correction.
+pub const VOTES: u64 = 4;
+/// Sent bits between two corrections, at least.
+pub const GAP: u64 = 8;
+/// Bits the buffer holds.
+pub const DEPTH: u64 = 8;
+
+/// Elastic output buffer with its own bit timing.
+#[derive(LogicBlock)]
+pub struct Retime {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// A bit to send.
+    pub i_valid: Signal<In, Bit>,
+    /// Its line level.
+    pub i_level: Signal<In, Bit>,
+    /// Its receive sample within the clock.
+    pub i_phase: Signal<In, Bits<2>>,
+    /// Output line (DDR pair).
+    pub o_line: Signal<Out, Bits<2>>,
+    /// The buffer under- or overflowed.
+    pub o_slip: Signal<Out, Bit>,
+    hi_limit: Constant<Bits<8>>,
+    lo_limit: Constant<Bits<8>>,
+    votes: Constant<Bits<3>>,
+    gap_min: Constant<Bits<4>>,
+    depth: Constant<Bits<4>>,
+    sr: DFF<Bits<8>>,
+    cnt: DFF<Bits<4>>,
+    rem: DFF<Bits<3>>,
+    lvl: DFF<Bit>,
+    run: DFF<Bit>,
+    hi: DFF<Bits<3>>,
+    lo: DFF<Bits<3>>,
+    gap: DFF<Bits<4>>,
+    pair: DFF<Bits<2>>,
+    slip: DFF<Bit>,
+    send0: Signal<Local, Bit>,
+    send1: Signal<Local, Bit>,
+    take: Signal<Local, Bit>,
+    oldest: Signal<Local, Bit>,
+    new_lvl: Signal<Local, Bit>,
+    len: Signal<Local, Bits<3>>,
+    cnt_next: Signal<Local, Bits<4>>,
+    rem_next: Signal<Local, Bits<3>>,
+    lag: Signal<Local, Bits<8>>,
+}
+
+impl Default for Retime {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            i_valid: Default::default(),
+            i_level: Default::default(),
+            i_phase: Default::default(),
+            o_line: Default::default(),
+            o_slip: Default::default(),
+            hi_limit: Constant::new((TARGET + BAND).to_bits()),
+            lo_limit: Constant::new((TARGET - BAND).to_bits()),
+            votes: Constant::new(VOTES.to_bits()),
+            gap_min: Constant::new(GAP.to_bits()),
+            depth: Constant::new(DEPTH.to_bits()),
+            sr: Default::default(),
+            cnt: Default::default(),
+            rem: Default::default(),
+            lvl: Default::default(),
+            run: Default::default(),
+            hi: Default::default(),
+            lo: Default::default(),
+            gap: Default::default(),
+            pair: Default::default(),
+            slip: Default::default(),
+            send0: Default::default(),
+            send1: Default::default(),
+            take: Default::default(),
+            oldest: Default::default(),
+            new_lvl: Default::default(),
+            len: Default::default(),
+            cnt_next: Default::default(),
+            rem_next: Default::default(),
+            lag: Default::default(),
+        }
+    }
+}
+
+impl Logic for Retime {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, sr, cnt, rem, lvl, run, hi, lo, gap, pair, slip);
+        // A bit boundary in the first or the second half of this clock.
+        self.send0.next = self.run.q.val() & (self.rem.q.val() == 0);
+        self.send1.next = self.run.q.val() & (self.rem.q.val() == 1);
+        self.take.next = (self.send0.val() | self.send1.val()) & (self.cnt.q.val() != 0);
+        // The oldest buffered bit: written cnt − 1 writes ago.
+        self.oldest.next = self.sr.q.val().get_bit(0);
+        if self.cnt.q.val() == 2 {
+            self.oldest.next = self.sr.q.val().get_bit(1);
+        }
+        if self.cnt.q.val() == 3 {
+            self.oldest.next = self.sr.q.val().get_bit(2);
+        }
+        if self.cnt.q.val() == 4 {
+            self.oldest.next = self.sr.q.val().get_bit(3);
+        }
+        if self.cnt.q.val() == 5 {
+            self.oldest.next = self.sr.q.val().get_bit(4);
+        }
+        if self.cnt.q.val() == 6 {
+            self.oldest.next = self.sr.q.val().get_bit(5);
+        }
+        if self.cnt.q.val() == 7 {
+            self.oldest.next = self.sr.q.val().get_bit(6);
+        }
+        if self.cnt.q.val() == 8 {
+            self.oldest.next = self.sr.q.val().get_bit(7);
+        }
+        self.new_lvl.next = self.lvl.q.val();
+        if self.take.val() {
+            self.new_lvl.next = self.oldest.val();
+        }
+        // The DDR pair: the new level from the half where its bit starts.
+        self.pair.d.next = 0.into();
+        if self.lvl.q.val() {
+            self.pair.d.next = 3.into();
+        }
+        if self.send0.val() & self.new_lvl.val() {
+            self.pair.d.next = 3.into();
+        }
+        if self.send0.val() & !self.new_lvl.val() {
+            self.pair.d.next = 0.into();
+        }
+        if self.send1.val() & (self.new_lvl.val() != self.lvl.q.val()) {
+            // Bit 0 keeps the old level, bit 1 shows the new one.
+            self.pair.d.next = 1.into();
+            if self.new_lvl.val() {
+                self.pair.d.next = 2.into();
+            }
+        }
+        self.lvl.d.next = self.new_lvl.val();
+        // The length of the bit starting now: 4 half clocks, or a correction.
+        self.len.next = 4.into();
+        if self.gap.q.val() >= self.gap_min.val() {
+            if self.hi.q.val() >= self.votes.val() {
+                self.len.next = 3.into();
+            }
+            if self.lo.q.val() >= self.votes.val() {
+                self.len.next = 5.into();
+            }
+        }
+        self.rem_next.next = self.rem.q.val() - 2;
+        if self.send0.val() | self.send1.val() {
+            if self.gap.q.val() != 15 {
+                self.gap.d.next = self.gap.q.val() + 1;
+            }
+            if self.len.val() != 4 {
+                self.gap.d.next = 0.into();
+                self.hi.d.next = 0.into();
+                self.lo.d.next = 0.into();
+            }
+        }
+        if self.send0.val() {
+            self.rem_next.next = self.len.val() - 2;
+        }
+        if self.send1.val() {
+            self.rem_next.next = self.len.val() - 1;
+        }
+        // Buffer: shift in at the write, count what is unsent.
+        self.cnt_next.next = self.cnt.q.val();
+        if self.take.val() {
+            self.cnt_next.next = self.cnt.q.val() - 1;
+        }
+        if self.i_valid.val() {
+            self.sr.d.next = self.sr.q.val() << 1;
+            if self.i_level.val() {
+                self.sr.d.next = (self.sr.q.val() << 1) | 1;
+            }
+            self.cnt_next.next = self.cnt_next.val() + 1;
+        }
+        // The wait of the bit written now, in receive samples.
+        // (Bit by bit: rust-hdl widens only through 32-bit literals.)
+        self.lag.next = 0.into();
+        if self.rem_next.val().get_bit(0) {
+            self.lag.next = self.lag.val() + 2;
+        }
+        if self.rem_next.val().get_bit(1) {
+            self.lag.next = self.lag.val() + 4;
+        }
+        if self.rem_next.val().get_bit(2) {
+            self.lag.next = self.lag.val() + 8;
+        }
+        if self.cnt_next.val().get_bit(0) {
+            self.lag.next = self.lag.val() + 8;
+        }
+        if self.cnt_next.val().get_bit(1) {
+            self.lag.next = self.lag.val() + 16;
+        }
+        if self.cnt_next.val().get_bit(2) {
+            self.lag.next = self.lag.val() + 32;
+        }
+        if self.cnt_next.val().get_bit(3) {
+            self.lag.next = self.lag.val() + 64;
+        }
+        if self.i_phase.val().get_bit(0) {
+            self.lag.next = self.lag.val() - 1;
+        }
+        if self.i_phase.val().get_bit(1) {
+            self.lag.next = self.lag.val() - 2;
+        }
+        if self.run.q.val() & self.i_valid.val() {
+            if self.lag.val() > self.hi_limit.val() {
+                if self.hi.q.val() != 7 {
+                    self.hi.d.next = self.hi.q.val() + 1;
+                }
+                self.lo.d.next = 0.into();
+            } else if self.lag.val() < self.lo_limit.val() {
+                if self.lo.q.val() != 7 {
+                    self.lo.d.next = self.lo.q.val() + 1;
+                }
+                self.hi.d.next = 0.into();
+            } else {
+                self.hi.d.next = 0.into();
+                self.lo.d.next = 0.into();
+            }
+        }
+        self.rem.d.next = self.rem_next.val();
+        self.cnt.d.next = self.cnt_next.val();
+        self.slip.d.next = false;
+        if !self.run.q.val() & self.i_valid.val() & (self.cnt_next.val() == 2) {
+            // The second bit: start the send timing at the target wait
+            // (2·rem + 16 − i_phase = 20).
+            self.run.d.next = true;
+            self.rem.d.next = 2.into();
+            if self.i_phase.val().get_bit(1) {
+                self.rem.d.next = 3.into();
+            }
+            self.hi.d.next = 0.into();
+            self.lo.d.next = 0.into();
+            self.gap.d.next = 0.into();
+        }
+        if ((self.send0.val() | self.send1.val()) & (self.cnt.q.val() == 0))
+            | (self.cnt_next.val() > self.depth.val())
+        {
+            // Underflow or overflow: start again with the next bit.
+            self.slip.d.next = true;
+            self.run.d.next = false;
+            self.cnt.d.next = 0.into();
+        }
+        self.o_line.next = self.pair.q.val();
+        self.o_slip.next = self.slip.q.val();
+    }
+}

@@ -1,0 +1,117 @@
+//! Retime buffer in Verilator, behind a CDR: a stream whose bit clock is off
+//! by up to ±2000 ppm from the node's, with edge jitter, comes out on the
+//! node's own clock bit for bit (no slip), every edge interval of k bits
+//! lasts 4k ± 1 output half clocks (at most one correction per interval),
+//! and the number of corrections is what the clock offset needs (the buffer
+//! follows the rate, it does not hunt).
+
+use merkur_model::line::{nrzi_encode, push_group, DATA_CODES};
+use merkur_rtl::{cdr::Cdr, retime::Retime, verilog::block_verilog};
+use merkur_testbenches::{line_samples, sample_words, verilator::Model, Rng, SAMPLES_PER_BIT};
+
+/// What one run showed.
+struct Out {
+    /// Output level per half clock.
+    halves: Vec<u8>,
+    /// `o_slip` pulses.
+    slips: usize,
+}
+
+fn run(cdr: &mut Model, rt: &mut Model, samples: &[u8]) -> Out {
+    let (cclk, cs, cv, cb, cp) = (
+        cdr.port("clock"),
+        cdr.port("i_samples"),
+        cdr.port("o_valid"),
+        cdr.port("o_bit"),
+        cdr.port("o_phase"),
+    );
+    let (rclk, rv, rl, rp, rline, rslip) = (
+        rt.port("clock"),
+        rt.port("i_valid"),
+        rt.port("i_level"),
+        rt.port("i_phase"),
+        rt.port("o_line"),
+        rt.port("o_slip"),
+    );
+    let mut out = Out {
+        halves: vec![],
+        slips: 0,
+    };
+    for word in sample_words(samples) {
+        cdr.set(cs, word);
+        cdr.tick(cclk);
+        rt.set(rv, cdr.get(cv));
+        rt.set(rl, cdr.get(cb));
+        rt.set(rp, cdr.get(cp));
+        rt.tick(rclk);
+        let pair = rt.get(rline);
+        out.halves.push((pair & 1) as u8);
+        out.halves.push((pair >> 1) as u8);
+        out.slips += rt.get(rslip) as usize;
+    }
+    out
+}
+
+/// Checks one stream; returns the number of corrections seen.
+fn check(seed: u64, delta_ppm: f64, nbits: usize, jitter: f64) -> Result<usize, String> {
+    let mut rng = Rng::new(seed ^ (delta_ppm as i64 as u64));
+    let mut code = vec![];
+    while code.len() < nbits {
+        push_group(&mut code, DATA_CODES[rng.below(16) as usize]);
+    }
+    let levels = nrzi_encode(&code, &mut 0);
+    let phase = rng.below(800) as f64 / 100.0;
+    let samples = line_samples(&levels, delta_ppm, phase, jitter, &mut rng);
+    let mut cdr = Model::build(&block_verilog(Cdr::default())).unwrap();
+    let mut rt = Model::build(&block_verilog(Retime::default())).unwrap();
+    let out = run(&mut cdr, &mut rt, &samples);
+    let ctx = format!("seed {seed} (MERKUR_SEED), {delta_ppm} ppm, jitter ±{jitter}");
+    if out.slips != 0 {
+        return Err(format!("{ctx}: {} slips", out.slips));
+    }
+    // Runs of equal level between edges, from the first edge to the last.
+    let h = &out.halves;
+    let edges: Vec<usize> = (1..h.len()).filter(|&i| h[i] != h[i - 1]).collect();
+    let mut bits = vec![];
+    let mut corrections = 0;
+    for w in edges.windows(2) {
+        let len = w[1] - w[0];
+        let k = (len + 2) / 4;
+        if k == 0 || len.abs_diff(4 * k) > 1 {
+            return Err(format!(
+                "{ctx}: an edge interval of {len} half clocks at half clock {} (not 4k ± 1)",
+                w[0]
+            ));
+        }
+        corrections += (len != 4 * k) as usize;
+        bits.extend(std::iter::repeat(h[w[0]]).take(k));
+    }
+    // The bits out are the bits in (after the first few).
+    let skip = 16;
+    let off = (0..64)
+        .find(|&off| (0..256).all(|i| bits.get(skip + i) == levels.get(off + i)))
+        .ok_or(format!("{ctx}: output never matches the input"))?;
+    let n = (bits.len() - skip).min(levels.len() - off);
+    if n + 64 < nbits {
+        return Err(format!("{ctx}: only {n} of {nbits} bits out"));
+    }
+    if let Some(i) = (0..n).find(|&i| bits[skip + i] != levels[off + i]) {
+        return Err(format!("{ctx}: bit {} out wrong (slip)", off + i));
+    }
+    Ok(corrections)
+}
+
+#[test]
+fn follows_2000_ppm_on_its_own_clock_without_slips() {
+    let seed = Rng::seed(0x7e7);
+    let nbits = 200_000;
+    for delta_ppm in [-2000.0, -500.0, 0.0, 1000.0, 2000.0] {
+        let corrections = check(seed, delta_ppm, nbits, 1.0).unwrap_or_else(|e| panic!("{e}"));
+        // Each correction moves the output by 2 receive samples.
+        let need = nbits as f64 * SAMPLES_PER_BIT as f64 * delta_ppm.abs() * 1e-6 / 2.0;
+        assert!(
+            (corrections as f64) >= need * 0.9 - 2.0 && (corrections as f64) <= need * 1.1 + 8.0,
+            "seed {seed}: {delta_ppm} ppm: {corrections} corrections, the offset needs {need:.0}"
+        );
+    }
+}
