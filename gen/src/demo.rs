@@ -1,6 +1,7 @@
 //! `merkur demo`: the reference model on a built-in 8-node ring with one line
 //! break, explained cycle by cycle and compared with the same ring without
-//! the fault. (A later issue adds the RTL simulation beside it.)
+//! the fault; then the same ring as RTL in Verilator (every node on its own
+//! clock), compared word for word with the model, with a waveform.
 
 use merkur_model::config::{self, Config};
 use merkur_model::ring::{self, CycleRecord, EventKind};
@@ -35,7 +36,7 @@ fn reason_name(r: u8) -> String {
     }
 }
 
-pub fn run() -> Result<(), String> {
+pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
     let cfg = config::load("tb-data/demo_8_break.toml", SCENARIO).map_err(|e| e.to_string())?;
     let mut clean = cfg.clone();
     clean.faults.clear();
@@ -114,5 +115,64 @@ pub fn run() -> Result<(), String> {
         ),
         None => println!("result: memories differ from the fault-free ring at the end; {fs} nodes in failsafe."),
     }
-    Ok(())
+    match wave {
+        Some(w) => rtl(&cfg, &faulty, w),
+        None => Ok(()),
+    }
+}
+
+/// The same scenario as RTL in Verilator, against the model's records.
+fn rtl(cfg: &Config, recs: &[CycleRecord], wave: &std::path::Path) -> Result<(), String> {
+    use merkur_testbenches::ring_sim::{self, Options};
+    if wave.extension().map_or(true, |e| e != "fst") {
+        return Err(format!(
+            "error: --wave {}: the waveform is written as FST; name the file *.fst",
+            wave.display()
+        ));
+    }
+    if let Some(dir) = wave.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| {
+            format!(
+                "error: --wave {}: cannot create {}: {e}",
+                wave.display(),
+                dir.display()
+            )
+        })?;
+    }
+    let ppm = |f: fn(f64, f64) -> f64| cfg.nodes.iter().map(|n| n.ppm).fold(0.0, f);
+    println!(
+        "\nthe same ring as RTL (Verilator; every node on its own clock, {:+.0} .. {:+.0} ppm):",
+        ppm(f64::min),
+        ppm(f64::max)
+    );
+    eprintln!("building the Verilator model (cached by the hash of its Verilog) ...");
+    let opts = Options {
+        wave: Some(wave.to_path_buf()),
+        seed: 1,
+        progress: true,
+        record: false,
+    };
+    let rep = ring_sim::run(cfg, recs, &opts).map_err(|e| format!("error: RTL run: {e}"))?;
+    let g = wave.with_extension("gtkw");
+    crate::write_atomic(&g, &ring_sim::gtkw(cfg, wave))?;
+    println!(
+        "RTL: {} words on {} fibres over {} cycles compared with the model; cycle time measured {:.1} bit times = {:.2} us at {} Mbit/s",
+        rep.words,
+        2 * cfg.nodes.len(),
+        rep.cycles,
+        rep.period_bits,
+        rep.period_bits / cfg.line_rate_mbps,
+        cfg.line_rate_mbps
+    );
+    println!("waveform: {} (gtkwave {})", wave.display(), g.display());
+    match rep.mismatches.first() {
+        None => {
+            println!("RTL agrees with the model: every word, header and node state.");
+            Ok(())
+        }
+        Some(m) => Err(format!(
+            "RTL differs from the model: {} mismatches; first: {m}",
+            rep.mismatches.len()
+        )),
+    }
 }

@@ -59,9 +59,26 @@ enum Cmd {
         /// Seed of the nodes' clock phases.
         #[arg(long, default_value_t = 1)]
         seed: u64,
+        /// How many mismatches to list on a failure.
+        #[arg(long, value_name = "N", default_value_t = 10)]
+        show: usize,
     },
-    /// Run the model on the built-in 8-node ring with one line break and explain what happens.
-    Demo,
+    /// Run the built-in 8-node ring with one line break through the model (explained cycle
+    /// by cycle) and through the RTL in Verilator, and show that they agree.
+    Demo {
+        /// Where the RTL run's FST waveform goes (a GTKWave save file beside it, FILE.gtkw).
+        #[arg(long, value_name = "FILE", default_value_os_t = default_demo_wave())]
+        wave: PathBuf,
+        /// The model only (no Verilator run).
+        #[arg(long)]
+        model_only: bool,
+    },
+}
+
+fn default_demo_wave() -> PathBuf {
+    std::env::temp_dir()
+        .join("merkur-demo")
+        .join("demo_8_break.fst")
 }
 
 pub(crate) fn read_scenario(path: &Path) -> Result<(String, config::Config), String> {
@@ -195,12 +212,13 @@ fn main() -> ExitCode {
             scenario,
             wave,
             seed,
-        } => match sim::sim(scenario, wave.as_deref(), *seed) {
+            show,
+        } => match sim::sim(scenario, wave.as_deref(), *seed, *show) {
             Ok(true) => Ok(()),
             Ok(false) => return ExitCode::from(1),
             Err(e) => Err(e),
         },
-        Cmd::Demo => demo::run(),
+        Cmd::Demo { wave, model_only } => demo::run((!*model_only).then_some(wave.as_path())),
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,

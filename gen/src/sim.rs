@@ -35,7 +35,7 @@ pub fn verilog(path: &Path, dir: &Path) -> Result<(), String> {
 }
 
 /// Runs the ring in Verilator; `Ok(false)` when it differs from the model.
-pub fn sim(path: &Path, wave: Option<&Path>, seed: u64) -> Result<bool, String> {
+pub fn sim(path: &Path, wave: Option<&Path>, seed: u64, show: usize) -> Result<bool, String> {
     let (_, cfg) = read_scenario(path)?;
     if let Some(why) = ring_sim::unsupported(&cfg) {
         return Err(format!(
@@ -111,7 +111,7 @@ pub fn sim(path: &Path, wave: Option<&Path>, seed: u64) -> Result<bool, String> 
         }
         Some(m) => {
             println!("FAIL: {} mismatches; first: {m}", rep.mismatches.len());
-            for m in rep.mismatches.iter().skip(1).take(9) {
+            for m in rep.mismatches.iter().skip(1).take(show.saturating_sub(1)) {
                 println!("      {m}");
             }
             Ok(false)

@@ -200,6 +200,12 @@ fn demo_explains_the_line_break() {
         ),
         "{out}"
     );
+    // The same ring through the RTL, with its waveform.
+    assert!(
+        out.contains("RTL agrees with the model: every word, header and node state."),
+        "{out}"
+    );
+    assert!(out.contains("cycle time measured 300.0 bit times"), "{out}");
 }
 
 #[test]

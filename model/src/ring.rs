@@ -373,6 +373,9 @@ pub struct CycleRecord {
     pub produced: Vec<u16>,
     /// Processing path this cycle (node indices, SM first).
     pub path: Vec<usize>,
+    /// Fibres on which the SEC went ahead of the DATA frame that the fibre
+    /// shows (a ring wrapped in this cycle), with the SEC's `ok`.
+    pub sec_with_data: Vec<(usize, bool)>,
 }
 
 fn splitmix(mut x: u64) -> u64 {
@@ -613,7 +616,9 @@ impl Ring {
 
         // 3. The data frame.
         let sm = self.cfg.sm;
-        let sm_bsr_data;
+        // The SEC decision is made at the cycle's start, from the RWC of
+        // the last frame that returned before it (protocol §8).
+        let sec_rwc = self.returned_rwc;
         {
             let hdr = Header {
                 fs: self.nodes[sm].failsafe,
@@ -633,7 +638,6 @@ impl Ring {
             }
             self.emitted = frame.words.clone();
             path.push(sm);
-            let mut bsr_data = false;
             let mut fib = self.out_fibre(sm, table1(self.nodes[sm].mode).1);
             let mut returned = None;
             for _hop in 0..4 * n + 4 {
@@ -663,9 +667,6 @@ impl Ring {
                     }
                     fib = self.out_fibre(k, out);
                 } else if port == bsr && self.nodes[k].mode == Mode::N {
-                    if k == sm {
-                        bsr_data = true;
-                    }
                     if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
                         truncate(&mut frame, s);
                     }
@@ -674,17 +675,17 @@ impl Ring {
                     break;
                 }
             }
-            sm_bsr_data = bsr_data;
             got_frame[sm] = self.sm_return(returned, &mut ev);
         }
 
         // 4. The secondary test frame.
-        if self.nodes[sm].mode == Mode::N && !sm_bsr_data {
+        let mut sec_with_data = vec![];
+        if self.nodes[sm].mode == Mode::N && !sec_rwc {
             let mut ok = true;
             let mut lost = false;
             let mut back = false;
             let mut fib = self.out_fibre(sm, Port::So);
-            for _ in 0..n + 1 {
+            for _ in 0..2 * n + 2 {
                 if !self.lit(fib) || cut_fibre.iter().any(|(f, _)| *f == fib) {
                     break;
                 }
@@ -701,19 +702,31 @@ impl Ring {
                     break;
                 }
                 let fi = self.fibre_index(fib);
-                fibres[fi] = Carry::Sec { ok };
+                // A fibre that also carries the (wrapped) DATA frame shows
+                // the frame; the SEC that went ahead of it is listed apart.
+                if matches!(fibres[fi], Carry::Data(_)) {
+                    sec_with_data.push((fi, ok));
+                } else {
+                    fibres[fi] = Carry::Sec { ok };
+                }
                 let (k, port) = self.dst(fib);
-                if !self.nodes[k].up || port != Port::Si || self.nodes[k].mode != Mode::N {
+                if !self.nodes[k].up || cut_node.iter().any(|(nd, _)| *nd == k) {
                     break;
                 }
-                if cut_node.iter().any(|(nd, _)| *nd == k) {
+                let (inp, out, bsr, bss) = table1(self.nodes[k].mode);
+                if port == bsr && self.nodes[k].mode == Mode::N {
+                    if k == sm {
+                        back = true;
+                        break;
+                    }
+                    fib = self.out_fibre(k, bss);
+                } else if port == inp && k != sm {
+                    // A forwarder passes a SEC on its INPUT unchanged (a
+                    // wrapped node's INPUT is a secondary fibre, §5).
+                    fib = self.out_fibre(k, out);
+                } else {
                     break;
                 }
-                if k == sm {
-                    back = true;
-                    break;
-                }
-                fib = self.out_fibre(k, Port::So);
             }
             if !(back && ok) {
                 self.nodes[sm].serr += 1;
@@ -789,6 +802,7 @@ impl Ring {
             events: ev,
             produced,
             path,
+            sec_with_data,
         }
     }
 

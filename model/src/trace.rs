@@ -114,6 +114,19 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
             }
             o.push('\n');
         }
+        if !r.sec_with_data.is_empty() {
+            // The SEC that went ahead of a (wrapped) DATA frame on a fibre.
+            o.push_str(" sec-ahead");
+            for &(i, ok) in &r.sec_with_data {
+                let name = if i < n {
+                    format!("P{i}")
+                } else {
+                    format!("S{}", i - n)
+                };
+                let _ = write!(o, " {name}{}", if ok { "" } else { "!" });
+            }
+            o.push('\n');
+        }
         for (k, st) in r.nodes.iter().enumerate() {
             let _ = write!(
                 o,

@@ -17,8 +17,12 @@
 //! every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
 //! fail. At most one bit is recovered per clock.
 //!
-//! Loss of signal: no transition for [`LOS_SAMPLES`] = 128 samples (16 bit
-//! times) raises `o_los` until the next transition.
+//! A dead line: after [`MUTE_SAMPLES`] (5 bit times) without a transition no
+//! more bits are taken (legal streams toggle at least every 4 bit times, and
+//! a single line-bit error stretches that to 5), so a break passes on a
+//! cut-short packet, not a run of zeros. Loss of signal:
+//! no transition for [`LOS_SAMPLES`] = 128 samples (16 bit times) raises
+//! `o_los` until the next transition.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -47,6 +51,10 @@ use rust_hdl::prelude::*;
 pub const SAMPLES_PER_BIT: usize = 8;
 /// Line samples per core clock (the width of `i_samples`).
 pub const SAMPLES_PER_CLOCK: usize = 4;
+/// Samples without a transition after which no more bits are taken (5 bit
+/// times: legal streams toggle at least every 4), so a line that went dark
+/// does not deliver a run of zeros.
+pub const MUTE_SAMPLES: u64 = 5 * SAMPLES_PER_BIT as u64;
 /// Samples without a transition before `o_los` rises (16 bit times).
 pub const LOS_SAMPLES: u64 = 16 * SAMPLES_PER_BIT as u64;
 
@@ -67,6 +75,7 @@ pub struct Cdr {
     /// bit's arrival time to a quarter clock, for a retimer's phase measure.
     pub o_phase: Signal<Out, Bits<2>>,
     quiet_last: Constant<Bits<6>>,
+    mute_after: Constant<Bits<6>>,
     last: DFF<Bit>,
     phase: DFF<Bits<2>>,
     count: DFF<Bits<3>>,
@@ -80,6 +89,7 @@ pub struct Cdr {
     c3: Signal<Local, Bits<3>>,
     prior: Signal<Local, Bits<4>>,
     edges: Signal<Local, Bits<4>>,
+    live: Signal<Local, Bit>,
 }
 
 impl Default for Cdr {
@@ -93,6 +103,7 @@ impl Default for Cdr {
             o_phase: Default::default(),
             // LOS_SAMPLES / SAMPLES_PER_CLOCK clocks, counted from 0.
             quiet_last: Constant::new((LOS_SAMPLES / SAMPLES_PER_CLOCK as u64 - 1).to_bits()),
+            mute_after: Constant::new((MUTE_SAMPLES / SAMPLES_PER_CLOCK as u64).to_bits()),
             last: Default::default(),
             phase: Default::default(),
             count: Default::default(),
@@ -106,6 +117,7 @@ impl Default for Cdr {
             c3: Default::default(),
             prior: Default::default(),
             edges: Default::default(),
+            live: Default::default(),
         }
     }
 }
@@ -143,22 +155,25 @@ impl Logic for Cdr {
         // Take the sample at count 4 (the bit's centre); takes are at least
         // 5 samples apart, so at most one per clock.
         self.rx_valid.d.next = false;
-        if self.c0.val() == 4 {
+        // (A line without an edge for 5 bit times is dead, not a run of
+        // zeros: legal streams toggle at least every 4; no bits from it.)
+        self.live.next = self.quiet.q.val() < self.mute_after.val();
+        if (self.c0.val() == 4) & self.live.val() {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(0);
             self.phase.d.next = 0.into();
         }
-        if self.c1.val() == 4 {
+        if (self.c1.val() == 4) & self.live.val() {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(1);
             self.phase.d.next = 1.into();
         }
-        if self.c2.val() == 4 {
+        if (self.c2.val() == 4) & self.live.val() {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(2);
             self.phase.d.next = 2.into();
         }
-        if self.c3.val() == 4 {
+        if (self.c3.val() == 4) & self.live.val() {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(3);
             self.phase.d.next = 3.into();

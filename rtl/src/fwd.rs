@@ -16,7 +16,11 @@
 //!   (delta parity), so a word that arrived bad leaves bad.
 //!
 //! Everything else, including J K, idles, bad groups and packets after a
-//! rejected header (`i_hdr_bad`), passes unchanged. The Alive flip-flop
+//! rejected header (`i_hdr_bad`), passes unchanged; three idle groups in a
+//! row end a packet that was cut short upstream (as [`crate::rx_word`]), and
+//! so does a dead INPUT (no bit for 6 bit times), which also refills the
+//! group delay with idles. A frame whose header was processed toggles the
+//! Alive flip-flop even when it was cut short. The Alive flip-flop
 //! toggles after each processed DATA packet. Alarms: `i_alarm_req` with
 //! `i_alarm_reason` is sent in the home slot if the previous cycle's home word
 //! was data (alternation); `o_alarm_sent` pulses when it goes out.
@@ -30,7 +34,7 @@
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_bvalid`, `i_level`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits (from [`crate::port_rx`]) |
-//! | `i_hdr_bad` | in | 1 | clock | header rejected: pass the rest unchanged |
+//! | `i_hdr_bad` | in | 1 | clock | header rejected, or not a DATA packet: pass the rest unchanged |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | slot count − 1, home slot |
 //! | `i_actuator` | in | 1 | static | 1 actuator, 0 sensor |
 //! | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
@@ -121,6 +125,8 @@ pub struct Fwd {
     window: DFF<Bits<10>>,
     delay: DFF<Bits<5>>,
     inpkt: DFF<Bit>,
+    idles: DFF<Bits<2>>,
+    quiet: DFF<Bits<4>>,
     bitc: DFF<Bits<3>>,
     gidx: DFF<Bits<3>>,
     wcount: DFF<Bits<2>>,
@@ -135,7 +141,6 @@ pub struct Fwd {
     f_alarm: DFF<Bit>,
     toggle: DFF<Bit>,
     prev_alarm: DFF<Bit>,
-    out_level: DFF<Bit>,
     out: Retime,
     sent: DFF<Bit>,
     sent_reason: DFF<Bits<4>>,
@@ -163,7 +168,6 @@ pub struct Fwd {
     pre_b2: Signal<Local, Bit>,
     pre_b1: Signal<Local, Bit>,
     out_bit: Signal<Local, Bit>,
-    new_level: Signal<Local, Bit>,
 }
 
 impl Default for Fwd {
@@ -206,6 +210,8 @@ impl Fwd {
             window: Default::default(),
             delay: Default::default(),
             inpkt: Default::default(),
+            idles: Default::default(),
+            quiet: Default::default(),
             bitc: Default::default(),
             gidx: Default::default(),
             wcount: Default::default(),
@@ -220,7 +226,6 @@ impl Fwd {
             f_alarm: Default::default(),
             toggle: Default::default(),
             prev_alarm: Default::default(),
-            out_level: Default::default(),
             out: Default::default(),
             sent: Default::default(),
             sent_reason: Default::default(),
@@ -248,7 +253,6 @@ impl Fwd {
             pre_b2: Default::default(),
             pre_b1: Default::default(),
             out_bit: Default::default(),
-            new_level: Default::default(),
         }
     }
 }
@@ -263,6 +267,8 @@ impl Logic for Fwd {
             window,
             delay,
             inpkt,
+            idles,
+            quiet,
             bitc,
             gidx,
             wcount,
@@ -277,7 +283,6 @@ impl Logic for Fwd {
             f_alarm,
             toggle,
             prev_alarm,
-            out_level,
             sent,
             sent_reason,
             done,
@@ -622,7 +627,6 @@ impl Logic for Fwd {
 
         // Shift the bit through the one-group delay line.
         self.out_bit.next = self.delay.q.val().get_bit(4);
-        self.new_level.next = self.out_level.q.val() ^ self.out_bit.val();
         self.sent.d.next = false;
         self.done.d.next = false;
         self.regen.d.next = false;
@@ -633,11 +637,25 @@ impl Logic for Fwd {
             if self.code.val() {
                 self.delay.d.next = (self.delay.q.val() << 1) | 1;
             }
-            self.out_level.d.next = self.new_level.val();
             if self.inpkt.q.val() {
-                if self.bitc.q.val() == 4 {
+                if (self.bitc.q.val() == 4) & (self.group.val() == 31) & (self.idles.q.val() == 2) {
+                    // The third idle group in a row: the packet was cut
+                    // short upstream (as rx_word); pass the rest unchanged.
+                    // A frame whose header was processed still counts
+                    // (the Alive flip-flop toggles, as at its end).
+                    self.inpkt.d.next = false;
+                    self.idles.d.next = 0.into();
+                    if (self.wcount.q.val() == 2) & !self.dead.q.val() {
+                        self.done.d.next = true;
+                        self.toggle.d.next = !self.toggle.q.val();
+                    }
+                } else if self.bitc.q.val() == 4 {
                     // A group is complete.
                     self.bitc.d.next = 0.into();
+                    self.idles.d.next = 0.into();
+                    if self.group.val() == 31 {
+                        self.idles.d.next = self.idles.q.val() + 1;
+                    }
                     if self.recode.val() {
                         self.delay.d.next = self.code_out.val();
                     }
@@ -701,13 +719,32 @@ impl Logic for Fwd {
                 self.wcount.d.next = 0.into();
                 self.slot.d.next = 0.into();
                 self.dead.d.next = false;
+                self.idles.d.next = 0.into();
             }
         }
         // Out on the node's own timing.
         self.out.clock.next = self.clock.val();
         self.out.i_valid.next = self.i_bvalid.val();
-        self.out.i_level.next = self.new_level.val();
+        self.out.i_code.next = self.out_bit.val();
         self.out.i_phase.next = self.i_phase.val();
+        // INPUT went dead (no bit for 6 bit times: the CDR takes none from
+        // a line without edges): the packet is over, and the group delay
+        // line is refilled with idles, so that no stale bits go out when
+        // bits come again (from another port after a wrap).
+        if self.i_bvalid.val() {
+            self.quiet.d.next = 0.into();
+        } else if self.quiet.q.val() != 15 {
+            self.quiet.d.next = self.quiet.q.val() + 1;
+        }
+        if self.quiet.q.val() == 12 {
+            self.delay.d.next = 31.into();
+            self.inpkt.d.next = false;
+            self.idles.d.next = 0.into();
+            if self.inpkt.q.val() & (self.wcount.q.val() == 2) & !self.dead.q.val() {
+                self.done.d.next = true;
+                self.toggle.d.next = !self.toggle.q.val();
+            }
+        }
         if self.i_hdr_bad.val() {
             self.dead.d.next = true;
         }

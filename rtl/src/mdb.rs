@@ -10,7 +10,8 @@
 //!   2 ALIVE_EN, 3 LOCAL; kept as 4 bits), in two copies (ring send side,
 //!   ring receive side + host), writable only before the ring runs;
 //! - **Alive check** per slot with ALIVE_EN (state memory: valid, last
-//!   Alive, lost), counted in `aerr`;
+//!   Alive, lost, and the CYC that wrote it, so a slot missing in the
+//!   previous cycle is not compared), counted in `aerr`;
 //! - **interrupts**: every good alarm word in a slot other than the home slot
 //!   pulses `o_irq1` / `o_irq2` / `o_irq_fs` by its reason.
 //!
@@ -147,7 +148,7 @@ pub struct Mdb {
     db: RAM<Bits<16>, 12>,
     cfg_tx: RAM<Bits<4>, 12>,
     cfg_rx: RAM<Bits<4>, 12>,
-    ast: RAM<Bits<3>, 12>,
+    ast: RAM<Bits<6>, 12>,
     // Send-side look-up.
     tx_served: DFF<Bit>,
     tx_data: DFF<Bits<16>>,
@@ -164,6 +165,7 @@ pub struct Mdb {
     irq_fs: DFF<Bit>,
     aerr: DFF<Bits<16>>,
     last_irq: DFF<Bits<16>>,
+    cur_cyc: DFF<Bits<3>>,
     // Host port.
     running: DFF<Bit>,
     err_cfg: DFF<Bit>,
@@ -175,8 +177,11 @@ pub struct Mdb {
     stat: Signal<Local, Bits<16>>,
     irq_word: Signal<Local, Bits<16>>,
     s2_cfg: Signal<Local, Bits<4>>,
-    s2_ast: Signal<Local, Bits<3>>,
-    new_ast: Signal<Local, Bits<3>>,
+    s2_ast: Signal<Local, Bits<6>>,
+    new_ast: Signal<Local, Bits<6>>,
+    prev_cyc: Signal<Local, Bits<3>>,
+    ast_valid: Signal<Local, Bit>,
+    ast_word: Signal<Local, Bits<6>>,
     s2_write: Signal<Local, Bit>,
     host_req: Signal<Local, Bit>,
     adr_data: Signal<Local, Bit>,
@@ -189,7 +194,7 @@ impl Logic for Mdb {
         dff_setup!(
             self, clock, tx_served, tx_data, tx_cfg, s2, s2_slot, s2_ok, s2_alive, s2_alarm,
             s2_data, irq1, irq2, irq_fs, aerr, last_irq, running, err_cfg, err_wr, hstate, ack,
-            rdat, perm
+            rdat, perm, cur_cyc
         );
         self.db.read_clock.next = self.clock.val();
         self.db.write_clock.next = self.clock.val();
@@ -236,11 +241,19 @@ impl Logic for Mdb {
         self.irq2.d.next = false;
         self.irq_fs.d.next = false;
         self.s2_write.next = false;
-        // Alive state: bit 0 valid, bit 1 last Alive, bit 2 lost.
+        // Alive state: bit 0 valid, bit 1 last Alive, bit 2 lost, bits 5:3
+        // the CYC of the frame that wrote it: a state not written in the
+        // previous cycle (the slot was missing, or no frame came) has
+        // nothing to compare with (protocol §7).
+        if self.i_wvalid.val() & (self.i_kind.val() == 1) & self.i_ok.val() {
+            self.cur_cyc.d.next = self.i_data.val().get_bits::<3>(12);
+        }
+        self.prev_cyc.next = self.cur_cyc.q.val() - 1;
+        self.ast_valid.next = self.s2_ast.val().get_bit(0)
+            & (self.s2_ast.val().get_bits::<3>(3) == self.prev_cyc.val());
         self.new_ast.next = self.s2_ast.val() & 4;
         self.ast.write_enable.next = false;
         self.ast.write_address.next = self.s2_slot.q.val();
-        self.ast.write_data.next = self.new_ast.val();
         if self.s2.q.val() & !self.i_fs.val() {
             self.ast.write_enable.next = true;
             if self.s2_ok.q.val() {
@@ -301,7 +314,7 @@ impl Logic for Mdb {
                     if self.s2_alive.q.val() {
                         self.new_ast.next = (self.s2_ast.val() & 4) | 3;
                     }
-                    if self.s2_ast.val().get_bit(0) {
+                    if self.ast_valid.val() {
                         if self.s2_ast.val().get_bit(1) == self.s2_alive.q.val() {
                             self.new_ast.next = self.new_ast.val() | 4;
                             if self.aerr.q.val() != 0xffff {
@@ -311,10 +324,21 @@ impl Logic for Mdb {
                             self.new_ast.next = self.new_ast.val() & 3;
                         }
                     }
-                    self.ast.write_data.next = self.new_ast.val();
                 }
             }
         }
+        // The state as written, with this cycle's CYC.
+        self.ast_word.next = self.new_ast.val() & 7;
+        if self.cur_cyc.q.val().get_bit(0) {
+            self.ast_word.next = self.ast_word.val() | 8;
+        }
+        if self.cur_cyc.q.val().get_bit(1) {
+            self.ast_word.next = self.ast_word.val() | 16;
+        }
+        if self.cur_cyc.q.val().get_bit(2) {
+            self.ast_word.next = self.ast_word.val() | 32;
+        }
+        self.ast.write_data.next = self.ast_word.val();
         self.db.write_enable.next = self.s2_write.val();
         self.db.write_address.next = self.s2_slot.q.val();
         self.db.write_data.next = self.s2_data.q.val();

@@ -4,8 +4,8 @@
 //! transmitter that repeats every edge where its receiver saw it also repeats
 //! that receiver's sampling error, and on a long ring those errors add up
 //! hop by hop until an edge moves by half a bit. This block breaks the chain:
-//! bits go into a small buffer at the receive timing and come out on the
-//! node's own clock, one bit per 4 half clocks (the DDR output's two halves
+//! code bits (1: the line toggles) go into a small buffer at the receive
+//! timing and come out on the node's own clock, one bit per 4 half clocks (the DDR output's two halves
 //! per clock); to follow the stream's rate it makes one bit 3 or 5 half
 //! clocks long now and then. So an edge on the line is off by at most one
 //! output half clock (2 receiver samples) from where the node's clock puts
@@ -26,17 +26,20 @@
 //! difference of up to 1/(4·GAP) (31 000 ppm); a node's offset needs
 //! ±2000 ppm.
 //!
-//! **Start and errors.** Idle until two bits have arrived; the second starts
-//! the send timing at the target wait. A send with an empty buffer
+//! **Start and errors.** Until two bits have arrived it sends idles (NRZI
+//! ones: the line toggles every bit) on its own bit grid; from the second
+//! bit on it sends the buffer, from the grid's next boundary. A send with an empty buffer
 //! (underflow: the input stopped) or a write into a full one (overflow)
-//! pulses `o_slip`, empties the buffer and holds the line; the next bit
-//! starts again. A live stream within ±2000 ppm never slips.
+//! pulses `o_slip`, empties the buffer and goes back to idles, so a
+//! downstream receiver sees a live line (an idle run ends a truncated
+//! packet, [`crate::rx_word`]); the next bits start again. A live stream
+//! within ±2000 ppm never slips.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_valid` | in | 1 | clock | a bit to send (at most one per clock) |
-//! | `i_level` | in | 1 | clock | its line level (NRZI already applied) |
+//! | `i_code` | in | 1 | clock | its code bit: 1 = the line toggles (NRZI) |
 //! | `i_phase` | in | 2 | clock | its receive sample within the clock ([`crate::cdr`]'s `o_phase`) |
 //! | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
 //! | `o_slip` | out | 1 | clock | pulse: underflow or overflow, the buffer restarted |
@@ -72,8 +75,8 @@ pub struct Retime {
     pub clock: Signal<In, Clock>,
     /// A bit to send.
     pub i_valid: Signal<In, Bit>,
-    /// Its line level.
-    pub i_level: Signal<In, Bit>,
+    /// Its code bit (1: the line toggles at the bit's start).
+    pub i_code: Signal<In, Bit>,
     /// Its receive sample within the clock.
     pub i_phase: Signal<In, Bits<2>>,
     /// Output line (DDR pair).
@@ -111,7 +114,7 @@ impl Default for Retime {
         Self {
             clock: Default::default(),
             i_valid: Default::default(),
-            i_level: Default::default(),
+            i_code: Default::default(),
             i_phase: Default::default(),
             o_line: Default::default(),
             o_slip: Default::default(),
@@ -147,10 +150,12 @@ impl Logic for Retime {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, sr, cnt, rem, lvl, run, hi, lo, gap, pair, slip);
-        // A bit boundary in the first or the second half of this clock.
-        self.send0.next = self.run.q.val() & (self.rem.q.val() == 0);
-        self.send1.next = self.run.q.val() & (self.rem.q.val() == 1);
-        self.take.next = (self.send0.val() | self.send1.val()) & (self.cnt.q.val() != 0);
+        // A bit boundary in the first or the second half of this clock (the
+        // bit grid runs always; without buffered bits it sends idles).
+        self.send0.next = self.rem.q.val() == 0;
+        self.send1.next = self.rem.q.val() == 1;
+        self.take.next =
+            (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() != 0);
         // The oldest buffered bit: written cnt − 1 writes ago.
         self.oldest.next = self.sr.q.val().get_bit(0);
         if self.cnt.q.val() == 2 {
@@ -175,8 +180,14 @@ impl Logic for Retime {
             self.oldest.next = self.sr.q.val().get_bit(7);
         }
         self.new_lvl.next = self.lvl.q.val();
+        if self.send0.val() | self.send1.val() {
+            // An idle bit (NRZI 1: the level toggles).
+            self.new_lvl.next = !self.lvl.q.val();
+        }
         if self.take.val() {
-            self.new_lvl.next = self.oldest.val();
+            // Code bits, not levels, are buffered, so the line stays
+            // continuous when sending switches between idles and data.
+            self.new_lvl.next = self.lvl.q.val() ^ self.oldest.val();
         }
         // The DDR pair: the new level from the half where its bit starts.
         self.pair.d.next = 0.into();
@@ -199,7 +210,7 @@ impl Logic for Retime {
         self.lvl.d.next = self.new_lvl.val();
         // The length of the bit starting now: 4 half clocks, or a correction.
         self.len.next = 4.into();
-        if self.gap.q.val() >= self.gap_min.val() {
+        if self.run.q.val() & (self.gap.q.val() >= self.gap_min.val()) {
             if self.hi.q.val() >= self.votes.val() {
                 self.len.next = 3.into();
             }
@@ -231,7 +242,7 @@ impl Logic for Retime {
         }
         if self.i_valid.val() {
             self.sr.d.next = self.sr.q.val() << 1;
-            if self.i_level.val() {
+            if self.i_code.val() {
                 self.sr.d.next = (self.sr.q.val() << 1) | 1;
             }
             self.cnt_next.next = self.cnt_next.val() + 1;
@@ -286,18 +297,15 @@ impl Logic for Retime {
         self.cnt.d.next = self.cnt_next.val();
         self.slip.d.next = false;
         if !self.run.q.val() & self.i_valid.val() & (self.cnt_next.val() == 2) {
-            // The second bit: start the send timing at the target wait
-            // (2·rem + 16 − i_phase = 20).
+            // The second bit: send from the next bit boundary on (the grid
+            // keeps its phase, so the line has no short bit; the wait is
+            // 13–22, and the band pulls it to the target).
             self.run.d.next = true;
-            self.rem.d.next = 2.into();
-            if self.i_phase.val().get_bit(1) {
-                self.rem.d.next = 3.into();
-            }
             self.hi.d.next = 0.into();
             self.lo.d.next = 0.into();
             self.gap.d.next = 0.into();
         }
-        if ((self.send0.val() | self.send1.val()) & (self.cnt.q.val() == 0))
+        if ((self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0))
             | (self.cnt_next.val() > self.depth.val())
         {
             // Underflow or overflow: start again with the next bit.

@@ -41,7 +41,7 @@
 //!
 //! | port | dir | width | meaning |
 //! |---|---|---|---|
-//! | `clk` | in | 1 | simulation tick (8 per nominal bit time) |
+//! | `clk` | in | 1 | simulation tick (4 per nominal bit time) |
 //! | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | configuration write (table below) |
 //! | `i_rd_sel`, `i_rd_field` | in | 16, 8 | status read address |
 //! | `o_rd` | out | 32 | status read data (combinational) |
@@ -56,7 +56,7 @@
 //! request is raised at once (`now`) or when the node's pacing monitor (its
 //! PI fibre; the special master's PO) sees the end of the DATA frame with
 //! the request's CYC, i.e. before the next frame; a sensor sees the value
-//! of the frame after the last that ended on its PI fibre.
+//! of the frame whose H1 its PI fibre showed last (its slot comes after).
 
 use crate::verilog::block_verilog;
 use merkur_model::scenario::Kind;
@@ -140,6 +140,9 @@ pub mod status {
     /// last DATA H1; between the fibres into and out of a node, the node's
     /// forwarding delay (the monitors are identical and on one clock).
     pub const TH1: u32 = 23;
+    /// Fibre: `{in frame, CYC[2:0] of the last DATA H1, 16 zero bits, last
+    /// slot decoded since (FFF: none yet)}`, for the driver's fault timing.
+    pub const AT: u32 = 24;
 }
 
 /// Module name of a node kind in the ring Verilog.
@@ -249,6 +252,20 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         // (P(k-1)); for the special master, which builds frames, its PO.
         let pi_f = (k + n - 1) % n;
         let up = if kind == Kind::SpecialMaster { k } else { pi_f };
+        let (in_cyc, in_new) = if kind == Kind::SpecialMaster {
+            (format!("hdr_cyc_{up}"), format!("hdr_new_{up}"))
+        } else {
+            (
+                format!(
+                    "(mode_{k} == 2'd1) ? hdr_cyc_{si} : hdr_cyc_{up}",
+                    si = n + k
+                ),
+                format!(
+                    "(mode_{k} == 2'd1) ? hdr_new_{si} : hdr_new_{up}",
+                    si = n + k
+                ),
+            )
+        };
         let (h_inc, h_phase, h_addr, h_req) = (
             hit(k, cfg::INC),
             hit(k, cfg::PHASE),
@@ -259,6 +276,9 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             &mut v,
             &format!(
                 "    // ---- node {k}: {kind} ----\n\
+                 \x20   wire [1:0] mode_{k};\n\
+                 \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
+                 \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
                  \x20   reg [31:0] inc_{k} = 32'h40000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0, fired2_{k} = 1'b0;\n\
                  \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n        fired2_{k} <= fired_{k};\n\
                  \x20       if ({h_inc}) inc_{k} <= i_cfg_val;\n\
@@ -269,17 +289,17 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20   always @(posedge clk) begin\n\
                  \x20       if ({h_addr}) addr_{k} <= i_cfg_val[11:0];\n\
                  \x20       if (reqhold_{k} != 4'd0) reqhold_{k} <= reqhold_{k} - 4'd1;\n\
-                 \x20       if (req_{k}[6] && (req_{k}[7] || (hdr_new_{up} && hdr_cyc_{up} == req_{k}[5:3]))) begin\n\
+                 \x20       if (req_{k}[6] && (req_{k}[7] || (innew_{k} && incyc_{k} == req_{k}[5:3]))) begin\n\
                  \x20           reqbits_{k} <= req_{k}[2:0];\n            reqhold_{k} <= 4'd8;\n            req_{k}[6] <= 1'b0;\n        end\n\
                  \x20       if ({h_req}) req_{k} <= i_cfg_val[7:0];\n    end\n\
                  \x20   wire [2:0] ureq_{k} = (reqhold_{k} != 4'd0) ? reqbits_{k} : 3'd0;\n\
-                 \x20   wire [1:0] po_{k}, so_{k};\n    wire [1:0] mode_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
+                 \x20   wire [1:0] po_{k}, so_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
                 kind = kind.name()
             ),
         );
         if kind == Kind::Sensor {
-            // Four values, chosen by the CYC after the last frame that
-            // ended on the sensor's PI fibre.
+            // Four values, chosen by the CYC of the frame whose H1 the
+            // sensor's PI fibre showed last.
             let h = hit(k, cfg::SENSOR);
             let regs: Vec<String> = (0..4)
                 .map(|i| format!("        if ({h} && i_cfg_val[17:16] == 2'd{i}) sens_{k}_{i} <= i_cfg_val[15:0];"))
@@ -288,7 +308,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 &mut v,
                 &format!(
                     "    reg [15:0] sens_{k}_0 = 16'd0, sens_{k}_1 = 16'd0, sens_{k}_2 = 16'd0, sens_{k}_3 = 16'd0;\n\
-                     \x20   reg [1:0] sel_{k} = 2'd0;\n    always @(posedge clk) begin\n{}\n        if (hdr_new_{up}) sel_{k} <= hdr_cyc_{up}[1:0] + 2'd1;\n    end\n\
+                     \x20   always @(posedge clk) begin\n{}\n    end\n    wire [1:0] sel_{k} = incyc_{k}[1:0];\n\
                      \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;",
                     regs.join("\n")
                 ),
@@ -377,17 +397,17 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
                  \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
                  \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_void(m_void_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
-                 \x20   reg [22:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 23'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
+                 \x20   reg [22:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 23'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
                  \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
                  \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
-                 \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
+                 \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            lslot_{f} <= 12'hfff;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
                  \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
                  \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
-                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n\
+                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
                  \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{hdr_cyc_{f}, mstat_{f}, m_alarm_{f}, m_alive_{f}, m_data_{f}}};\n\
                  \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
                 c_brk = cfg::BREAK,
@@ -414,7 +434,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         (status::IRQFS, "{16'd0, nirqfs_K}"),
         (status::RUN, "{31'd0, run_K}"),
     ];
-    let fibre_fields: [(u32, &str); 8] = [
+    let fibre_fields: [(u32, &str); 9] = [
+        (status::AT, "{infr_K, hdr_cyc_K, 16'd0, lslot_K}"),
         (status::TH1, "th1_K"),
         (status::FRAME, "{28'd0, infr_K, hdr_cyc_K}"),
         (status::H1, "{16'd0, h1_K}"),

@@ -5,7 +5,10 @@
 //! decodes them (4B/5B), checks both odd parities, counts words into header
 //! words and slots, checks the header (type, slot count), compares the slot
 //! number with the node's address (DIP switches → `i_address`) and tells the
-//! framer when the packet ends.
+//! framer when the packet ends: after its last word, or at the third idle
+//! group in a row (a packet cut short upstream: the word in progress and the
+//! rest are not received; one line-bit error touches at most two groups, so
+//! it costs a word, never the packet).
 //!
 //! Parameters (refused at build when invalid): `ext` — extended-alarm words
 //! of 6 groups instead of 5 (protocol §6).
@@ -96,6 +99,7 @@ pub struct RxWord {
     last_group: Constant<Bits<3>>,
     // Word being assembled.
     gcount: DFF<Bits<3>>,
+    idles: DFF<Bits<2>>,
     data: DFF<Bits<16>>,
     reason: DFF<Bits<4>>,
     alarm0: DFF<Bit>,
@@ -174,6 +178,7 @@ impl RxWord {
             ),
             last_group: Constant::new(if ext { 5u64 } else { 4u64 }.to_bits()),
             gcount: Default::default(),
+            idles: Default::default(),
             data: Default::default(),
             reason: Default::default(),
             alarm0: Default::default(),
@@ -215,7 +220,7 @@ impl Logic for RxWord {
         dff_setup!(
             self, clock, gcount, data, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
             active, wcount, slot, ptype, end_r, wvalid_r, kind_r, slot_r, data_r, alive_r, alarm_r,
-            reason_r, ok_r, void_r, own_r, hdr_bad_r
+            reason_r, ok_r, void_r, own_r, hdr_bad_r, idles
         );
         self.dec.i_code.next = self.i_group.val();
         self.nib.next = self.dec.o_nibble.val();
@@ -257,7 +262,23 @@ impl Logic for RxWord {
             self.par_b.d.next = false;
             self.all_data.d.next = true;
             self.all_s.d.next = true;
+            self.idles.d.next = 0.into();
+        } else if self.i_gvalid.val()
+            & self.active.q.val()
+            & (self.i_group.val() == 31)
+            & (self.idles.q.val() == 2)
+        {
+            // The third idle group in a row: the packet was cut short (a
+            // break upstream); the word in progress and the rest are not
+            // received. (One line-bit error touches at most two groups.)
+            self.end_r.d.next = true;
+            self.active.d.next = false;
+            self.idles.d.next = 0.into();
         } else if self.i_gvalid.val() & self.active.q.val() {
+            self.idles.d.next = 0.into();
+            if self.i_group.val() == 31 {
+                self.idles.d.next = self.idles.q.val() + 1;
+            }
             self.data.d.next = self.w_data.val();
             if self.gcount.q.val() == 0 {
                 self.alarm0.d.next = self.nib.val().get_bit(3);

@@ -4,7 +4,8 @@
 //! supervised receive port on INPUT and on BSR (clock recovery, framer,
 //! words, stream controllers), the cut-through forwarder (slot shift
 //! register) from INPUT to OUTPUT, the secondary pass-through (BSR → BSS in
-//! mode N) or the link-test generator (BSS in modes WU, WD), the mode and
+//! mode N, retimed; a TST from a neighbour is cut after its H0, protocol §9)
+//! or the link-test generator (BSS in modes WU, WD), the mode and
 //! failsafe logic (protocol §10, §12), the interrupt/alarm queue (§11), the
 //! actuator's output register and the error counters. A [`crate::master`]
 //! is this block with `i_master` = 1 and a database beside it.
@@ -126,6 +127,8 @@ pub struct Slave {
     fwd: Fwd,
     tst: TstTx,
     rep: Retime,
+    rep_last: DFF<Bit>,
+    rep_cut: DFF<Bit>,
     mode: DFF<Bits<2>>,
     failsafe: DFF<Bit>,
     rw: DFF<Bit>,
@@ -142,8 +145,6 @@ pub struct Slave {
     act_data: DFF<Bits<16>>,
     perr: DFF<Bits<16>>,
     ferr: DFF<Bits<16>>,
-    idle_level: DFF<Bit>,
-    idle_half: DFF<Bit>,
     reason: Signal<Local, Bits<4>>,
     wrapped: Signal<Local, Bit>,
     out_pair: Signal<Local, Bits<2>>,
@@ -201,6 +202,8 @@ impl Slave {
             fwd: Fwd::new(),
             tst: Default::default(),
             rep: Default::default(),
+            rep_last: Default::default(),
+            rep_cut: Default::default(),
             mode: Default::default(),
             failsafe: Default::default(),
             rw: Default::default(),
@@ -217,8 +220,6 @@ impl Slave {
             act_data: Default::default(),
             perr: Default::default(),
             ferr: Default::default(),
-            idle_level: Default::default(),
-            idle_half: Default::default(),
             reason: Default::default(),
             wrapped: Default::default(),
             out_pair: Default::default(),
@@ -233,7 +234,7 @@ impl Logic for Slave {
     fn update(&mut self) {
         dff_setup!(
             self, clock, mode, failsafe, rw, armed, quiet, grace, settle, ack_time, seen_ack,
-            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, idle_level, idle_half
+            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_last, rep_cut
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -260,7 +261,13 @@ impl Logic for Slave {
         self.fwd.i_bvalid.next = self.rx_in.o_bvalid.val();
         self.fwd.i_level.next = self.rx_in.o_level.val();
         self.fwd.i_phase.next = self.rx_in.o_phase.val();
-        self.fwd.i_hdr_bad.next = self.rx_in.o_hdr_bad.val();
+        // A rejected header, or a SEC/TST packet on INPUT (a wrapped node's
+        // INPUT is a secondary fibre): passed on unchanged, not processed.
+        self.fwd.i_hdr_bad.next = self.rx_in.o_hdr_bad.val()
+            | (self.rx_in.o_wvalid.val()
+                & (self.rx_in.o_kind.val() == 0)
+                & self.rx_in.o_ok.val()
+                & (self.rx_in.o_ptype.val() != 0));
         self.fwd.i_slots_m1.next = self.i_slots_m1.val();
         self.fwd.i_address.next = self.i_address.val();
         self.fwd.i_actuator.next = self.i_actuator.val();
@@ -443,25 +450,36 @@ impl Logic for Slave {
             }
         }
 
-        // OUTPUT: the forwarded stream; idles on the node's own timing while
-        // INPUT is dark, so a break stays a break of one link.
-        self.idle_half.d.next = !self.idle_half.q.val();
-        if self.idle_half.q.val() {
-            self.idle_level.d.next = !self.idle_level.q.val();
-        }
+        // OUTPUT: the forwarded stream; while INPUT is dark the retime
+        // buffer sends idles on the node's own timing, so a break stays a
+        // break of one link.
         self.out_pair.next = self.fwd.o_line.val();
-        if self.rx_in.o_los.val() {
-            self.out_pair.next = 0.into();
-            if self.idle_level.q.val() {
-                self.out_pair.next = 3.into();
-            }
-        }
         // BSS: in mode N the BSR stream repeated bit for bit; wrapped: TST.
         // (Retimed like OUTPUT, so the secondary ring's edges do not
         // wander either.)
         self.rep.clock.next = self.clock.val();
         self.rep.i_valid.next = self.rx_bsr.o_bvalid.val();
-        self.rep.i_level.next = self.rx_bsr.o_level.val();
+        // A TST on BSR is a link test between two neighbours, not for the
+        // next node: once its H0 shows TST the rest goes out as idles, so
+        // no complete TST (H1 = NOT H0) leaves this node; the cut ends
+        // with the packet (before the next J K arrives).
+        if !self.rx_bsr.o_inpkt.val() {
+            self.rep_cut.d.next = false;
+        }
+        if self.rx_bsr.o_wvalid.val()
+            & (self.rx_bsr.o_kind.val() == 0)
+            & self.rx_bsr.o_ok.val()
+            & (self.rx_bsr.o_ptype.val() == 2)
+        {
+            self.rep_cut.d.next = true;
+        }
+        self.rep.i_code.next = self.rx_bsr.o_level.val() ^ self.rep_last.q.val();
+        if self.rep_cut.q.val() {
+            self.rep.i_code.next = true;
+        }
+        if self.rx_bsr.o_bvalid.val() {
+            self.rep_last.d.next = self.rx_bsr.o_level.val();
+        }
         self.rep.i_phase.next = self.rx_bsr.o_phase.val();
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
         self.tst.i_address.next = self.i_address.val();

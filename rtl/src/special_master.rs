@@ -20,10 +20,15 @@
 //! configuration, Alive check, interrupts, Wishbone host port): frames start
 //! once the host has loaded the configuration and set the start bit.
 //!
+//! Secondary relay: a DATA frame arriving on SI (the ring is wrapped) is
+//! passed on to SO like in every node in mode N, held back [`RELAY_BITS`]
+//! bits until its H1 shows it is DATA (so the SM's own SEC coming back is
+//! not sent round again); a SEC is sent at the cycle's start only when the
+//! last returned frame had RWC = 0 (protocol §8).
+//!
 //! Limits (this version): the special master itself stays in mode N — it
-//! does not wrap, relay a wrapped frame on its secondary ports or
-//! reintegrate; a ring whose fault is next to the special master is not
-//! supported yet.
+//! does not wrap or reintegrate; a ring whose fault is next to the special
+//! master is not supported yet.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -57,7 +62,13 @@
 use crate::mdb::Mdb;
 use crate::pkt_tx::PktTx;
 use crate::port_rx::PortRx;
+use crate::retime::Retime;
 use rust_hdl::prelude::*;
+
+/// Bits the secondary relay holds a packet back while the header shows
+/// whether it is a DATA frame (relayed) or not (the SM's own SEC coming
+/// back, dropped): more than J K + H0 + H1 (60) plus decoding latency.
+pub const RELAY_BITS: u64 = 76;
 
 /// Special master.
 #[derive(LogicBlock)]
@@ -128,6 +139,14 @@ pub struct SpecialMaster {
     rx_bsr: PortRx,
     ftx: PktTx,
     stx: PktTx,
+    rep: Retime,
+    relay_len: Constant<Bits<7>>,
+    rdl: DFF<Bits<76>>,
+    rcd: DFF<Bits<7>>,
+    rcd_run: DFF<Bit>,
+    rdata: DFF<Bit>,
+    relay: DFF<Bit>,
+    rlast: DFF<Bit>,
     mdb: Mdb,
     store: RAM<Bits<22>, 12>,
     sent_alarm: RAM<Bit, 12>,
@@ -209,6 +228,14 @@ impl Default for SpecialMaster {
             rx_bsr: PortRx::new(false),
             ftx: Default::default(),
             stx: Default::default(),
+            rep: Default::default(),
+            relay_len: Constant::new((RELAY_BITS - 14).to_bits()),
+            rdl: Default::default(),
+            rcd: Default::default(),
+            rcd_run: Default::default(),
+            rdata: Default::default(),
+            relay: Default::default(),
+            rlast: Default::default(),
             mdb: Default::default(),
             store: Default::default(),
             sent_alarm: Default::default(),
@@ -260,7 +287,7 @@ impl Logic for SpecialMaster {
         dff_setup!(
             self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, ret_rwc, ret_cyc, hop,
             armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1, pend_i2,
-            prev_alarm
+            prev_alarm, rdl, rcd, rcd_run, rdata, relay, rlast
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -526,6 +553,51 @@ impl Logic for SpecialMaster {
         self.o_cycles.next = self.cycles.q.val();
         self.o_running.next = self.mdb.o_running.val();
         self.o_po.next = self.ftx.o_line.val();
+        // Secondary relay (protocol §8): a DATA frame on BSR (a wrapped
+        // ring) goes on to BSS, RELAY_BITS later; the decision is taken at
+        // its H1, before its J has left the delay line. A SEC start hands
+        // SO back to the SEC generator.
+        self.rep.clock.next = self.clock.val();
+        self.rep.i_valid.next = self.rx_bsr.o_bvalid.val();
+        self.rep.i_code.next = self.rdl.q.val().get_bit(75);
+        self.rep.i_phase.next = self.rx_bsr.o_phase.val();
+        if self.rx_bsr.o_bvalid.val() {
+            // The delay line holds code bits (level changes).
+            self.rdl.d.next = self.rdl.q.val() << 1;
+            if self.rx_bsr.o_level.val() != self.rlast.q.val() {
+                self.rdl.d.next = (self.rdl.q.val() << 1) | 1;
+            }
+            self.rlast.d.next = self.rx_bsr.o_level.val();
+            if self.rcd_run.q.val() {
+                self.rcd.d.next = self.rcd.q.val() - 1;
+                if self.rcd.q.val() == 1 {
+                    self.rcd_run.d.next = false;
+                    if self.rdata.q.val() {
+                        self.relay.d.next = true;
+                    }
+                }
+            }
+        }
+        if self.rx_bsr.o_wvalid.val()
+            & self.rx_bsr.o_ok.val()
+            & (self.rx_bsr.o_kind.val() == 1)
+            & (self.rx_bsr.o_ptype.val() == 0)
+        {
+            self.rdata.d.next = true;
+        }
+        if self.rx_bsr.o_start.val() {
+            // The J entered about 10 bits ago: it leaves the delay line
+            // RELAY_BITS − 10 bits from now; switch 4 bits before.
+            self.rcd.d.next = self.relay_len.val();
+            self.rcd_run.d.next = true;
+            self.rdata.d.next = false;
+        }
+        if self.stx.i_start.val() {
+            self.relay.d.next = false;
+        }
         self.o_so.next = self.stx.o_line.val();
+        if self.relay.q.val() {
+            self.o_so.next = self.rep.o_line.val();
+        }
     }
 }

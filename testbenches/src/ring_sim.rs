@@ -12,7 +12,7 @@
 use crate::verilator::Model;
 use crate::wishbone::Wishbone;
 use crate::Rng;
-use merkur_model::config::Config;
+use merkur_model::config::{Config, Fault, Fibre};
 use merkur_model::line::{Lead, Word};
 use merkur_model::ring::{Carry, CycleRecord, HeaderRx, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
@@ -116,10 +116,14 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
             "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
         );
     }
-    if let Some((c, f)) = cfg.faults.first() {
+    if let Some((i, (c, f))) = cfg
+        .faults
+        .iter()
+        .enumerate()
+        .find(|(_, (_, f))| !matches!(f, Fault::Break { .. } | Fault::Repair { .. }))
+    {
         return Some(format!(
-            "fault[0] (cycle {c}, {f}): fault injection in RTL simulation is issue 5 (it needs the special master's secondary relay); this scenario has {} fault(s)",
-            cfg.faults.len()
+            "fault[{i}] (cycle {c}, {f}): the RTL simulation injects breaks and repairs only (kills and bit flips are issue 5)"
         ));
     }
     if cfg.period >= 1 << 16 {
@@ -147,6 +151,9 @@ struct Ring {
     wb_node: usize,
     wb: Wishbone,
     ticks: u64,
+    /// Per fibre and capture buffer, the H1 entry last compared: a fibre
+    /// without frames keeps it, and CYC (3 bits) repeats every 8 cycles.
+    h1_seen: Vec<[u64; 4]>,
 }
 
 impl Ring {
@@ -254,6 +261,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         wb: Wishbone::new(&m),
         m,
         ticks: 0,
+        h1_seen: vec![[u64::MAX; 4]; 2 * n],
     };
     let t1 = Instant::now();
     let mut rng = Rng::new(opts.seed ^ cfg.seed);
@@ -334,6 +342,23 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let mut starts: Vec<u64> = vec![];
     let last_cycle = cfg.cycles - 1;
     let mut stopped_at: Option<u64> = None;
+    // (cycle, fibre index, slot, dark) of every break and repair.
+    let mut faults: Vec<(u32, usize, Option<usize>, bool)> = cfg
+        .faults
+        .iter()
+        .filter_map(|&(c, f)| {
+            let (fibre, slot, dark) = match f {
+                Fault::Break { fibre, slot } => (fibre, slot, true),
+                Fault::Repair { fibre, slot } => (fibre, slot, false),
+                _ => return None,
+            };
+            let fi = match fibre {
+                Fibre::P(k) => k,
+                Fibre::S(k) => n + k,
+            };
+            Some((c, fi, slot, dark))
+        })
+        .collect();
     let limit = (cfg.cycles as u64 + 4) * period * TICKS_PER_BIT as u64 * 2 + 100_000;
     let progress_every = (cfg.cycles / 20).max(1);
     loop {
@@ -413,12 +438,41 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             );
             reqs.remove(0);
         }
+        // Breaks and repairs: "before slot s of cycle c" when the fibre's
+        // monitor has decoded slot s − 1 of frame c; "before the delimiter"
+        // when frame c − 1 has ended on the fibre or, on a fibre without
+        // frames, when the special master has started frame c.
+        let mut i = 0;
+        while i < faults.len() {
+            let (c, fi, slot, dark) = faults[i];
+            let at = r.rd(fi, st::AT);
+            let (infr, cyc, last) = (at >> 31 == 1, (at >> 28 & 7) as u32, at & 0xfff);
+            let due = match slot {
+                None => c == 0 || (!infr && cyc == c.wrapping_sub(1) & 7) || sent > c,
+                Some(s) => {
+                    let want = if s == 0 { 0xfff } else { s as u64 - 1 };
+                    (infr && cyc == c & 7 && last == want) || sent > c + 1
+                }
+            };
+            if due {
+                r.cfg(fi, field::BREAK, dark as u64);
+                faults.remove(i);
+            } else {
+                i += 1;
+            }
+        }
         if sent == cfg.cycles && stopped_at.is_none() {
             stopped_at = Some(r.ticks);
         }
-        if stopped_at.is_some() && r.rd(into(cfg.sm), st::NEND) >= cfg.cycles as u64 {
-            // The last frame has come back to the special master.
-            break;
+        if stopped_at.is_some() {
+            // The last frame has come back to the special master (frames
+            // lost to a fault do not count).
+            let back = r.rd(into(cfg.sm), st::FRAME);
+            if r.rd(into(cfg.sm), st::NEND) >= cfg.cycles as u64
+                || (back >> 3 & 1 == 0 && back & 7 == (last_cycle & 7) as u64)
+            {
+                break;
+            }
         }
     }
     if opts.progress {
@@ -457,6 +511,9 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             if matches!(carry, Carry::Sec { ok: true }) {
                 nsec_exp[f] += 1;
             }
+        }
+        for &(f, ok) in &rec.sec_with_data {
+            nsec_exp[f] += ok as u64;
         }
     }
     for (f, &want) in nsec_exp.iter().enumerate() {
@@ -549,12 +606,17 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             mismatches: mism.len() - before,
         });
     }
+    // (Only nodes whose PI and PO fibres both carried the last frame.)
+    let last_cyc = (last_cycle & 7) as u64;
     let fwd_delay_bits = (0..n)
         .filter(|&k| k != cfg.sm)
-        .map(|k| {
-            let out = r.rd(k, st::TH1);
-            let inp = r.rd((k + n - 1) % n, st::TH1);
-            (out.wrapping_sub(inp) & 0xffff_ffff) as f64 / TICKS_PER_BIT as f64
+        .filter_map(|k| {
+            let pi = (k + n - 1) % n;
+            let both = [pi, k]
+                .iter()
+                .all(|&f| r.rd(f, st::FRAME) & 7 == last_cyc && r.rd(f, st::NEND) > 0);
+            let d = r.rd(k, st::TH1).wrapping_sub(r.rd(pi, st::TH1)) & 0xffff_ffff;
+            (both && d < 64 * TICKS_PER_BIT as u64).then(|| d as f64 / TICKS_PER_BIT as f64)
         })
         .collect();
     let period_bits = if starts.len() >= 2 {
@@ -608,6 +670,9 @@ fn compare_cycle(
                 };
                 for (i, want) in [h.h0(cfg.slots).data, h.h1().data].into_iter().enumerate() {
                     let e = hdr(r, i);
+                    if i == 1 {
+                        r.h1_seen[f][b] = e;
+                    }
                     *words += 1;
                     let ok = (e >> 20) & 7 == (c & 7) as u64 && (e & 0xffff) as u16 == want;
                     if !ok {
@@ -631,7 +696,8 @@ fn compare_cycle(
             _ => {
                 // No frame on this fibre in this cycle.
                 let e = hdr(r, 1);
-                if (e >> 20) & 7 == (c & 7) as u64 && (e >> 18) & 3 == 1 {
+                let stale = e == r.h1_seen[f][b];
+                if !stale && (e >> 20) & 7 == (c & 7) as u64 && (e >> 18) & 3 == 1 {
                     push(
                         "frame".into(),
                         "none".into(),

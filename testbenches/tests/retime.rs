@@ -28,7 +28,7 @@ fn run(cdr: &mut Model, rt: &mut Model, samples: &[u8]) -> Out {
     let (rclk, rv, rl, rp, rline, rslip) = (
         rt.port("clock"),
         rt.port("i_valid"),
-        rt.port("i_level"),
+        rt.port("i_code"),
         rt.port("i_phase"),
         rt.port("o_line"),
         rt.port("o_slip"),
@@ -37,11 +37,16 @@ fn run(cdr: &mut Model, rt: &mut Model, samples: &[u8]) -> Out {
         halves: vec![],
         slips: 0,
     };
+    let mut last = 0;
     for word in sample_words(samples) {
         cdr.set(cs, word);
         cdr.tick(cclk);
         rt.set(rv, cdr.get(cv));
-        rt.set(rl, cdr.get(cb));
+        // The code bit: did the recovered level change?
+        rt.set(rl, cdr.get(cb) ^ last);
+        if cdr.get(cv) == 1 {
+            last = cdr.get(cb);
+        }
         rt.set(rp, cdr.get(cp));
         rt.tick(rclk);
         let pair = rt.get(rline);
@@ -86,7 +91,10 @@ fn check(seed: u64, delta_ppm: f64, nbits: usize, jitter: f64) -> Result<usize, 
         corrections += (len != 4 * k) as usize;
         bits.extend(std::iter::repeat(h[w[0]]).take(k));
     }
-    // The bits out are the bits in (after the first few).
+    // The code bits out are the code bits in (after the first few): the
+    // buffer sends level changes, so its absolute level may be the other.
+    let code = |l: &[u8]| -> Vec<u8> { l.windows(2).map(|w| w[0] ^ w[1]).collect() };
+    let (bits, levels) = (code(&bits), code(&levels));
     let skip = 16;
     let off = (0..64)
         .find(|&off| (0..256).all(|i| bits.get(skip + i) == levels.get(off + i)))

@@ -80,6 +80,15 @@ fn ring32_agrees_with_the_model() {
     passes("ring32.toml");
 }
 
+/// `merkur demo`'s ring: the primary fibre P3 breaks in the middle of
+/// cycle 4's frame; nodes 4 and 3 wrap, the special master relays the
+/// wrapped frame on its secondary ports, every word, SEC and node state
+/// agrees with the model.
+#[test]
+fn demo_line_break_agrees_with_the_model() {
+    passes("demo_8_break.toml");
+}
+
 /// The BRIEF §6 size: 100 nodes, 100 slots of 16 bit, ±1000 ppm.
 #[test]
 fn ring100_agrees_with_the_model() {
