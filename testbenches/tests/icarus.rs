@@ -17,6 +17,42 @@ use merkur_testbenches::{line_samples, repo_root, sample_words, verilator::Model
 use std::process::Command;
 use std::time::Instant;
 
+/// Runs `tb.v` (which reads `stim.hex` and writes `out.txt`) with `top.v`
+/// under Icarus in a scratch folder; returns `out.txt` and how long `vvp`
+/// took.
+fn icarus(name: &str, top: &str, tb: &str, stim: &str) -> (String, std::time::Duration) {
+    let d = std::env::temp_dir().join(format!("merkur-icarus-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    std::fs::write(d.join("top.v"), top).unwrap();
+    std::fs::write(d.join("tb.v"), tb).unwrap();
+    std::fs::write(d.join("stim.hex"), stim).unwrap();
+    let st = Command::new("iverilog")
+        .args(["-o", "sim.vvp", "tb.v", "top.v"])
+        .current_dir(&d)
+        .output()
+        .expect("iverilog runs");
+    assert!(
+        st.status.success(),
+        "iverilog: {}",
+        String::from_utf8_lossy(&st.stderr)
+    );
+    let t0 = Instant::now();
+    let st = Command::new("vvp")
+        .args(["-n", "sim.vvp"])
+        .current_dir(&d)
+        .output()
+        .expect("vvp runs");
+    let took = t0.elapsed();
+    assert!(
+        st.status.success(),
+        "vvp: {}",
+        String::from_utf8_lossy(&st.stderr)
+    );
+    let got = std::fs::read_to_string(d.join("out.txt")).unwrap();
+    let _ = std::fs::remove_dir_all(&d);
+    (got, took)
+}
+
 #[test]
 fn ring8_under_icarus_matches_verilator() {
     let seed = Rng::seed(0x1cb);
@@ -72,35 +108,7 @@ fn ring8_under_icarus_matches_verilator() {
         fmt = vec!["%0h"; outs.len()].join(" "),
         outs = outs.join(", "),
     );
-    let d = std::env::temp_dir().join(format!("merkur-icarus-ring-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    std::fs::write(d.join("top.v"), &v).unwrap();
-    std::fs::write(d.join("tb.v"), tb).unwrap();
-    std::fs::write(d.join("stim.hex"), &rec.stim).unwrap();
-    let st = Command::new("iverilog")
-        .args(["-o", "sim.vvp", "tb.v", "top.v"])
-        .current_dir(&d)
-        .output()
-        .expect("iverilog runs");
-    assert!(
-        st.status.success(),
-        "iverilog: {}",
-        String::from_utf8_lossy(&st.stderr)
-    );
-    let t0 = Instant::now();
-    let st = Command::new("vvp")
-        .args(["-n", "sim.vvp"])
-        .current_dir(&d)
-        .output()
-        .expect("vvp runs");
-    let icarus = t0.elapsed();
-    assert!(
-        st.status.success(),
-        "vvp: {}",
-        String::from_utf8_lossy(&st.stderr)
-    );
-    let got = std::fs::read_to_string(d.join("out.txt")).unwrap();
-    let _ = std::fs::remove_dir_all(&d);
+    let (got, icarus_wall) = icarus("ring", &v, &tb, &rec.stim);
     if let Some(i) = got.lines().zip(rec.out.lines()).position(|(a, b)| a != b) {
         panic!(
             "seed {seed}: Icarus and Verilator differ first at tick {i} (of {n}): {:?} vs {:?}",
@@ -112,8 +120,8 @@ fn ring8_under_icarus_matches_verilator() {
     eprintln!(
         "ring8, {n} ticks: Verilator {:.3} s (whole driven run), Icarus {:.2} s (vvp), ratio {:.0}x",
         rep.wall.as_secs_f64(),
-        icarus.as_secs_f64(),
-        icarus.as_secs_f64() / rep.wall.as_secs_f64()
+        icarus_wall.as_secs_f64(),
+        icarus_wall.as_secs_f64() / rep.wall.as_secs_f64()
     );
 }
 
@@ -172,13 +180,9 @@ fn slave_under_icarus_matches_verilator() {
         want += &format!("{}{}\n", m.get(opo), m.get(oso));
     }
 
-    let d = std::env::temp_dir().join(format!("merkur-icarus-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    std::fs::write(d.join("top.v"), &v).unwrap();
     let stim: String = (0..n)
         .map(|t| format!("{:02x}\n", pi[t] | si[t] << 4))
         .collect();
-    std::fs::write(d.join("stim.hex"), stim).unwrap();
     let tb = format!(
         "module tb; reg clock = 0; reg [3:0] pi = 0, si = 0; wire [1:0] po, so; reg [7:0] mem [0:{n}]; integer i, f;\n\
          wire [15:0] act; wire [1:0] mode; wire fs; wire [15:0] perr, ferr;\n\
@@ -190,29 +194,7 @@ fn slave_under_icarus_matches_verilator() {
            $fclose(f); $finish; end endmodule\n",
         sm1 = cfg.slots - 1
     );
-    std::fs::write(d.join("tb.v"), tb).unwrap();
-    let st = Command::new("iverilog")
-        .args(["-o", "sim.vvp", "tb.v", "top.v"])
-        .current_dir(&d)
-        .output()
-        .expect("iverilog runs");
-    assert!(
-        st.status.success(),
-        "iverilog: {}",
-        String::from_utf8_lossy(&st.stderr)
-    );
-    let st = Command::new("vvp")
-        .args(["-n", "sim.vvp"])
-        .current_dir(&d)
-        .output()
-        .expect("vvp runs");
-    assert!(
-        st.status.success(),
-        "vvp: {}",
-        String::from_utf8_lossy(&st.stderr)
-    );
-    let got = std::fs::read_to_string(d.join("out.txt")).unwrap();
-    let _ = std::fs::remove_dir_all(&d);
+    let (got, _) = icarus("slave", &v, &tb, &stim);
     if let Some(i) = got.lines().zip(want.lines()).position(|(a, b)| a != b) {
         panic!("seed {seed}: Icarus and Verilator differ first at clock {i} (of {n})");
     }
