@@ -124,12 +124,7 @@ pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
 /// The same scenario as RTL in Verilator, against the model's records.
 fn rtl(cfg: &Config, recs: &[CycleRecord], wave: &std::path::Path) -> Result<(), String> {
     use merkur_testbenches::ring_sim::{self, Options};
-    if wave.extension().map_or(true, |e| e != "fst") {
-        return Err(format!(
-            "error: --wave {}: the waveform is written as FST; name the file *.fst",
-            wave.display()
-        ));
-    }
+    crate::sim::check_wave_name(wave)?;
     if let Some(dir) = wave.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(|e| {
             format!(
@@ -139,11 +134,11 @@ fn rtl(cfg: &Config, recs: &[CycleRecord], wave: &std::path::Path) -> Result<(),
             )
         })?;
     }
-    let ppm = |f: fn(f64, f64) -> f64| cfg.nodes.iter().map(|n| n.ppm).fold(0.0, f);
+    let ppm = cfg.nodes.iter().map(|n| n.ppm);
     println!(
         "\nthe same ring as RTL (Verilator; every node on its own clock, {:+.0} .. {:+.0} ppm):",
-        ppm(f64::min),
-        ppm(f64::max)
+        ppm.clone().fold(f64::INFINITY, f64::min),
+        ppm.fold(f64::NEG_INFINITY, f64::max)
     );
     eprintln!("building the Verilator model (cached by the hash of its Verilog) ...");
     let opts = Options {
@@ -153,8 +148,6 @@ fn rtl(cfg: &Config, recs: &[CycleRecord], wave: &std::path::Path) -> Result<(),
         record: false,
     };
     let rep = ring_sim::run(cfg, recs, &opts).map_err(|e| format!("error: RTL run: {e}"))?;
-    let g = wave.with_extension("gtkw");
-    crate::write_atomic(&g, &ring_sim::gtkw(cfg, wave))?;
     println!(
         "RTL: {} words on {} fibres over {} cycles compared with the model; cycle time measured {:.1} bit times = {:.2} us at {} Mbit/s",
         rep.words,
@@ -164,7 +157,7 @@ fn rtl(cfg: &Config, recs: &[CycleRecord], wave: &std::path::Path) -> Result<(),
         rep.period_bits / cfg.line_rate_mbps,
         cfg.line_rate_mbps
     );
-    println!("waveform: {} (gtkwave {})", wave.display(), g.display());
+    crate::sim::write_gtkw(cfg, wave)?;
     match rep.mismatches.first() {
         None => {
             println!("RTL agrees with the model: every word, header and node state.");

@@ -34,6 +34,25 @@ pub fn verilog(path: &Path, dir: &Path) -> Result<(), String> {
     Ok(())
 }
 
+/// A `--wave` file must be named `*.fst` (that is what is written).
+pub(crate) fn check_wave_name(w: &Path) -> Result<(), String> {
+    if w.extension().map_or(true, |e| e != "fst") {
+        return Err(format!(
+            "error: --wave {}: the waveform is written as FST; name the file *.fst",
+            w.display()
+        ));
+    }
+    Ok(())
+}
+
+/// Writes the GTKWave save file beside the waveform `w` and says where both are.
+pub(crate) fn write_gtkw(cfg: &merkur_model::config::Config, w: &Path) -> Result<(), String> {
+    let g = w.with_extension("gtkw");
+    write_atomic(&g, &ring_sim::gtkw(cfg, w))?;
+    println!("waveform: {} (gtkwave {})", w.display(), g.display());
+    Ok(())
+}
+
 /// Runs the ring in Verilator; `Ok(false)` when it differs from the model.
 pub fn sim(path: &Path, wave: Option<&Path>, seed: u64, show: usize) -> Result<bool, String> {
     let (_, cfg) = read_scenario(path)?;
@@ -44,12 +63,7 @@ pub fn sim(path: &Path, wave: Option<&Path>, seed: u64, show: usize) -> Result<b
         ));
     }
     if let Some(w) = wave {
-        if w.extension().map_or(true, |e| e != "fst") {
-            return Err(format!(
-                "error: --wave {}: the waveform is written as FST; name the file *.fst",
-                w.display()
-            ));
-        }
+        check_wave_name(w)?;
     }
     let recs = ring::run(&cfg);
     eprintln!(
@@ -100,9 +114,7 @@ pub fn sim(path: &Path, wave: Option<&Path>, seed: u64, show: usize) -> Result<b
         );
     }
     if let Some(w) = wave {
-        let g = w.with_extension("gtkw");
-        write_atomic(&g, &ring_sim::gtkw(&cfg, w))?;
-        println!("waveform: {} (gtkwave {})", w.display(), g.display());
+        write_gtkw(&cfg, w)?;
     }
     match rep.mismatches.first() {
         None => {

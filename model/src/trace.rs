@@ -80,13 +80,16 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
         let _ = writeln!(o, "cycle {} path {}", r.cycle, path.join(","));
         let src: Vec<String> = r.produced.iter().map(|v| format!("{v:04x}")).collect();
         let _ = writeln!(o, " src {}", src.join(" "));
-        for (i, f) in r.fibres.iter().enumerate() {
-            let name = if i < n {
+        // Fibre index: P0..P(n-1), then S0..S(n-1).
+        let fibre_name = |i: usize| {
+            if i < n {
                 format!("P{i}")
             } else {
                 format!("S{}", i - n)
-            };
-            let _ = write!(o, " {name} ");
+            }
+        };
+        for (i, f) in r.fibres.iter().enumerate() {
+            let _ = write!(o, " {} ", fibre_name(i));
             match f {
                 Carry::Silent => o.push('-'),
                 Carry::Idle => o.push('I'),
@@ -118,12 +121,7 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
             // The SEC that went ahead of a (wrapped) DATA frame on a fibre.
             o.push_str(" sec-ahead");
             for &(i, ok) in &r.sec_with_data {
-                let name = if i < n {
-                    format!("P{i}")
-                } else {
-                    format!("S{}", i - n)
-                };
-                let _ = write!(o, " {name}{}", if ok { "" } else { "!" });
+                let _ = write!(o, " {}{}", fibre_name(i), if ok { "" } else { "!" });
             }
             o.push('\n');
         }

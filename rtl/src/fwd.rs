@@ -121,6 +121,7 @@ pub struct Fwd {
     /// Output line (DDR pair).
     pub o_line: Signal<Out, Bits<2>>,
     jk: Constant<Bits<10>>,
+    dead_after: Constant<Bits<4>>,
     prev: DFF<Bit>,
     window: DFF<Bits<10>>,
     delay: DFF<Bits<5>>,
@@ -165,6 +166,7 @@ pub struct Fwd {
     send_alarm: Signal<Local, Bit>,
     own: Signal<Local, Bit>,
     home: Signal<Local, Bit>,
+    cut: Signal<Local, Bit>,
     pre_b2: Signal<Local, Bit>,
     pre_b1: Signal<Local, Bit>,
     out_bit: Signal<Local, Bit>,
@@ -206,6 +208,10 @@ impl Fwd {
             o_toggle: Default::default(),
             o_line: Default::default(),
             jk: Constant::new(crate::rx_framer::JK_BITS.to_bits()),
+            // One bit time after the CDR stops taking bits from a dead line.
+            dead_after: Constant::new(
+                (crate::cdr::MUTE_SAMPLES / crate::cdr::SAMPLES_PER_CLOCK as u64 + 2).to_bits(),
+            ),
             prev: Default::default(),
             window: Default::default(),
             delay: Default::default(),
@@ -250,6 +256,7 @@ impl Fwd {
             send_alarm: Default::default(),
             own: Default::default(),
             home: Default::default(),
+            cut: Default::default(),
             pre_b2: Default::default(),
             pre_b1: Default::default(),
             out_bit: Default::default(),
@@ -629,6 +636,7 @@ impl Logic for Fwd {
         self.out_bit.next = self.delay.q.val().get_bit(4);
         self.sent.d.next = false;
         self.done.d.next = false;
+        self.cut.next = false;
         self.regen.d.next = false;
         if self.i_bvalid.val() {
             self.prev.d.next = self.i_level.val();
@@ -641,14 +649,7 @@ impl Logic for Fwd {
                 if (self.bitc.q.val() == 4) & (self.group.val() == 31) & (self.idles.q.val() == 2) {
                     // The third idle group in a row: the packet was cut
                     // short upstream (as rx_word); pass the rest unchanged.
-                    // A frame whose header was processed still counts
-                    // (the Alive flip-flop toggles, as at its end).
-                    self.inpkt.d.next = false;
-                    self.idles.d.next = 0.into();
-                    if (self.wcount.q.val() == 2) & !self.dead.q.val() {
-                        self.done.d.next = true;
-                        self.toggle.d.next = !self.toggle.q.val();
-                    }
+                    self.cut.next = true;
                 } else if self.bitc.q.val() == 4 {
                     // A group is complete.
                     self.bitc.d.next = 0.into();
@@ -736,8 +737,13 @@ impl Logic for Fwd {
         } else if self.quiet.q.val() != 15 {
             self.quiet.d.next = self.quiet.q.val() + 1;
         }
-        if self.quiet.q.val() == 12 {
+        if self.quiet.q.val() == self.dead_after.val() {
             self.delay.d.next = 31.into();
+            self.cut.next = true;
+        }
+        // A packet cut short ends here; a frame whose header was processed
+        // still counts (the Alive flip-flop toggles, as at its end).
+        if self.cut.val() {
             self.inpkt.d.next = false;
             self.idles.d.next = 0.into();
             if self.inpkt.q.val() & (self.wcount.q.val() == 2) & !self.dead.q.val() {

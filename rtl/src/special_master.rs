@@ -69,6 +69,9 @@ use rust_hdl::prelude::*;
 /// whether it is a DATA frame (relayed) or not (the SM's own SEC coming
 /// back, dropped): more than J K + H0 + H1 (60) plus decoding latency.
 pub const RELAY_BITS: u64 = 76;
+// The delay line `rdl` is a `Bits<76>` read at bit 75 (rust-hdl widths are
+// literals): keep them in step with RELAY_BITS.
+const _: () = assert!(RELAY_BITS == 76);
 
 /// Special master.
 #[derive(LogicBlock)]
