@@ -35,6 +35,7 @@
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_bvalid`, `i_level`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits (from [`crate::port_rx`]) |
 //! | `i_hdr_bad` | in | 1 | clock | header rejected, or not a DATA packet: pass the rest unchanged |
+//! | `i_mute` | in | 1 | clock | send idles for the code bits arriving from now on (a TST's rest) |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | slot count − 1, home slot |
 //! | `i_actuator` | in | 1 | static | 1 actuator, 0 sensor |
 //! | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
@@ -80,6 +81,8 @@ pub struct Fwd {
     pub i_phase: Signal<In, Bits<2>>,
     /// Header rejected.
     pub i_hdr_bad: Signal<In, Bit>,
+    /// Idles instead of the arriving code bits.
+    pub i_mute: Signal<In, Bit>,
     /// Slot count − 1.
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// Home slot.
@@ -187,6 +190,7 @@ impl Fwd {
             i_level: Default::default(),
             i_phase: Default::default(),
             i_hdr_bad: Default::default(),
+            i_mute: Default::default(),
             i_slots_m1: Default::default(),
             i_address: Default::default(),
             i_actuator: Default::default(),
@@ -642,7 +646,7 @@ impl Logic for Fwd {
             self.prev.d.next = self.i_level.val();
             self.window.d.next = self.shifted.val();
             self.delay.d.next = self.delay.q.val() << 1;
-            if self.code.val() {
+            if self.code.val() | self.i_mute.val() {
                 self.delay.d.next = (self.delay.q.val() << 1) | 1;
             }
             if self.inpkt.q.val() {

@@ -36,7 +36,7 @@
 //! | `o_wb_dat` | out | 16 | clock | Wishbone read data (valid with `o_wb_ack`) |
 //! | `o_wb_ack` | out | 1 | clock | Wishbone acknowledge (one clock) |
 //! | `i_home` | in | 12 | static | home slot (no interrupt for its own alarms) |
-//! | `i_fs` | in | 1 | clock | node in failsafe: no updates |
+//! | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 //! | `i_mode` | in | 2 | clock | switchbox mode (status register) |
 //! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
 //! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
@@ -166,6 +166,7 @@ pub struct Mdb {
     aerr: DFF<Bits<16>>,
     last_irq: DFF<Bits<16>>,
     cur_cyc: DFF<Bits<3>>,
+    fs_frame: DFF<Bit>,
     // Host port.
     running: DFF<Bit>,
     err_cfg: DFF<Bit>,
@@ -194,7 +195,7 @@ impl Logic for Mdb {
         dff_setup!(
             self, clock, tx_served, tx_data, tx_cfg, s2, s2_slot, s2_ok, s2_alive, s2_alarm,
             s2_data, irq1, irq2, irq_fs, aerr, last_irq, running, err_cfg, err_wr, hstate, ack,
-            rdat, perm, cur_cyc
+            rdat, perm, cur_cyc, fs_frame
         );
         self.db.read_clock.next = self.clock.val();
         self.db.write_clock.next = self.clock.val();
@@ -247,6 +248,9 @@ impl Logic for Mdb {
         // nothing to compare with (protocol §7).
         if self.i_wvalid.val() & (self.i_kind.val() == 1) & self.i_ok.val() {
             self.cur_cyc.d.next = self.i_data.val().get_bits::<3>(12);
+            // Failsafe as of this frame's header: a FAILSAFE alarm read
+            // in a slot stops updates from the next frame (protocol §12).
+            self.fs_frame.d.next = self.i_fs.val();
         }
         self.prev_cyc.next = self.cur_cyc.q.val() - 1;
         self.ast_valid.next = self.s2_ast.val().get_bit(0)
@@ -254,7 +258,7 @@ impl Logic for Mdb {
         self.new_ast.next = self.s2_ast.val() & 4;
         self.ast.write_enable.next = false;
         self.ast.write_address.next = self.s2_slot.q.val();
-        if self.s2.q.val() & !self.i_fs.val() {
+        if self.s2.q.val() & !self.fs_frame.q.val() {
             self.ast.write_enable.next = true;
             if self.s2_ok.q.val() {
                 if self.s2_alarm.q.val() & (self.s2_slot.q.val() != self.i_home.val()) {

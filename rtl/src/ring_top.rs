@@ -83,6 +83,8 @@ pub mod cfg {
     pub const REQUEST: u32 = 4;
     /// Fibre: 1 dark, 0 lit.
     pub const BREAK: u32 = 8;
+    /// Node: 1 dead (both its output fibres dark), 0 alive.
+    pub const KILL: u32 = 10;
     /// Fibre: invert the line for one bit time, now.
     pub const FLIP: u32 = 9;
     /// Global: slots − 1.
@@ -266,11 +268,12 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 ),
             )
         };
-        let (h_inc, h_phase, h_addr, h_req) = (
+        let (h_inc, h_phase, h_addr, h_req, h_kill) = (
             hit(k, cfg::INC),
             hit(k, cfg::PHASE),
             hit(k, cfg::ADDRESS),
             hit(k, cfg::REQUEST),
+            hit(k, cfg::KILL),
         );
         w(
             &mut v,
@@ -279,10 +282,10 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20   wire [1:0] mode_{k};\n\
                  \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
                  \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
-                 \x20   reg [31:0] inc_{k} = 32'h40000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0, fired2_{k} = 1'b0;\n\
+                 \x20   reg [31:0] inc_{k} = 32'h40000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0, fired2_{k} = 1'b0;\n    reg dead_{k} = 1'b0;\n\
                  \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n        fired2_{k} <= fired_{k};\n\
                  \x20       if ({h_inc}) inc_{k} <= i_cfg_val;\n\
-                 \x20       if ({h_phase}) acc_{k} <= i_cfg_val;\n    end\n\
+                 \x20       if ({h_phase}) acc_{k} <= i_cfg_val;\n        if ({h_kill}) dead_{k} <= i_cfg_val[0];\n    end\n\
                  \x20   always @(negedge clk) enl_{k} <= en_{k};\n    wire nclk_{k} = clk & enl_{k};\n\
                  \x20   reg [11:0] addr_{k} = 12'd0;\n\
                  \x20   reg [7:0] req_{k} = 8'd0;\n    reg [3:0] reqhold_{k} = 4'd0;\n    reg [2:0] reqbits_{k} = 3'd0;\n\
@@ -387,7 +390,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 "    // ---- fibre {name} (from node {src}) ----\n\
                  \x20   reg line_{f} = 1'b0, brk_{f} = 1'b0;\n    reg [2:0] sh_{f} = 3'd0;\n    reg [3:0] flip_{f} = 4'd0;\n\
                  \x20   wire txl_{f} = (fired_{src} | fired2_{src}) ? {port}_{src}[0] : {port}_{src}[1];\n\
-                 \x20   always @(posedge clk) begin\n        line_{f} <= brk_{f} ? 1'b0 : (txl_{f} ^ (flip_{f} != 4'd0));\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
+                 \x20   always @(posedge clk) begin\n        line_{f} <= (brk_{f} | dead_{src}) ? 1'b0 : (txl_{f} ^ (flip_{f} != 4'd0));\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
                  \x20       if (flip_{f} != 4'd0) flip_{f} <= flip_{f} - 4'd1;\n\
                  \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_brk}) brk_{f} <= i_cfg_val[0];\n\
                  \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) flip_{f} <= 4'd{TICKS_PER_BIT};\n    end\n\

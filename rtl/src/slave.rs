@@ -129,6 +129,7 @@ pub struct Slave {
     rep: Retime,
     rep_last: DFF<Bit>,
     rep_cut: DFF<Bit>,
+    fwd_cut: DFF<Bit>,
     mode: DFF<Bits<2>>,
     failsafe: DFF<Bit>,
     rw: DFF<Bit>,
@@ -204,6 +205,7 @@ impl Slave {
             rep: Default::default(),
             rep_last: Default::default(),
             rep_cut: Default::default(),
+            fwd_cut: Default::default(),
             mode: Default::default(),
             failsafe: Default::default(),
             rw: Default::default(),
@@ -234,7 +236,7 @@ impl Logic for Slave {
     fn update(&mut self) {
         dff_setup!(
             self, clock, mode, failsafe, rw, armed, quiet, grace, settle, ack_time, seen_ack,
-            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_last, rep_cut
+            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_last, rep_cut, fwd_cut
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -268,6 +270,20 @@ impl Logic for Slave {
                 & (self.rx_in.o_kind.val() == 0)
                 & self.rx_in.o_ok.val()
                 & (self.rx_in.o_ptype.val() != 0));
+        // A TST on INPUT (a wrapped neighbour's link test, before this node
+        // has wrapped) is for this node only: from its H0 on the rest goes
+        // out as idles, so the next node sees no TST (protocol §9).
+        if !self.rx_in.o_inpkt.val() {
+            self.fwd_cut.d.next = false;
+        }
+        if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 0)
+            & self.rx_in.o_ok.val()
+            & (self.rx_in.o_ptype.val() == 2)
+        {
+            self.fwd_cut.d.next = true;
+        }
+        self.fwd.i_mute.next = self.fwd_cut.q.val();
         self.fwd.i_slots_m1.next = self.i_slots_m1.val();
         self.fwd.i_address.next = self.i_address.val();
         self.fwd.i_actuator.next = self.i_actuator.val();

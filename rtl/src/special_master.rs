@@ -161,6 +161,7 @@ pub struct SpecialMaster {
     toggle: DFF<Bit>,
     fbusy: DFF<Bit>,
     failsafe: DFF<Bit>,
+    fs_tx: DFF<Bit>,
     ret_rwc: DFF<Bit>,
     ret_cyc: DFF<Bits<3>>,
     hop: DFF<Bits<12>>,
@@ -250,6 +251,7 @@ impl Default for SpecialMaster {
             toggle: Default::default(),
             fbusy: Default::default(),
             failsafe: Default::default(),
+            fs_tx: Default::default(),
             ret_rwc: Default::default(),
             ret_cyc: Default::default(),
             hop: Default::default(),
@@ -288,9 +290,9 @@ impl Logic for SpecialMaster {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, ret_rwc, ret_cyc, hop,
-            armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1, pend_i2,
-            prev_alarm, rdl, rcd, rcd_run, rdata, relay, rlast
+            self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, fs_tx, ret_rwc, ret_cyc,
+            hop, armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1,
+            pend_i2, prev_alarm, rdl, rcd, rcd_run, rdata, relay, rlast
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -382,7 +384,7 @@ impl Logic for SpecialMaster {
         self.send_alarm.next = self.home.val()
             & (self.pend_fs.q.val() | self.pend_i1.q.val() | self.pend_i2.q.val())
             & !self.prev_alarm.q.val();
-        if !self.failsafe.q.val() {
+        if !self.fs_tx.q.val() {
             if self.mdb.o_tx_local.val() {
                 // LOCAL.
                 self.w_data.next = self.mdb.o_tx_data.val();
@@ -418,12 +420,12 @@ impl Logic for SpecialMaster {
         self.aact.write_enable.next = false;
         self.aact.write_address.next = self.ftx.o_slot.val();
         self.aact.write_data.next = self.w_alive.val();
-        if self.ftx.o_take.val() & !self.failsafe.q.val() & self.mdb.o_tx_act.val() {
+        if self.ftx.o_take.val() & !self.fs_tx.q.val() & self.mdb.o_tx_act.val() {
             self.aact.write_enable.next = true;
         }
         if self.ftx.o_take.val() & self.home.val() {
-            self.prev_alarm.d.next = self.send_alarm.val() & !self.failsafe.q.val();
-            if self.send_alarm.val() & !self.failsafe.q.val() {
+            self.prev_alarm.d.next = self.send_alarm.val() & !self.fs_tx.q.val();
+            if self.send_alarm.val() & !self.fs_tx.q.val() {
                 if self.reason.val() == 3 {
                     self.pend_fs.d.next = false;
                     self.failsafe.d.next = true;
@@ -451,6 +453,10 @@ impl Logic for SpecialMaster {
             self.cyc.d.next = self.cyc.q.val() + 1;
         }
         if self.tick.val() {
+            // A frame is written as the SM's state at its start says: a
+            // failsafe entered while it is sent applies from the next one
+            // (protocol §12).
+            self.fs_tx.d.next = self.failsafe.q.val();
             self.sec_word.d.next = !self.sec_h0.val();
             if self.cycles.q.val() != 0xffff {
                 self.cycles.d.next = self.cycles.q.val() + 1;

@@ -14,7 +14,7 @@ use crate::wishbone::Wishbone;
 use crate::Rng;
 use merkur_model::config::{Config, Fault, Fibre};
 use merkur_model::line::{Lead, Word};
-use merkur_model::ring::{Carry, CycleRecord, HeaderRx, Slot};
+use merkur_model::ring::{self, table1, Carry, CycleRecord, HeaderRx, Mode, Port, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
 use merkur_rtl::mdb::{ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
 use merkur_rtl::ring_top::{
@@ -120,10 +120,10 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
         .faults
         .iter()
         .enumerate()
-        .find(|(_, (_, f))| !matches!(f, Fault::Break { .. } | Fault::Repair { .. }))
+        .find(|(_, (_, f))| matches!(f, Fault::Flip { .. }))
     {
         return Some(format!(
-            "fault[{i}] (cycle {c}, {f}): the RTL simulation injects breaks and repairs only (kills and bit flips are issue 5)"
+            "fault[{i}] (cycle {c}, {f}): the RTL simulation injects breaks, repairs and node deaths only (bit flips are issue 5)"
         ));
     }
     if cfg.period >= 1 << 16 {
@@ -154,6 +154,9 @@ struct Ring {
     /// Per fibre and capture buffer, the H1 entry last compared: a fibre
     /// without frames keeps it, and CYC (3 bits) repeats every 8 cycles.
     h1_seen: Vec<[u64; 4]>,
+    /// Per slot, whether its Alive bit runs inverted against the model's
+    /// since the last recovery window (None: not yet seen after it).
+    alive_inv: Vec<Option<bool>>,
 }
 
 impl Ring {
@@ -262,6 +265,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         m,
         ticks: 0,
         h1_seen: vec![[u64::MAX; 4]; 2 * n],
+        alive_inv: vec![Some(false); s],
     };
     let t1 = Instant::now();
     let mut rng = Rng::new(opts.seed ^ cfg.seed);
@@ -342,23 +346,48 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let mut starts: Vec<u64> = vec![];
     let last_cycle = cfg.cycles - 1;
     let mut stopped_at: Option<u64> = None;
-    // (cycle, fibre index, slot, dark) of every break and repair.
-    let mut faults: Vec<(u32, usize, Option<usize>, bool)> = cfg
+    // Every break, repair and death: (cycle, the fibres whose monitors time
+    // it, slot, configuration write). A death is timed on the fibres out of
+    // the node that carry the model's frame (a wrapped ring passes some
+    // nodes twice): before slot s when the first of them has shown slot
+    // s − 1, before the delimiter when all have ended the previous frame.
+    let mut faults: Vec<(u32, Vec<usize>, Option<usize>, (usize, u32, u64))> = cfg
         .faults
         .iter()
         .filter_map(|&(c, f)| {
-            let (fibre, slot, dark) = match f {
-                Fault::Break { fibre, slot } => (fibre, slot, true),
-                Fault::Repair { fibre, slot } => (fibre, slot, false),
-                _ => return None,
-            };
-            let fi = match fibre {
+            let fibre_index = |fb: Fibre| match fb {
                 Fibre::P(k) => k,
                 Fibre::S(k) => n + k,
             };
-            Some((c, fi, slot, dark))
+            Some(match f {
+                Fault::Break { fibre, slot } | Fault::Repair { fibre, slot } => {
+                    let fi = fibre_index(fibre);
+                    let dark = matches!(f, Fault::Break { .. });
+                    (c, vec![fi], slot, (fi, field::BREAK, dark as u64))
+                }
+                Fault::Kill { node, slot } => {
+                    let rec = &recs[if slot.is_some() {
+                        c
+                    } else {
+                        c.saturating_sub(1)
+                    } as usize];
+                    let outs: Vec<usize> = [node, n + (node + n - 1) % n]
+                        .into_iter()
+                        .filter(|&fi| matches!(rec.fibres[fi], Carry::Data(_)))
+                        .collect();
+                    (c, outs, slot, (node, field::KILL, 1))
+                }
+                Fault::Flip { .. } => return None,
+            })
         })
         .collect();
+    let wins: Vec<(u32, u32)> = ring::windows(cfg)
+        .into_iter()
+        .map(|(a, z, _)| (a, z))
+        .collect();
+    let win_of = |c: u32| wins.iter().copied().find(|&(a, z)| a <= c && c <= z);
+    let mut snaps = Snapshots::new(n);
+    let mut nsec_at: Vec<Vec<u64>> = vec![];
     let limit = (cfg.cycles as u64 + 4) * period * TICKS_PER_BIT as u64 * 2 + 100_000;
     let progress_every = (cfg.cycles / 20).max(1);
     loop {
@@ -381,6 +410,9 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         while sent < now {
             // Frame `sent` started.
             starts.push(r.ticks);
+            // SEC packets seen per fibre before frame `sent` (a SEC starts
+            // with its frame and is back within the period).
+            nsec_at.push((0..2 * n).map(|f| r.rd(f, st::NSEC)).collect());
             let c = sent;
             sent += 1;
             if opts.progress && c % progress_every == 0 {
@@ -398,14 +430,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 }
             }
             if c >= 2 {
-                compare_cycle(
-                    &mut r,
-                    cfg,
-                    &recs[(c - 2) as usize],
-                    capn,
-                    &mut mism,
-                    &mut words,
-                );
+                let w = win_of(c - 2);
+                compare_cycle(&mut r, cfg, recs, c - 2, w, capn, &mut mism, &mut words);
                 compared = c - 1;
             }
         }
@@ -444,22 +470,38 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         // frames, when the special master has started frame c.
         let mut i = 0;
         while i < faults.len() {
-            let (c, fi, slot, dark) = faults[i];
-            let at = r.rd(fi, st::AT);
-            let (infr, cyc, last) = (at >> 31 == 1, (at >> 28 & 7) as u32, at & 0xfff);
+            let (c, ref fis, slot, (sel, fd, val)) = faults[i];
+            let mut ats = vec![];
+            for &fi in fis {
+                let at = r.rd(fi, st::AT);
+                ats.push((at >> 31 == 1, (at >> 28 & 7) as u32, at & 0xfff));
+            }
             let due = match slot {
-                None => c == 0 || (!infr && cyc == c.wrapping_sub(1) & 7) || sent > c,
+                None => {
+                    c == 0
+                        || sent > c
+                        || (!ats.is_empty()
+                            && ats
+                                .iter()
+                                .all(|&(infr, cyc, _)| !infr && cyc == c.wrapping_sub(1) & 7))
+                }
                 Some(s) => {
                     let want = if s == 0 { 0xfff } else { s as u64 - 1 };
-                    (infr && cyc == c & 7 && last == want) || sent > c + 1
+                    sent > c + 1
+                        || ats
+                            .iter()
+                            .any(|&(infr, cyc, last)| infr && cyc == c & 7 && last == want)
                 }
             };
             if due {
-                r.cfg(fi, field::BREAK, dark as u64);
+                r.cfg(sel, fd, val);
                 faults.remove(i);
             } else {
                 i += 1;
             }
+        }
+        if r.ticks % 16 == 0 {
+            snaps.poll(&mut r, recs, &starts, sent);
         }
         if sent == cfg.cycles && stopped_at.is_none() {
             stopped_at = Some(r.ticks);
@@ -503,38 +545,43 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         state.push(vals);
     }
     for c in compared..cfg.cycles {
-        compare_cycle(&mut r, cfg, &recs[c as usize], capn, &mut mism, &mut words);
+        compare_cycle(&mut r, cfg, recs, c, win_of(c), capn, &mut mism, &mut words);
     }
-    let mut nsec_exp = vec![0u64; 2 * n];
-    for rec in recs {
+    // SEC packets per fibre and cycle, outside the recovery windows.
+    nsec_at.push((0..2 * n).map(|f| r.rd(f, st::NSEC)).collect());
+    for (c, rec) in recs.iter().enumerate() {
+        if win_of(c as u32).is_some() || c + 1 >= nsec_at.len() {
+            continue;
+        }
+        let mut want = vec![0u64; 2 * n];
         for (f, carry) in rec.fibres.iter().enumerate() {
-            if matches!(carry, Carry::Sec { ok: true }) {
-                nsec_exp[f] += 1;
-            }
+            want[f] += matches!(carry, Carry::Sec { ok: true }) as u64;
         }
         for &(f, ok) in &rec.sec_with_data {
-            nsec_exp[f] += ok as u64;
+            want[f] += ok as u64;
         }
-    }
-    for (f, &want) in nsec_exp.iter().enumerate() {
-        let got = r.rd(f, st::NSEC);
-        if got != want {
-            mism.push(Mismatch {
-                cycle: last_cycle,
-                place: fibre_name(f, n),
-                what: "SEC packets".into(),
-                expected: want.to_string(),
-                got: got.to_string(),
-            });
+        for (f, &w) in want.iter().enumerate() {
+            let got = nsec_at[c + 1][f] - nsec_at[c][f];
+            if got != w {
+                mism.push(Mismatch {
+                    cycle: c as u32,
+                    place: fibre_name(f, n),
+                    what: "SEC packets".into(),
+                    expected: w.to_string(),
+                    got: got.to_string(),
+                });
+            }
         }
     }
     for (k, nd) in cfg.nodes.iter().enumerate() {
         let before = mism.len();
         let want = &last.nodes[k];
+        // A dead node has no state to compare (its RTL runs on, unheard).
+        let dead = !want.up;
         let v = &state[k];
         let place = format!("node {k}");
         let mut check = |what: &str, e: u64, g: u64| {
-            if e != g {
+            if e != g && !dead {
                 mism.push(Mismatch {
                     cycle: last_cycle,
                     place: place.clone(),
@@ -546,13 +593,19 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         };
         check("mode", want.mode.code() as u64, v[0]);
         check("failsafe", want.failsafe as u64, v[1]);
-        check("perr", want.perr as u64, v[2]);
-        check("ferr", want.ferr as u64, v[3]);
-        if nd.kind.is_master() {
-            check("aerr", want.aerr as u64, v[4]);
+        // With a recovery window, counters are compared per cycle outside
+        // it (`Snapshots`); without, their totals too.
+        if wins.is_empty() {
+            check("perr", want.perr as u64, v[2]);
+            check("ferr", want.ferr as u64, v[3]);
+            if nd.kind.is_master() {
+                check("aerr", want.aerr as u64, v[4]);
+            }
         }
         if k == cfg.sm {
-            check("serr", want.serr as u64, v[5]);
+            if wins.is_empty() {
+                check("serr", want.serr as u64, v[5]);
+            }
             check("hop", want.hop.unwrap_or(0) as u64, v[6]);
         }
         if nd.kind == Kind::Actuator {
@@ -582,7 +635,16 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         if nd.kind.is_master() {
             for slot in 0..s {
                 let g = r.wb(k, slot as u16, None)? as u64;
-                if g != want.db[slot] as u64 {
+                // A stranded slot (its writer off the path after a split,
+                // protocol §13): any value the model showed in it before.
+                let stranded = !last.path.contains(&cfg.writer[slot])
+                    && recs.iter().any(|x| {
+                        x.fibres.iter().any(|carry| {
+                            matches!(carry, Carry::Data(fr)
+                                if matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data as u64 == g))
+                        })
+                    });
+                if g != want.db[slot] as u64 && !dead && !stranded {
                     mism.push(Mismatch {
                         cycle: last_cycle,
                         place: format!("node {k}"),
@@ -606,6 +668,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             mismatches: mism.len() - before,
         });
     }
+    snaps.compare(cfg, recs, |c| win_of(c).is_some(), &mut mism);
     // (Only nodes whose PI and PO fibres both carried the last frame.)
     let last_cyc = (last_cycle & 7) as u64;
     let fwd_delay_bits = (0..n)
@@ -640,18 +703,178 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     })
 }
 
-/// Compares every fibre's capture of cycle `rec.cycle` with the model.
+/// Every node's error counters (perr, ferr, aerr, serr) read just after a
+/// frame ended on its INPUT (the fibre the model's mode says), per cycle: the
+/// driver compares their per-cycle increments with the model's outside the
+/// recovery windows (protocol §13).
+struct Snapshots {
+    /// Per node: the next cycle to take, and when a frame's end was seen,
+    /// the tick to read at (the node's decoder trails the monitor's).
+    next: Vec<u32>,
+    due: Vec<Option<(u32, u64)>>,
+    got: Vec<std::collections::BTreeMap<u32, [u64; 4]>>,
+}
+
+const COUNTERS: [(u32, &str); 4] = [
+    (st::PERR, "perr"),
+    (st::FERR, "ferr"),
+    (st::AERR, "aerr"),
+    (st::SERR, "serr"),
+];
+
+impl Snapshots {
+    fn new(n: usize) -> Self {
+        Snapshots {
+            next: vec![0; n],
+            due: vec![None; n],
+            got: vec![Default::default(); n],
+        }
+    }
+
+    /// The fibre on node k's INPUT in cycle c, by the model.
+    fn input(recs: &[CycleRecord], n: usize, k: usize, c: u32) -> usize {
+        let mode = match c {
+            0 => Mode::N,
+            _ => recs[c as usize - 1].nodes[k].mode,
+        };
+        match table1(mode).0 {
+            Port::Si => n + k,
+            _ => (k + n - 1) % n,
+        }
+    }
+
+    fn poll(&mut self, r: &mut Ring, recs: &[CycleRecord], starts: &[u64], sent: u32) {
+        let n = self.next.len();
+        for k in 0..n {
+            if let Some((c, at)) = self.due[k] {
+                if r.ticks >= at {
+                    let v = COUNTERS.map(|(fd, _)| r.rd(k, fd));
+                    self.got[k].insert(c, v);
+                    self.due[k] = None;
+                    self.next[k] = c + 1;
+                }
+                continue;
+            }
+            let c = self.next[k];
+            if c >= sent || c as usize >= recs.len() {
+                continue;
+            }
+            if sent > c + 2 {
+                // Frame c never ended at this node (a fault): no snapshot.
+                self.next[k] = c + 1;
+                continue;
+            }
+            let f = Self::input(recs, n, k, c);
+            let fr = r.rd(f, st::FRAME);
+            let th1 = r.rd(f, st::TH1);
+            let fresh = th1.wrapping_sub(starts[c as usize]) & 0xffff_ffff < 1 << 31;
+            if fr >> 3 & 1 == 0 && fr & 7 == (c & 7) as u64 && fresh {
+                // 8 bit times: the node has counted the last word; the next
+                // frame's first slot is at least 80 bit times away.
+                self.due[k] = Some((c, r.ticks + 8 * TICKS_PER_BIT as u64));
+            }
+        }
+    }
+
+    /// Per-cycle increments outside the windows against the model's.
+    fn compare(
+        &self,
+        cfg: &Config,
+        recs: &[CycleRecord],
+        in_window: impl Fn(u32) -> bool,
+        mism: &mut Vec<Mismatch>,
+    ) {
+        for (k, got) in self.got.iter().enumerate() {
+            let kind = cfg.nodes[k].kind;
+            for (&c, v) in got.range(1..) {
+                let Some(p) = got.get(&(c - 1)) else { continue };
+                if in_window(c) || !recs[c as usize].nodes[k].up {
+                    continue;
+                }
+                let (now, was) = (&recs[c as usize].nodes[k], &recs[c as usize - 1].nodes[k]);
+                let want = [
+                    now.perr - was.perr,
+                    now.ferr - was.ferr,
+                    now.aerr - was.aerr,
+                    now.serr - was.serr,
+                ];
+                for (i, (_, name)) in COUNTERS.iter().enumerate() {
+                    let applies = match i {
+                        2 => kind.is_master(),
+                        3 => k == cfg.sm,
+                        _ => true,
+                    };
+                    let g = v[i].wrapping_sub(p[i]) & 0xffff;
+                    if applies && g != want[i] as u64 {
+                        mism.push(Mismatch {
+                            cycle: c,
+                            place: format!("node {k}"),
+                            what: format!("{name} increment"),
+                            expected: want[i].to_string(),
+                            got: g.to_string(),
+                        });
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Compares every fibre's capture of cycle `c` with the model.
 fn compare_cycle(
     r: &mut Ring,
     cfg: &Config,
-    rec: &CycleRecord,
+    recs: &[CycleRecord],
+    c: u32,
+    win: Option<(u32, u32)>,
     capn: usize,
     mism: &mut Vec<Mismatch>,
     words: &mut u64,
 ) {
     let n = cfg.nodes.len();
-    let c = rec.cycle;
+    let rec = &recs[c as usize];
     let b = (c & 3) as usize;
+    if win.is_some() {
+        r.alive_inv.iter_mut().for_each(|x| *x = None);
+    }
+    // Inside a recovery window (protocol §13) a slot may show nothing, a
+    // bad word, VOID, or data that the model put in that slot on any fibre
+    // or that the slot's writer produced, from the cycle before the window
+    // to its end (Alive and alarm flags are bit timing there): never a
+    // foreign value.
+    let legal = |slot: usize, got: &Slot| -> bool {
+        let Some((a, z)) = win else { return false };
+        let Slot::Data(g) = got else { return true };
+        recs[a.saturating_sub(1) as usize..=z as usize]
+            .iter()
+            .any(|x| {
+                x.produced.get(slot) == Some(&g.data)
+                    || x.fibres.iter().any(|carry| match carry {
+                        Carry::Data(fr) => {
+                            matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data == g.data)
+                        }
+                        _ => false,
+                    })
+            })
+    };
+    // A slot whose writer is off the frame's path (a ring split by a second
+    // fault, protocol §13) carries what the last frame before the split
+    // brought back, which is bit timing: VOID, or data the model showed in
+    // that slot before — never a foreign value.
+    let stranded = |slot: usize, got: &Slot| -> bool {
+        if rec.path.contains(&cfg.writer[slot]) {
+            return false;
+        }
+        let Slot::Data(g) = got else {
+            return matches!(got, Slot::Void);
+        };
+        recs[..=c as usize].iter().any(|x| {
+            x.fibres.iter().any(|carry| {
+                matches!(carry, Carry::Data(fr)
+                    if matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data == g.data))
+            })
+        })
+    };
     for (f, carry) in rec.fibres.iter().enumerate() {
         let hdr = |r: &mut Ring, i: usize| r.cap(f, 4 * capn + 2 * b + i);
         let mut push = |what: String, e: String, g: String| {
@@ -675,7 +898,9 @@ fn compare_cycle(
                     }
                     *words += 1;
                     let ok = (e >> 20) & 7 == (c & 7) as u64 && (e & 0xffff) as u16 == want;
-                    if !ok {
+                    // A window's headers carry what the nodes knew at the
+                    // bit-level moment (RWC, FS, HOP): not compared.
+                    if !ok && win.is_none() {
                         let g = if (e >> 20) & 7 == (c & 7) as u64 {
                             format!("{:04x}", e & 0xffff)
                         } else {
@@ -686,9 +911,27 @@ fn compare_cycle(
                 }
                 for (slot, w) in frame.words.iter().enumerate() {
                     let e = r.cap(f, b * capn + slot);
-                    let (want, got) = (slot_token(w), slot_token(&cap_slot(e, c)));
+                    let g = cap_slot(e, c);
+                    let (want, got) = (slot_token(w), slot_token(&g));
                     *words += 1;
-                    if want != got {
+                    // The Alive bit's phase counts the frames its writer
+                    // processed; after a window it may run inverted (which
+                    // frames a node lost there is bit timing), but then
+                    // constantly so: learnt from the first fibre, held.
+                    if let (Slot::Data(m), Slot::Data(x), None) = (w, g, win) {
+                        let inv = m.alive != x.alive;
+                        if m.data == x.data && m.alarm == x.alarm {
+                            match r.alive_inv[slot] {
+                                None => {
+                                    r.alive_inv[slot] = Some(inv);
+                                    continue;
+                                }
+                                Some(v) if v == inv => continue,
+                                _ => {}
+                            }
+                        }
+                    }
+                    if want != got && !legal(slot, &g) && !stranded(slot, &g) {
                         push(format!("slot {slot}"), want, got);
                     }
                 }
@@ -697,7 +940,8 @@ fn compare_cycle(
                 // No frame on this fibre in this cycle.
                 let e = hdr(r, 1);
                 let stale = e == r.h1_seen[f][b];
-                if !stale && (e >> 20) & 7 == (c & 7) as u64 && (e >> 18) & 3 == 1 {
+                if !stale && win.is_none() && (e >> 20) & 7 == (c & 7) as u64 && (e >> 18) & 3 == 1
+                {
                     push(
                         "frame".into(),
                         "none".into(),
