@@ -8,6 +8,7 @@ use merkur_model::{config, ring, trace};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+mod campaign;
 mod demo;
 mod sim;
 
@@ -62,6 +63,59 @@ enum Cmd {
         /// How many mismatches to list on a failure.
         #[arg(long, value_name = "N", default_value_t = 10)]
         show: usize,
+    },
+    /// Run a fault-injection campaign through the RTL (Verilator) and the model and compare
+    /// them: every single fibre break and node death, double faults, repairs, bit-error and
+    /// clock-offset runs; writes a Markdown and JSON report. Exit status 1 on any mismatch or
+    /// accepted bit error.
+    Campaign {
+        /// Base ring scenario (repeatable; its own faults are dropped). Default: tb-data/ring8.toml,
+        /// with --full also ring32.toml and ring100.toml.
+        #[arg(long = "ring", value_name = "FILE")]
+        rings: Vec<PathBuf>,
+        /// The full campaign: rings of 8, 32 and 100 nodes; on 8 and 32 nodes every single
+        /// fault, on 100 nodes 30 sampled (`--singles`); every double fault on rings up to 16
+        /// nodes, 32 sampled on bigger ones (8 on 100 nodes); repairs (every fibre up to 16
+        /// nodes, 8 sampled on bigger rings); BER 1e-3 … 1e-7; ±250 … ±1000 ppm.
+        #[arg(long)]
+        full: bool,
+        /// Single faults per ring: a number (seeded sample) or `all` (default: all).
+        #[arg(long, value_name = "N|all")]
+        singles: Option<String>,
+        /// Double faults per ring: a number (seeded sample) or `all`. Default 24 (with --full: see there).
+        #[arg(long, value_name = "N|all")]
+        doubles: Option<String>,
+        /// Bit error rates, comma-separated (`none` for no bit-error runs). Default 1e-4.
+        #[arg(long, value_name = "LIST")]
+        ber: Option<String>,
+        /// Runs per bit error rate.
+        #[arg(long, value_name = "N", default_value_t = 2)]
+        ber_runs: usize,
+        /// Clock-offset points in ppm, comma-separated (`none` for none). Default 1000.
+        #[arg(long, value_name = "LIST")]
+        ppm: Option<String>,
+        /// Repair (reintegration) cases: every fibre breaks and is repaired (8 sampled fibres on
+        /// rings of more than 16 nodes).
+        #[arg(long)]
+        repairs: bool,
+        /// Campaign seed (fault slots, samples, bit positions, clock offsets and phases).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Parallel simulations (default: the machine's cores).
+        #[arg(long, value_name = "N")]
+        jobs: Option<usize>,
+        /// Run only shard K of N (cases i with i mod N = K − 1); merge the reports with --merge.
+        #[arg(long, value_name = "K/N")]
+        shard: Option<String>,
+        /// Run only the case of this name (as the report lists it).
+        #[arg(long, value_name = "NAME")]
+        case: Option<String>,
+        /// Write campaign.md and campaign.json into this directory (else the Markdown goes to stdout).
+        #[arg(short, long, value_name = "DIR")]
+        output: Option<PathBuf>,
+        /// Merge these JSON reports (from shards) instead of running.
+        #[arg(long, value_name = "FILE", num_args = 1..)]
+        merge: Vec<PathBuf>,
     },
     /// Run the built-in 8-node ring with one line break through the model (explained cycle
     /// by cycle) and through the RTL in Verilator, and show that they agree.
@@ -199,6 +253,105 @@ fn trace_cmd(path: &Path, output: Option<&Path>) -> Result<(), String> {
     }
 }
 
+/// `merkur campaign`: `Ok(false)` when a case disagrees with the model or a
+/// bit error was accepted.
+fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
+    let Cmd::Campaign {
+        rings,
+        full,
+        singles,
+        doubles,
+        ber,
+        ber_runs,
+        ppm,
+        repairs,
+        seed,
+        jobs,
+        shard,
+        case,
+        output,
+        merge,
+    } = cmd
+    else {
+        unreachable!("called for the campaign command")
+    };
+    let command = std::iter::once("merkur".to_string())
+        .chain(std::env::args().skip(1))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let report = if !merge.is_empty() {
+        campaign::merge(merge)?
+    } else {
+        let count = |flag: &str, v: &str| -> Result<Option<usize>, String> {
+            match v {
+                "all" => Ok(None),
+                x => x
+                    .parse::<usize>()
+                    .map(Some)
+                    .map_err(|_| format!("error: {flag} {x}: expected a number of cases or `all`")),
+            }
+        };
+        let doubles = match doubles.as_deref() {
+            None if *full => None,
+            None => Some(24),
+            Some(x) => count("--doubles", x)?,
+        };
+        let singles = match singles.as_deref() {
+            None => None,
+            Some(x) => count("--singles", x)?,
+        };
+        let default_ber = if *full {
+            "1e-3,1e-4,1e-5,1e-6,1e-7"
+        } else {
+            "1e-4"
+        };
+        let default_ppm = if *full { "250,500,1000" } else { "1000" };
+        let jobs = match jobs {
+            Some(0) => return Err("error: --jobs 0: at least one simulation must run".into()),
+            Some(j) => *j,
+            None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        };
+        let plan = campaign::Plan {
+            rings: if rings.is_empty() {
+                campaign::default_rings(*full)
+            } else {
+                rings.clone()
+            },
+            singles,
+            full: *full,
+            doubles,
+            ber: campaign::parse_list("--ber", ber.as_deref().unwrap_or(default_ber), 0.5)?,
+            ber_runs: *ber_runs,
+            ppm: campaign::parse_list("--ppm", ppm.as_deref().unwrap_or(default_ppm), 5000.0)?,
+            repairs: *repairs || *full,
+            seed: *seed,
+            jobs,
+            shard: match shard {
+                Some(s) => campaign::parse_shard(s)?,
+                None => (1, 1),
+            },
+            case: case.clone(),
+        };
+        campaign::run(&plan, command)?
+    };
+    match output {
+        Some(dir) => campaign::write(&report, dir)?,
+        None => print!("{}", campaign::markdown(&report)),
+    }
+    let bad = report.cases.iter().filter(|c| c.mismatches > 0).count();
+    let accepted: u32 = report.cases.iter().map(|c| c.accepted).sum();
+    eprintln!(
+        "{}: {} cases, {bad} with mismatches, {accepted} single-bit errors accepted",
+        if bad == 0 && accepted == 0 {
+            "PASS"
+        } else {
+            "FAIL"
+        },
+        report.cases.len()
+    );
+    Ok(bad == 0 && accepted == 0)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let r = match &cli.cmd {
@@ -219,6 +372,11 @@ fn main() -> ExitCode {
             Err(e) => Err(e),
         },
         Cmd::Demo { wave, model_only } => demo::run((!*model_only).then_some(wave.as_path())),
+        Cmd::Campaign { .. } => match campaign_cmd(&cli.cmd) {
+            Ok(true) => Ok(()),
+            Ok(false) => return ExitCode::from(1),
+            Err(e) => Err(e),
+        },
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,

@@ -210,10 +210,13 @@ fn demo_explains_the_line_break() {
 
 #[test]
 fn sim_refuses_what_the_rtl_does_not_run_and_bad_wave_names() {
-    let o = merkur(&["sim", "tb-data/chain9.toml"]);
+    let o = merkur(&["sim", "tb-data/ring8_ext_alarm.toml"]);
     assert!(!o.status.success());
     let e = text(&o.stderr);
-    assert!(e.contains("fault[0]") && e.contains("issue 5"), "{e}");
+    assert!(
+        e.contains("frame.alarm_bits = true") && e.contains("not simulated in RTL"),
+        "{e}"
+    );
     let o = merkur(&["sim", "tb-data/ring2.toml", "--wave", "/tmp/x.vcd"]);
     assert!(!o.status.success());
     let e = text(&o.stderr);
@@ -229,4 +232,88 @@ fn verilog_writes_the_ring_and_the_waivers() {
     assert!(v.contains("module merkur_ring(") && v.contains("merkur_master n2("));
     assert!(dir.join("waivers.vlt").exists());
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The bounded fault-injection campaign (issue 5, README): every single
+/// fibre break and node death of the 8-node ring, a seeded sample of double
+/// faults, one bit error rate and one clock-offset point, through RTL and
+/// model; any mismatch or accepted bit error fails. Shards merge to the
+/// same report.
+#[test]
+fn bounded_campaign_agrees_with_the_model() {
+    let dir = scratch("campaign");
+    let out = dir.to_str().unwrap();
+    let o = merkur(&["campaign", "--seed", "1", "-o", out]);
+    let err = text(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    let md = std::fs::read_to_string(dir.join("campaign.md")).unwrap();
+    for class in [
+        "break-primary",
+        "break-secondary",
+        "node-death",
+        "double",
+        "bit-errors",
+        "clock-offset",
+    ] {
+        assert!(
+            md.contains(&format!("| ring8 | {class} |")),
+            "{class}:\n{md}"
+        );
+    }
+    assert!(md.contains("0 single-bit errors accepted"), "{md}");
+    // Every single break (16 fibres) and death (7 nodes) ran.
+    let json = std::fs::read_to_string(dir.join("campaign.json")).unwrap();
+    let singles = ["break-primary", "break-secondary", "node-death"]
+        .iter()
+        .map(|c| json.matches(&format!("\"class\": \"{c}\"")).count())
+        .sum::<usize>();
+    assert_eq!(singles, 23, "{json}");
+    // Two shards merged give the same cases.
+    let mut parts = vec![];
+    for k in 1..=2 {
+        let d = dir.join(format!("shard{k}"));
+        let o = merkur(&[
+            "campaign",
+            "--seed",
+            "1",
+            "--shard",
+            &format!("{k}/2"),
+            "-o",
+            d.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        parts.push(d.join("campaign.json"));
+    }
+    let merged = dir.join("merged");
+    let o = merkur(&[
+        "campaign",
+        "--merge",
+        parts[0].to_str().unwrap(),
+        parts[1].to_str().unwrap(),
+        "-o",
+        merged.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let m = std::fs::read_to_string(merged.join("campaign.json")).unwrap();
+    assert_eq!(
+        m.matches("\"name\"").count(),
+        json.matches("\"name\"").count()
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn campaign_refuses_bad_arguments() {
+    for (args, want) in [
+        (&["campaign", "--shard", "3/2"][..], "--shard 3/2"),
+        (&["campaign", "--ber", "1e-3,x"][..], "--ber 1e-3,x"),
+        (&["campaign", "--doubles", "some"][..], "--doubles some"),
+        (&["campaign", "--jobs", "0"][..], "--jobs 0"),
+        (&["campaign", "--case", "nope"][..], "--case nope"),
+    ] {
+        let o = merkur(args);
+        assert!(!o.status.success(), "{args:?}");
+        let e = text(&o.stderr);
+        assert!(e.contains(want) && !e.contains("panicked"), "{args:?}: {e}");
+    }
 }

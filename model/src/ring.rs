@@ -1259,7 +1259,7 @@ fn rx_slot(r: Rx) -> Slot {
 }
 
 /// Recovery windows the spec promises (docs/protocol.md §13): for each
-/// structural fault at cycle c, cycles c..=c+2 (break, kill) or c..=c+3
+/// structural fault at cycle c, cycles c..=c+3 (break, kill) or c..=c+4
 /// (repair). Bit flips have none. Returned as (first, last, description),
 /// clipped to the run.
 pub fn windows(cfg: &Config) -> Vec<(u32, u32, String)> {
@@ -1268,8 +1268,8 @@ pub fn windows(cfg: &Config) -> Vec<(u32, u32, String)> {
         .iter()
         .filter_map(|(c, f)| {
             let len = match f {
-                Fault::Break { .. } | Fault::Kill { .. } => 2,
-                Fault::Repair { .. } => 3,
+                Fault::Break { .. } | Fault::Kill { .. } => 3,
+                Fault::Repair { .. } => 4,
                 Fault::Flip { .. } => return None,
             };
             Some((*c, (*c + len).min(last), f.to_string()))

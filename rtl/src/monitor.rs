@@ -19,8 +19,19 @@
 //! | `o_inpkt` | out | 1 | clock | inside a packet |
 //! | `o_wvalid` … `o_ptype` | out | | clock | as [`RxWord`] |
 //!
+//! **Confirmation.** A word is passed on only when the line shows an edge
+//! (a code 1) after its last bit: every group that can follow a word (data,
+//! S, idle) has a 1 in its first two bits. A word the line died in would
+//! otherwise be completed by the zeros the clock recovery reads from a dark
+//! line before it mutes, and could pass both parities with a foreign
+//! value; with no recovered bit for [`DROP_CLOCKS`] clocks the held word is dropped
+//! (not received, as the model's "missing") and the packet ends there. Upstream nodes keep their line
+//! dark after such a stop ([`crate::retime::DARK_BITS`]), so no idle can
+//! confirm it either.
+//!
 //! Latency from a word's last line bit to `o_wvalid`: CDR 2–3 clocks +
-//! framer 1 + word 1 ≈ 2.5 bit times.
+//! framer 1 + word 1 ≈ 2.5 bit times, plus up to 2 bit times until the
+//! confirming edge.
 //!
 //! ```text
 //! line      ~~~| J K | H0 | H1 | slot 0 | ... | slot S-1 |~~~ idle
@@ -83,7 +94,26 @@ pub struct Monitor {
     cdr: Cdr,
     framer: RxFramer,
     word: RxWord,
+    last_lvl: DFF<Bit>,
+    quiet: DFF<Bits<3>>,
+    p_valid: DFF<Bit>,
+    p_kind: DFF<Bits<2>>,
+    p_slot: DFF<Bits<12>>,
+    p_data: DFF<Bits<16>>,
+    p_alive: DFF<Bit>,
+    p_alarm: DFF<Bit>,
+    p_reason: DFF<Bits<4>>,
+    p_ok: DFF<Bit>,
+    p_void: DFF<Bit>,
+    p_own: DFF<Bit>,
+    p_ptype: DFF<Bits<2>>,
+    conf_edge: Signal<Local, Bit>,
+    drop_after: Constant<Bits<3>>,
 }
+
+/// Clocks without a recovered bit after which a held word is dropped (a
+/// live line gives a bit every 2 clocks, 3 at most).
+pub const DROP_CLOCKS: u64 = 4;
 
 impl Monitor {
     /// A monitor for basic (`ext = false`) or extended-alarm words.
@@ -114,6 +144,21 @@ impl Monitor {
             cdr: Default::default(),
             framer: RxFramer::new(),
             word: RxWord::new(ext),
+            last_lvl: Default::default(),
+            quiet: Default::default(),
+            p_valid: Default::default(),
+            p_kind: Default::default(),
+            p_slot: Default::default(),
+            p_data: Default::default(),
+            p_alive: Default::default(),
+            p_alarm: Default::default(),
+            p_reason: Default::default(),
+            p_ok: Default::default(),
+            p_void: Default::default(),
+            p_own: Default::default(),
+            p_ptype: Default::default(),
+            conf_edge: Default::default(),
+            drop_after: Constant::new(DROP_CLOCKS.to_bits()),
         }
     }
 }
@@ -121,13 +166,22 @@ impl Monitor {
 impl Logic for Monitor {
     #[hdl_gen]
     fn update(&mut self) {
+        dff_setup!(
+            self, clock, last_lvl, quiet, p_valid, p_kind, p_slot, p_data, p_alive, p_alarm,
+            p_reason, p_ok, p_void, p_own, p_ptype
+        );
         self.cdr.clock.next = self.clock.val();
         self.framer.clock.next = self.clock.val();
         self.word.clock.next = self.clock.val();
         self.cdr.i_samples.next = self.i_samples.val();
         self.framer.i_valid.next = self.cdr.o_valid.val();
         self.framer.i_level.next = self.cdr.o_bit.val();
-        self.framer.i_end.next = self.word.o_end.val() | self.cdr.o_los.val();
+        // A packet ends after its last word, at the third idle group (rx_word),
+        // or when the line goes quiet (the clock recovery muted: a dead or
+        // switched line; what comes next is another stream).
+        self.framer.i_end.next = self.word.o_end.val()
+            | self.cdr.o_los.val()
+            | (self.quiet.q.val() == self.drop_after.val());
         self.word.i_start.next = self.framer.o_start.val();
         self.word.i_gvalid.next = self.framer.o_gvalid.val();
         self.word.i_group.next = self.framer.o_group.val();
@@ -139,17 +193,61 @@ impl Logic for Monitor {
         self.o_phase.next = self.cdr.o_phase.val();
         self.o_start.next = self.framer.o_start.val();
         self.o_inpkt.next = self.framer.o_inpkt.val();
-        self.o_wvalid.next = self.word.o_wvalid.val();
-        self.o_kind.next = self.word.o_kind.val();
-        self.o_slot.next = self.word.o_slot.val();
-        self.o_data.next = self.word.o_data.val();
-        self.o_alive.next = self.word.o_alive.val();
-        self.o_alarm.next = self.word.o_alarm.val();
-        self.o_reason.next = self.word.o_reason.val();
-        self.o_ok.next = self.word.o_ok.val();
-        self.o_void.next = self.word.o_void.val();
-        self.o_own.next = self.word.o_own.val();
         self.o_hdr_bad.next = self.word.o_hdr_bad.val();
-        self.o_ptype.next = self.word.o_ptype.val();
+        // Confirmation: a code 1 (the level changes) after the word.
+        self.conf_edge.next =
+            self.cdr.o_valid.val() & (self.cdr.o_bit.val() != self.last_lvl.q.val());
+        if self.cdr.o_valid.val() {
+            self.last_lvl.d.next = self.cdr.o_bit.val();
+            self.quiet.d.next = 0.into();
+        } else if self.quiet.q.val() != 7 {
+            self.quiet.d.next = self.quiet.q.val() + 1;
+        }
+        // The word on the outputs: the held one, or the new one when the
+        // edge comes in its own clock.
+        self.o_wvalid.next = false;
+        self.o_kind.next = self.p_kind.q.val();
+        self.o_slot.next = self.p_slot.q.val();
+        self.o_data.next = self.p_data.q.val();
+        self.o_alive.next = self.p_alive.q.val();
+        self.o_alarm.next = self.p_alarm.q.val();
+        self.o_reason.next = self.p_reason.q.val();
+        self.o_ok.next = self.p_ok.q.val();
+        self.o_void.next = self.p_void.q.val();
+        self.o_own.next = self.p_own.q.val();
+        self.o_ptype.next = self.p_ptype.q.val();
+        if self.p_valid.q.val() & self.conf_edge.val() {
+            self.o_wvalid.next = true;
+            self.p_valid.d.next = false;
+        }
+        if self.p_valid.q.val() & (self.quiet.q.val() == self.drop_after.val()) {
+            self.p_valid.d.next = false;
+        }
+        if self.word.o_wvalid.val() {
+            self.p_valid.d.next = !self.conf_edge.val();
+            self.p_kind.d.next = self.word.o_kind.val();
+            self.p_slot.d.next = self.word.o_slot.val();
+            self.p_data.d.next = self.word.o_data.val();
+            self.p_alive.d.next = self.word.o_alive.val();
+            self.p_alarm.d.next = self.word.o_alarm.val();
+            self.p_reason.d.next = self.word.o_reason.val();
+            self.p_ok.d.next = self.word.o_ok.val();
+            self.p_void.d.next = self.word.o_void.val();
+            self.p_own.d.next = self.word.o_own.val();
+            self.p_ptype.d.next = self.word.o_ptype.val();
+            if self.conf_edge.val() {
+                self.o_wvalid.next = true;
+                self.o_kind.next = self.word.o_kind.val();
+                self.o_slot.next = self.word.o_slot.val();
+                self.o_data.next = self.word.o_data.val();
+                self.o_alive.next = self.word.o_alive.val();
+                self.o_alarm.next = self.word.o_alarm.val();
+                self.o_reason.next = self.word.o_reason.val();
+                self.o_ok.next = self.word.o_ok.val();
+                self.o_void.next = self.word.o_void.val();
+                self.o_own.next = self.word.o_own.val();
+                self.o_ptype.next = self.word.o_ptype.val();
+            }
+        }
     }
 }

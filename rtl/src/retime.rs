@@ -30,10 +30,11 @@
 //! ones: the line toggles every bit) on its own bit grid; from the second
 //! bit on it sends the buffer, from the grid's next boundary. A send with an empty buffer
 //! (underflow: the input stopped) or a write into a full one (overflow)
-//! pulses `o_slip`, empties the buffer and goes back to idles, so a
-//! downstream receiver sees a live line (an idle run ends a truncated
-//! packet, [`crate::rx_word`]); the next bits start again. A live stream
-//! within ±2000 ppm never slips.
+//! pulses `o_slip` and empties the buffer; after an underflow the line
+//! stays dark for [`DARK_BITS`] bit times (a downstream receiver mutes and
+//! drops the word the input stopped in, [`crate::monitor`]) and then sends
+//! idles, so it sees a live line again well before loss of signal; the
+//! next bits start again. A live stream within ±2000 ppm never slips.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -59,6 +60,10 @@ use rust_hdl::prelude::*;
 
 /// Target wait of a bit in the buffer, receive samples (quarter clocks).
 pub const TARGET: u64 = 20;
+/// Bit times the line stays dark after an underflow: more than the 5 after
+/// which a receiver's clock recovery mutes ([`crate::cdr::MUTE_SAMPLES`]),
+/// well under the 16 of loss of signal.
+pub const DARK_BITS: u64 = 8;
 /// Dead band around [`TARGET`], receive samples.
 pub const BAND: u64 = 4;
 /// Writes in a row outside the band before a correction.
@@ -83,6 +88,7 @@ pub struct Retime {
     pub o_line: Signal<Out, Bits<2>>,
     /// The buffer under- or overflowed.
     pub o_slip: Signal<Out, Bit>,
+    dark_bits: Constant<Bits<4>>,
     hi_limit: Constant<Bits<8>>,
     lo_limit: Constant<Bits<8>>,
     votes: Constant<Bits<3>>,
@@ -93,6 +99,7 @@ pub struct Retime {
     rem: DFF<Bits<3>>,
     lvl: DFF<Bit>,
     run: DFF<Bit>,
+    dark: DFF<Bits<4>>,
     hi: DFF<Bits<3>>,
     lo: DFF<Bits<3>>,
     gap: DFF<Bits<4>>,
@@ -118,6 +125,7 @@ impl Default for Retime {
             i_phase: Default::default(),
             o_line: Default::default(),
             o_slip: Default::default(),
+            dark_bits: Constant::new(DARK_BITS.to_bits()),
             hi_limit: Constant::new((TARGET + BAND).to_bits()),
             lo_limit: Constant::new((TARGET - BAND).to_bits()),
             votes: Constant::new(VOTES.to_bits()),
@@ -128,6 +136,7 @@ impl Default for Retime {
             rem: Default::default(),
             lvl: Default::default(),
             run: Default::default(),
+            dark: Default::default(),
             hi: Default::default(),
             lo: Default::default(),
             gap: Default::default(),
@@ -149,7 +158,7 @@ impl Default for Retime {
 impl Logic for Retime {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, sr, cnt, rem, lvl, run, hi, lo, gap, pair, slip);
+        dff_setup!(self, clock, sr, cnt, rem, lvl, run, dark, hi, lo, gap, pair, slip);
         // A bit boundary in the first or the second half of this clock (the
         // bit grid runs always; without buffered bits it sends idles).
         self.send0.next = self.rem.q.val() == 0;
@@ -180,9 +189,12 @@ impl Logic for Retime {
             self.oldest.next = self.sr.q.val().get_bit(7);
         }
         self.new_lvl.next = self.lvl.q.val();
-        if self.send0.val() | self.send1.val() {
+        if (self.send0.val() | self.send1.val()) & (self.dark.q.val() == 0) {
             // An idle bit (NRZI 1: the level toggles).
             self.new_lvl.next = !self.lvl.q.val();
+        }
+        if (self.send0.val() | self.send1.val()) & (self.dark.q.val() != 0) {
+            self.dark.d.next = self.dark.q.val() - 1;
         }
         if self.take.val() {
             // Code bits, not levels, are buffered, so the line stays
@@ -296,6 +308,10 @@ impl Logic for Retime {
         self.rem.d.next = self.rem_next.val();
         self.cnt.d.next = self.cnt_next.val();
         self.slip.d.next = false;
+        if self.dark.q.val() != 0 {
+            // Dark after an underflow: what arrives is not sent.
+            self.cnt_next.next = 0.into();
+        }
         if !self.run.q.val() & self.i_valid.val() & (self.cnt_next.val() == 2) {
             // The second bit: send from the next bit boundary on (the grid
             // keeps its phase, so the line has no short bit; the wait is
@@ -312,6 +328,13 @@ impl Logic for Retime {
             self.slip.d.next = true;
             self.run.d.next = false;
             self.cnt.d.next = 0.into();
+        }
+        if (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0) {
+            // Underflow (the input stopped): the line stays dark for
+            // DARK_BITS, so that downstream receivers mute and drop a word
+            // that was cut short (its last bits would otherwise be
+            // completed by idles), then idles again.
+            self.dark.d.next = self.dark_bits.val();
         }
         self.o_line.next = self.pair.q.val();
         self.o_slip.next = self.slip.q.val();

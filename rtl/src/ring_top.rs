@@ -29,8 +29,11 @@
 //! in bit 0). A node clock period of 3 or 5 ticks (how the accumulator
 //! makes the offset) moves that node's edges or samples by one tick = one
 //! receive sample; the receiver's margin (`cdr`, `retime`) covers it. Each
-//! fibre has a **fault point** (break: the line goes dark; flip: the line is
-//! inverted for 8 ticks = one bit time) and a **monitor** (clock recovery,
+//! fibre has a **fault point** (break: the line goes dark, as when its
+//! sender dies; flip: one line bit of the next packet is inverted, on the
+//! sender's own bit grid — the harness finds it from the line's edges, a
+//! boundary every 4 DDR halves between them — so the receiver sees exactly
+//! the single line-bit error the model applies) and a **monitor** (clock recovery,
 //! framer, word decoder at the nominal rate) whose DATA words are captured
 //! per cycle: entry `(cyc & 3) · CAP + slot` holds `{CYC[2:0], status[1:0],
 //! ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3 VOID; a slot
@@ -85,7 +88,9 @@ pub mod cfg {
     pub const BREAK: u32 = 8;
     /// Node: 1 dead (both its output fibres dark), 0 alive.
     pub const KILL: u32 = 10;
-    /// Fibre: invert the line for one bit time, now.
+    /// Fibre: arm a flip of line bit `val[11:0]` of the next packet (bit 0 =
+    /// the first bit of its J K; counted from J's first 0 code bit, so
+    /// bits 0 and 1 cannot be hit and are refused by the driver).
     pub const FLIP: u32 = 9;
     /// Global: slots − 1.
     pub const SLOTS_M1: u32 = 16;
@@ -282,8 +287,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20   wire [1:0] mode_{k};\n\
                  \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
                  \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
-                 \x20   reg [31:0] inc_{k} = 32'h40000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0, fired2_{k} = 1'b0;\n    reg dead_{k} = 1'b0;\n\
-                 \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n        fired2_{k} <= fired_{k};\n\
+                 \x20   reg [31:0] inc_{k} = 32'h40000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0, fired2_{k} = 1'b0, selp_{k} = 1'b0;\n    reg dead_{k} = 1'b0;\n    // A new half of the node's DDR output pair starts on the line (tick resolution).\n    wire hs_{k} = fired_{k} | (selp_{k} & !fired2_{k});\n\
+                 \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n        fired2_{k} <= fired_{k};\n        selp_{k} <= fired_{k} | fired2_{k};\n\
                  \x20       if ({h_inc}) inc_{k} <= i_cfg_val;\n\
                  \x20       if ({h_phase}) acc_{k} <= i_cfg_val;\n        if ({h_kill}) dead_{k} <= i_cfg_val[0];\n    end\n\
                  \x20   always @(negedge clk) enl_{k} <= en_{k};\n    wire nclk_{k} = clk & enl_{k};\n\
@@ -388,12 +393,33 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             &mut v,
             &format!(
                 "    // ---- fibre {name} (from node {src}) ----\n\
-                 \x20   reg line_{f} = 1'b0, brk_{f} = 1'b0;\n    reg [2:0] sh_{f} = 3'd0;\n    reg [3:0] flip_{f} = 4'd0;\n\
+                 \x20   reg line_{f} = 1'b0, brk_{f} = 1'b0;\n    reg [2:0] sh_{f} = 3'd0;\n\
                  \x20   wire txl_{f} = (fired_{src} | fired2_{src}) ? {port}_{src}[0] : {port}_{src}[1];\n\
-                 \x20   always @(posedge clk) begin\n        line_{f} <= (brk_{f} | dead_{src}) ? 1'b0 : (txl_{f} ^ (flip_{f} != 4'd0));\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
-                 \x20       if (flip_{f} != 4'd0) flip_{f} <= flip_{f} - 4'd1;\n\
+                 \x20   // Flip point. The sender's bit grid from its line (a boundary at every edge, else 4 DDR halves after the last;\n\
+                 \x20   // a 5-half bit shows as an edge one half after a boundary without one, so such a boundary is confirmed a half\n\
+                 \x20   // later), code 1s in a row, and the armed flip: J found (its first 0 code bit after 5 or more 1s), count to line\n\
+                 \x20   // bit fl_tgt, invert from that boundary to the next. The line is the sender's delayed by 4 ticks, so a flip\n\
+                 \x20   // decided a half late still starts on time.\n\
+                 \x20   reg hp_{f} = 1'b0, pend_{f} = 1'b0, fl_arm_{f} = 1'b0, fl_run_{f} = 1'b0, fl_open_{f} = 1'b0;\n\
+                 \x20   reg [2:0] hc_{f} = 3'd0, ones_{f} = 3'd0;\n    reg [3:0] txd_{f} = 4'd0;\n    reg [11:0] fl_tgt_{f} = 12'd0, fl_cnt_{f} = 12'd0;\n\
+                 \x20   reg [31:0] tc_{f} = 32'd0, fl_is_{f} = 32'hffffffff, fl_ie_{f} = 32'hffffffff;\n\
+                 \x20   wire edge_{f} = txl_{f} != hp_{f};\n    wire [2:0] hn_{f} = hc_{f} + 3'd1;\n\
+                 \x20   wire b1_{f} = hs_{src} & edge_{f};\n    wire b0_{f} = hs_{src} & !edge_{f} & pend_{f};\n\
+                 \x20   wire bev_{f} = b1_{f} | b0_{f};\n    wire [31:0] bt_{f} = b1_{f} ? tick : tc_{f};\n\
+                 \x20   wire jdet_{f} = b0_{f} & (ones_{f} >= 3'd5) & fl_arm_{f};\n\
+                 \x20   wire hit_{f} = (jdet_{f} & fl_tgt_{f} == 12'd2) | (bev_{f} & fl_run_{f} & fl_cnt_{f} == 12'd1);\n\
+                 \x20   wire [31:0] tickd_{f} = tick - 32'd4;\n    wire inv_{f} = (tickd_{f} >= fl_is_{f}) & (tickd_{f} < fl_ie_{f});\n\
+                 \x20   always @(posedge clk) begin\n        txd_{f} <= {{txd_{f}[2:0], txl_{f}}};\n\
+                 \x20       line_{f} <= (brk_{f} | dead_{src}) ? 1'b0 : (txd_{f}[3] ^ inv_{f});\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
+                 \x20       if (hs_{src}) begin\n            hp_{f} <= txl_{f};\n\
+                 \x20           if (edge_{f}) begin\n                hc_{f} <= 3'd0;\n                pend_{f} <= 1'b0;\n            end else if (pend_{f}) begin\n                hc_{f} <= 3'd1;\n                pend_{f} <= 1'b0;\n\
+                 \x20           end else begin\n                hc_{f} <= hn_{f};\n                if (hn_{f} == 3'd4) begin\n                    pend_{f} <= 1'b1;\n                    tc_{f} <= tick;\n                end\n            end\n        end\n\
+                 \x20       if (bev_{f}) begin\n            ones_{f} <= b0_{f} ? 3'd0 : (ones_{f} == 3'd7 ? 3'd7 : ones_{f} + 3'd1);\n\
+                 \x20           if (jdet_{f}) begin\n                fl_arm_{f} <= 1'b0;\n                fl_run_{f} <= fl_tgt_{f} > 12'd2;\n                fl_cnt_{f} <= fl_tgt_{f} - 12'd2;\n\
+                 \x20           end else if (fl_run_{f}) begin\n                fl_cnt_{f} <= fl_cnt_{f} - 12'd1;\n                if (fl_cnt_{f} == 12'd1) fl_run_{f} <= 1'b0;\n            end\n\
+                 \x20           if (hit_{f}) begin\n                fl_is_{f} <= bt_{f};\n                fl_ie_{f} <= 32'hffffffff;\n                fl_open_{f} <= 1'b1;\n            end else if (fl_open_{f}) begin\n                fl_ie_{f} <= bt_{f};\n                fl_open_{f} <= 1'b0;\n            end\n        end\n\
                  \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_brk}) brk_{f} <= i_cfg_val[0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) flip_{f} <= 4'd{TICKS_PER_BIT};\n    end\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) begin\n            fl_arm_{f} <= 1'b1;\n            fl_run_{f} <= 1'b0;\n            fl_tgt_{f} <= i_cfg_val[11:0];\n        end\n    end\n\
                  \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
                  \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                  \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff),\n\

@@ -133,7 +133,11 @@ pub struct Slave {
     mode: DFF<Bits<2>>,
     failsafe: DFF<Bit>,
     rw: DFF<Bit>,
+    h0_rwc: DFF<Bit>,
     armed: DFF<Bit>,
+    last_cyc: DFF<Bits<3>>,
+    ferr_owed: DFF<Bits<3>>,
+    cyc_gap: Signal<Local, Bits<3>>,
     quiet: DFF<Bits<16>>,
     grace: DFF<Bits<16>>,
     settle: DFF<Bits<7>>,
@@ -209,7 +213,11 @@ impl Slave {
             mode: Default::default(),
             failsafe: Default::default(),
             rw: Default::default(),
+            h0_rwc: Default::default(),
             armed: Default::default(),
+            last_cyc: Default::default(),
+            ferr_owed: Default::default(),
+            cyc_gap: Default::default(),
             quiet: Default::default(),
             grace: Default::default(),
             settle: Default::default(),
@@ -236,7 +244,8 @@ impl Logic for Slave {
     fn update(&mut self) {
         dff_setup!(
             self, clock, mode, failsafe, rw, armed, quiet, grace, settle, ack_time, seen_ack,
-            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_last, rep_cut, fwd_cut
+            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_last, rep_cut, fwd_cut,
+            last_cyc, ferr_owed, h0_rwc
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -361,10 +370,13 @@ impl Logic for Slave {
         if self.i_fs_req.val() {
             self.pend_fs.d.next = true;
         }
+        self.cyc_gap.next = self.rx_in.o_data.val().get_bits::<3>(12) - self.last_cyc.q.val() - 1;
         // What INPUT's headers say: FS, ring wrapped (RWC in H0, RWP in H1).
         if self.rx_in.o_wvalid.val() & self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 0) {
             if self.rx_in.o_kind.val() == 0 {
-                self.rw.d.next = self.rx_in.o_data.val().get_bit(12) | self.wrapped.val();
+                // RWC waits for H1 (RWP): the node's knowledge changes once
+                // per header, not for the 25 bit times between its words.
+                self.h0_rwc.d.next = self.rx_in.o_data.val().get_bit(12);
                 if self.rx_in.o_data.val().get_bit(13) {
                     self.failsafe.d.next = true;
                 }
@@ -372,9 +384,14 @@ impl Logic for Slave {
             if self.rx_in.o_kind.val() == 1 {
                 self.armed.d.next = true;
                 self.quiet.d.next = 0.into();
-                if self.rx_in.o_data.val().get_bit(15) {
-                    self.rw.d.next = true;
+                // Cycles without a good frame: the gap in CYC since the
+                // last one (counted when the next one comes).
+                self.last_cyc.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
+                if self.armed.q.val() {
+                    self.ferr_owed.d.next = self.cyc_gap.val();
                 }
+                self.rw.d.next =
+                    self.h0_rwc.q.val() | self.rx_in.o_data.val().get_bit(15) | self.wrapped.val();
             }
             // Actuator output register: its own slot, good data.
             if (self.rx_in.o_kind.val() == 2)
@@ -386,16 +403,21 @@ impl Logic for Slave {
                 self.act_data.d.next = self.rx_in.o_data.val();
             }
         }
-        // Error counters (saturating).
+        // Error counters (saturating): bad slot words; missed cycles, one
+        // per clock from the CYC gap.
         if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 2)
             & !self.rx_in.o_ok.val()
             & !self.rx_in.o_void.val()
             & (self.perr.q.val() != 0xffff)
         {
             self.perr.d.next = self.perr.q.val() + 1;
         }
-        if self.rx_in.o_hdr_bad.val() & (self.ferr.q.val() != 0xffff) {
-            self.ferr.d.next = self.ferr.q.val() + 1;
+        if self.ferr_owed.q.val() != 0 {
+            self.ferr_owed.d.next = self.ferr_owed.q.val() - 1;
+            if self.ferr.q.val() != 0xffff {
+                self.ferr.d.next = self.ferr.q.val() + 1;
+            }
         }
         if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
             self.failsafe.d.next = true;
@@ -498,6 +520,8 @@ impl Logic for Slave {
         }
         self.rep.i_phase.next = self.rx_bsr.o_phase.val();
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
+        // At a switch the TST generator starts with a dark lead-in.
+        self.tst.i_restart.next = self.new_mode.val() != self.mode.q.val();
         self.tst.i_address.next = self.i_address.val();
         self.bss_pair.next = self.rep.o_line.val();
         if self.wrapped.val() {

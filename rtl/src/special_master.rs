@@ -26,9 +26,10 @@
 //! not sent round again); a SEC is sent at the cycle's start only when the
 //! last returned frame had RWC = 0 (protocol §8).
 //!
-//! Limits (this version): the special master itself stays in mode N — it
-//! does not wrap or reintegrate; a ring whose fault is next to the special
-//! master is not supported yet.
+//! Switchbox: like every node ([`crate::slave`]; protocol §10) it wraps
+//! when its INPUT or BSR fails (frames then leave on OUTPUT and return on
+//! INPUT of its row of Table 1, headers carry RWC, no SEC is sent, BSS
+//! carries TST), reintegrates, and sends RECONFIG alarms in its home slot.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -42,7 +43,7 @@
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received |
-//! | `o_mode` | out | 2 | clock | switchbox mode (always 0, N) |
+//! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD) |
 //! | `o_failsafe` | out | 1 | clock | failsafe |
 //! | `o_perr`, `o_ferr`, `o_aerr`, `o_serr` | out | 16 | clock | error counters (`serr`: SEC packets that did not return) |
 //! | `o_hop` | out | 12 | clock | HOP of the last returned frame (N − 1 in a healthy ring) |
@@ -63,6 +64,9 @@ use crate::mdb::Mdb;
 use crate::pkt_tx::PktTx;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
+use crate::slave::{REINTEGRATE_CLOCKS, SETTLE_CLOCKS};
+use crate::switchbox::Switchbox;
+use crate::tst_tx::TstTx;
 use rust_hdl::prelude::*;
 
 /// Bits the secondary relay holds a packet back while the header shows
@@ -143,6 +147,21 @@ pub struct SpecialMaster {
     ftx: PktTx,
     stx: PktTx,
     rep: Retime,
+    sbox: Switchbox,
+    tst: TstTx,
+    reintegrate: Constant<Bits<9>>,
+    settle_start: Constant<Bits<7>>,
+    mode: DFF<Bits<2>>,
+    settle: DFF<Bits<7>>,
+    grace: DFF<Bits<16>>,
+    ack_time: DFF<Bits<9>>,
+    seen_ack: DFF<Bit>,
+    pend_rc: DFF<Bit>,
+    ret_rwp: DFF<Bit>,
+    new_mode: Signal<Local, Bits<2>>,
+    wrapped: Signal<Local, Bit>,
+    rw: Signal<Local, Bit>,
+    bss_pair: Signal<Local, Bits<2>>,
     relay_len: Constant<Bits<7>>,
     rdl: DFF<Bits<76>>,
     rcd: DFF<Bits<7>>,
@@ -166,6 +185,8 @@ pub struct SpecialMaster {
     ret_cyc: DFF<Bits<3>>,
     hop: DFF<Bits<12>>,
     armed: DFF<Bit>,
+    ferr_owed: DFF<Bits<3>>,
+    cyc_gap: Signal<Local, Bits<3>>,
     quiet: DFF<Bits<16>>,
     sec_sent: DFF<Bit>,
     sec_ok: DFF<Bit>,
@@ -233,6 +254,21 @@ impl Default for SpecialMaster {
             ftx: Default::default(),
             stx: Default::default(),
             rep: Default::default(),
+            sbox: Default::default(),
+            tst: Default::default(),
+            reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
+            settle_start: Constant::new(SETTLE_CLOCKS.to_bits()),
+            mode: Default::default(),
+            settle: Default::default(),
+            grace: Default::default(),
+            ack_time: Default::default(),
+            seen_ack: Default::default(),
+            pend_rc: Default::default(),
+            ret_rwp: Default::default(),
+            new_mode: Default::default(),
+            wrapped: Default::default(),
+            rw: Default::default(),
+            bss_pair: Default::default(),
             relay_len: Constant::new((RELAY_BITS - 14).to_bits()),
             rdl: Default::default(),
             rcd: Default::default(),
@@ -256,6 +292,8 @@ impl Default for SpecialMaster {
             ret_cyc: Default::default(),
             hop: Default::default(),
             armed: Default::default(),
+            ferr_owed: Default::default(),
+            cyc_gap: Default::default(),
             quiet: Default::default(),
             sec_sent: Default::default(),
             sec_ok: Default::default(),
@@ -292,8 +330,16 @@ impl Logic for SpecialMaster {
         dff_setup!(
             self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, fs_tx, ret_rwc, ret_cyc,
             hop, armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1,
-            pend_i2, prev_alarm, rdl, rcd, rcd_run, rdata, relay, rlast
+            pend_i2, prev_alarm, ferr_owed, rdl, rcd, rcd_run, rdata, relay, rlast, mode, settle,
+            grace, ack_time, seen_ack, pend_rc, ret_rwp
         );
+        self.sbox.i_mode.next = self.mode.q.val();
+        self.sbox.i_pi.next = self.i_pi.val();
+        self.sbox.i_si.next = self.i_si.val();
+        self.tst.clock.next = self.clock.val();
+        self.wrapped.next = self.mode.q.val() != 0;
+        // The ring is wrapped: this node, or the last returned header.
+        self.rw.next = self.wrapped.val() | self.ret_rwc.q.val() | self.ret_rwp.q.val();
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
         self.ftx.clock.next = self.clock.val();
@@ -307,14 +353,16 @@ impl Logic for SpecialMaster {
         self.aact.write_clock.next = self.clock.val();
 
         // Receive ports (mode N: INPUT = PI, BSR = SI).
-        self.rx_in.i_samples.next = self.i_pi.val();
-        self.rx_bsr.i_samples.next = self.i_si.val();
+        self.rx_in.i_samples.next = self.sbox.o_input.val();
+        self.rx_bsr.i_samples.next = self.sbox.o_bsr.val();
         self.rx_in.i_slots_m1.next = self.i_slots_m1.val();
         self.rx_bsr.i_slots_m1.next = self.i_slots_m1.val();
         self.rx_in.i_address.next = self.i_address.val();
         self.rx_bsr.i_address.next = self.i_address.val();
-        self.rx_in.i_tst_fail.next = false;
-        self.rx_bsr.i_tst_fail.next = false;
+        // In mode N a TST where DATA is expected is a failure; not during
+        // the grace period after unwrapping.
+        self.rx_in.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
+        self.rx_bsr.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
 
         // The period: one tick every i_period bit times once running.
         self.half.d.next = !self.half.q.val();
@@ -334,6 +382,9 @@ impl Logic for SpecialMaster {
         if self.failsafe.q.val() {
             self.h0.next = self.h0.val() | 0x2000;
         }
+        if self.wrapped.val() {
+            self.h0.next = self.h0.val() | 0x1000;
+        }
         self.h1.next = 0.into();
         if self.ret_rwc.q.val() {
             self.h1.next = 0x8000.into();
@@ -346,7 +397,7 @@ impl Logic for SpecialMaster {
         self.ftx.i_slots_m1.next = self.i_slots_m1.val();
         self.ftx.i_h0.next = self.h0.val();
         self.ftx.i_h1.next = self.h1.val();
-        self.stx.i_start.next = self.tick.val() & !self.ret_rwc.q.val();
+        self.stx.i_start.next = self.tick.val() & !self.ret_rwc.q.val() & !self.wrapped.val();
         self.stx.i_slots.next = false;
         self.stx.i_slots_m1.next = self.i_slots_m1.val();
         self.stx.i_h0.next = self.sec_h0.val();
@@ -373,16 +424,28 @@ impl Logic for SpecialMaster {
         self.w_alarm.next = self.st.val().get_bit(17);
         self.w_void.next = !self.st_ok.val();
         self.home.next = self.ftx.o_slot.val() == self.i_address.val();
-        // Alarm queue of the home slot: FAILSAFE > IRQ1 > IRQ2.
+        // Alarm queue of the home slot: FAILSAFE > RECONFIG > IRQ1 > IRQ2.
         self.reason.next = 2.into();
         if self.pend_i1.q.val() {
             self.reason.next = 1.into();
+        }
+        if self.pend_rc.q.val() {
+            self.reason.next = 4.into();
+            if self.mode.q.val() == 1 {
+                self.reason.next = 5.into();
+            }
+            if self.mode.q.val() == 2 {
+                self.reason.next = 6.into();
+            }
         }
         if self.pend_fs.q.val() {
             self.reason.next = 3.into();
         }
         self.send_alarm.next = self.home.val()
-            & (self.pend_fs.q.val() | self.pend_i1.q.val() | self.pend_i2.q.val())
+            & (self.pend_fs.q.val()
+                | self.pend_rc.q.val()
+                | self.pend_i1.q.val()
+                | self.pend_i2.q.val())
             & !self.prev_alarm.q.val();
         if !self.fs_tx.q.val() {
             if self.mdb.o_tx_local.val() {
@@ -431,8 +494,10 @@ impl Logic for SpecialMaster {
                     self.failsafe.d.next = true;
                 } else if self.reason.val() == 1 {
                     self.pend_i1.d.next = false;
-                } else {
+                } else if self.reason.val() == 2 {
                     self.pend_i2.d.next = false;
+                } else {
+                    self.pend_rc.d.next = false;
                 }
             }
         }
@@ -461,7 +526,7 @@ impl Logic for SpecialMaster {
             if self.cycles.q.val() != 0xffff {
                 self.cycles.d.next = self.cycles.q.val() + 1;
             }
-            self.sec_sent.d.next = !self.ret_rwc.q.val();
+            self.sec_sent.d.next = !self.ret_rwc.q.val() & !self.wrapped.val();
             self.sec_ok.d.next = false;
             if self.sec_sent.q.val() & !self.sec_ok.q.val() & (self.serr.q.val() != 0xffff) {
                 self.serr.d.next = self.serr.q.val() + 1;
@@ -476,6 +541,7 @@ impl Logic for SpecialMaster {
             self.sec_ok.d.next = true;
         }
 
+        self.cyc_gap.next = self.rx_in.o_data.val().get_bits::<3>(12) - self.ret_cyc.q.val() - 1;
         // The returning frame (protocol §5, §8, §12); a good header
         // restarts the CS timeout.
         if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
@@ -490,6 +556,11 @@ impl Logic for SpecialMaster {
             }
             if self.rx_in.o_kind.val() == 1 {
                 self.ret_cyc.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
+                self.ret_rwp.d.next = self.rx_in.o_data.val().get_bit(15);
+                // Cycles without a good frame back: the gap in CYC.
+                if self.armed.q.val() {
+                    self.ferr_owed.d.next = self.cyc_gap.val();
+                }
                 self.hop.d.next = self.rx_in.o_data.val().get_bits::<12>(0);
                 self.armed.d.next = true;
                 self.quiet.d.next = 0.into();
@@ -498,15 +569,80 @@ impl Logic for SpecialMaster {
         if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
             self.failsafe.d.next = true;
         }
+        if self.grace.q.val() != 0 {
+            self.grace.d.next = self.grace.q.val() - 1;
+        }
+        if self.settle.q.val() != 0 {
+            self.settle.d.next = self.settle.q.val() - 1;
+        }
+        // Switchbox decisions, as every node's (protocol §10, §12; see
+        // crate::slave).
+        self.new_mode.next = self.mode.q.val();
+        if !self.armed.q.val() | (self.settle.q.val() != 0) {
+        } else if !self.wrapped.val() {
+            if self.rx_in.o_cf.val() {
+                self.new_mode.next = 1.into();
+                if self.rx_bsr.o_cf.val() | self.rw.val() {
+                    self.failsafe.d.next = true;
+                }
+            } else if self.rx_bsr.o_cf.val() {
+                self.new_mode.next = 2.into();
+                if self.rw.val() {
+                    self.failsafe.d.next = true;
+                }
+            }
+        } else {
+            if self.rx_in.o_cf.val() {
+                self.failsafe.d.next = true;
+            }
+            // Reintegration: the partner's TST with ACK heard on BSR.
+            if self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val() {
+                self.seen_ack.d.next = true;
+                if self.ack_time.q.val() != 511 {
+                    self.ack_time.d.next = self.ack_time.q.val() + 1;
+                }
+            }
+            if !self.failsafe.q.val() {
+                if (self.mode.q.val() == 2)
+                    & (self.ack_time.q.val() >= self.reintegrate.val())
+                    & self.tick.val()
+                {
+                    self.new_mode.next = 0.into();
+                }
+                if (self.mode.q.val() == 1)
+                    & self.seen_ack.q.val()
+                    & self.rx_bsr.o_wvalid.val()
+                    & (self.rx_bsr.o_kind.val() == 0)
+                    & self.rx_bsr.o_ok.val()
+                    & (self.rx_bsr.o_ptype.val() == 0)
+                {
+                    self.new_mode.next = 0.into();
+                }
+            }
+        }
+        if self.new_mode.val() != self.mode.q.val() {
+            self.mode.d.next = self.new_mode.val();
+            self.settle.d.next = self.settle_start.val();
+            self.pend_rc.d.next = true;
+            self.ack_time.d.next = 0.into();
+            self.seen_ack.d.next = false;
+            if self.new_mode.val() == 0 {
+                self.grace.d.next = self.i_cs_timeout.val() >> 1;
+            }
+        }
         if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 2)
             & !self.rx_in.o_ok.val()
             & !self.rx_in.o_void.val()
             & (self.perr.q.val() != 0xffff)
         {
             self.perr.d.next = self.perr.q.val() + 1;
         }
-        if self.rx_in.o_hdr_bad.val() & (self.ferr.q.val() != 0xffff) {
-            self.ferr.d.next = self.ferr.q.val() + 1;
+        if self.ferr_owed.q.val() != 0 {
+            self.ferr_owed.d.next = self.ferr_owed.q.val() - 1;
+            if self.ferr.q.val() != 0xffff {
+                self.ferr.d.next = self.ferr.q.val() + 1;
+            }
         }
         if self.mdb.o_irq_fs.val() {
             self.failsafe.d.next = true;
@@ -552,7 +688,7 @@ impl Logic for SpecialMaster {
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();
         self.o_irq_fs.next = self.mdb.o_irq_fs.val();
-        self.o_mode.next = 0.into();
+        self.o_mode.next = self.mode.q.val();
         self.o_failsafe.next = self.failsafe.q.val();
         self.o_perr.next = self.perr.q.val();
         self.o_ferr.next = self.ferr.q.val();
@@ -561,7 +697,7 @@ impl Logic for SpecialMaster {
         self.o_hop.next = self.hop.q.val();
         self.o_cycles.next = self.cycles.q.val();
         self.o_running.next = self.mdb.o_running.val();
-        self.o_po.next = self.ftx.o_line.val();
+
         // Secondary relay (protocol §8): a DATA frame on BSR (a wrapped
         // ring) goes on to BSS, RELAY_BITS later; the decision is taken at
         // its H1, before its J has left the delay line. A SEC start hands
@@ -604,9 +740,21 @@ impl Logic for SpecialMaster {
         if self.stx.i_start.val() {
             self.relay.d.next = false;
         }
-        self.o_so.next = self.stx.o_line.val();
+        // BSS: the SEC or the relayed frame in mode N, TST when wrapped.
+        self.tst.i_ack.next = self.rx_bsr.o_tst.val();
+        // At a switch the TST generator starts with a dark lead-in.
+        self.tst.i_restart.next = self.new_mode.val() != self.mode.q.val();
+        self.tst.i_address.next = self.i_address.val();
+        self.bss_pair.next = self.stx.o_line.val();
         if self.relay.q.val() {
-            self.o_so.next = self.rep.o_line.val();
+            self.bss_pair.next = self.rep.o_line.val();
         }
+        if self.wrapped.val() {
+            self.bss_pair.next = self.tst.o_line.val();
+        }
+        self.sbox.i_output.next = self.ftx.o_line.val();
+        self.sbox.i_bss.next = self.bss_pair.val();
+        self.o_po.next = self.sbox.o_po.val();
+        self.o_so.next = self.sbox.o_so.val();
     }
 }

@@ -9,9 +9,14 @@
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_ack` | in | 1 | clock | ACK bit (partner's TST heard), taken at each packet start |
 //! | `i_address` | in | 12 | static | node address |
+//! | `i_restart` | in | 1 | clock | the output is switched to this generator: a dark lead-in of 8 bit times, an idle group, then TST |
 //! | `o_line` | out | 2 | clock | line, DDR pair |
 //!
 //! Latency: free running; one bit every 2 clocks, a packet every 130 clocks.
+//! After `i_restart` the line holds its level for 8 bit times (a receiver
+//! that was inside a word of the stream this replaces mutes and drops it,
+//! [`crate::monitor`], rather than completing it with TST bits; under the 16
+//! of loss of signal), then one idle group and the next TST.
 //!
 //! ```text
 //! o_line   | J K | H0 (25) | H1 = ~H0 (25) | I | J K | ...      65 bit times each
@@ -30,11 +35,14 @@ pub struct TstTx {
     pub i_ack: Signal<In, Bit>,
     /// Node address.
     pub i_address: Signal<In, Bits<12>>,
+    /// Switched onto an output: dark lead-in, then TST.
+    pub i_restart: Signal<In, Bit>,
     /// Line (DDR pair).
     pub o_line: Signal<Out, Bits<2>>,
     enc: Enc4b5b,
     tx: NrziTx,
     half: DFF<Bit>,
+    dark: DFF<Bits<5>>,
     gnum: DFF<Bits<4>>,
     ack: DFF<Bit>,
     word: Signal<Local, Bits<16>>,
@@ -47,10 +55,13 @@ pub struct TstTx {
 impl Logic for TstTx {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, half, gnum, ack);
+        dff_setup!(self, clock, half, gnum, ack, dark);
         self.tx.clock.next = self.clock.val();
         self.half.d.next = !self.half.q.val();
-        self.tx.i_bit_en.next = self.half.q.val();
+        self.tx.i_bit_en.next = self.half.q.val() & (self.dark.q.val() == 0);
+        if self.dark.q.val() != 0 {
+            self.dark.d.next = self.dark.q.val() - 1;
+        }
         // H0 = {10, 0, ACK, ADDR}; H1 = NOT H0.
         self.word.next = bit_cast::<16, 12>(self.i_address.val()) | 0x8000;
         // ACK is taken once per packet, so H0 and H1 always agree.
@@ -131,6 +142,10 @@ impl Logic for TstTx {
                 self.gnum.d.next = 0.into();
                 self.ack.d.next = self.i_ack.val();
             }
+        }
+        if self.i_restart.val() {
+            self.dark.d.next = 16.into();
+            self.gnum.d.next = 12.into();
         }
         self.o_line.next = 0.into();
         if self.tx.o_line.val() {

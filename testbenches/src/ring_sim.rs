@@ -12,7 +12,7 @@
 use crate::verilator::Model;
 use crate::wishbone::Wishbone;
 use crate::Rng;
-use merkur_model::config::{Config, Fault, Fibre};
+use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::line::{Lead, Word};
 use merkur_model::ring::{self, table1, Carry, CycleRecord, HeaderRx, Mode, Port, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
@@ -93,6 +93,13 @@ pub struct Report {
     pub rows: Vec<NodeRow>,
     /// The run's ports per tick, when [`Options::record`] asked for it.
     pub recording: Option<crate::verilator::Recording>,
+    /// Per fault of the scenario (in its order), the tick it was injected.
+    pub fault_ticks: Vec<Option<u64>>,
+    /// Switchbox changes seen while faults were injected: (node, tick, new
+    /// mode code); polled every 2 bit times.
+    pub mode_ticks: Vec<(usize, u64, u64)>,
+    /// Per node, the tick it was first seen in failsafe (same polling).
+    pub fs_ticks: Vec<Option<u64>>,
 }
 
 /// Options of a run.
@@ -116,15 +123,18 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
             "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
         );
     }
-    if let Some((i, (c, f))) = cfg
+    if cfg
         .faults
         .iter()
-        .enumerate()
-        .find(|(_, (_, f))| matches!(f, Fault::Flip { .. }))
+        .any(|(_, f)| matches!(f, Fault::Flip { .. }))
     {
-        return Some(format!(
-            "fault[{i}] (cycle {c}, {f}): the RTL simulation injects breaks, repairs and node deaths only (bit flips are issue 5)"
-        ));
+        let recs = ring::run(cfg);
+        let n = cfg.nodes.len();
+        for (i, &(c, f)) in cfg.faults.iter().enumerate() {
+            if let Some(why) = flip_unsupported(&recs, n, c, f) {
+                return Some(format!("fault[{i}] (cycle {c}, {f}): {why}"));
+            }
+        }
     }
     if cfg.period >= 1 << 16 {
         return Some(format!(
@@ -133,6 +143,52 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
         ));
     }
     None
+}
+
+/// The harness arms a flip in the idle gap before its packet and finds the
+/// packet by its J K ([`merkur_rtl::ring_top`]): the fibre must carry one
+/// packet in the cycle, after an idle gap the driver can see.
+fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Option<String> {
+    let Fault::Flip { fibre, target, bit } = f else {
+        return None;
+    };
+    if target == FlipTarget::Cs && bit < 2 {
+        return Some(format!(
+            "bit = {bit}: the RTL harness finds J K by its first 0 code bit (bit 2) and can flip delimiter bits 2..9 only (a single error anywhere in J K destroys it, protocol §3)"
+        ));
+    }
+    let fi = fibre_index(fibre, n);
+    let rec = &recs[c as usize];
+    let one = match rec.fibres[fi] {
+        Carry::Data(_) => c == 0 || matches!(recs[c as usize - 1].fibres[fi], Carry::Data(_)),
+        Carry::Sec { .. } => true,
+        _ => false,
+    };
+    if !one || rec.sec_with_data.iter().any(|&(x, _)| x == fi) {
+        return Some(format!(
+            "fibre = {fibre}: in this cycle the fibre does not carry one frame or SEC after another (a wrap in progress); the RTL harness cannot place the flip"
+        ));
+    }
+    None
+}
+
+fn fibre_index(fb: Fibre, n: usize) -> usize {
+    match fb {
+        Fibre::P(k) => k,
+        Fibre::S(k) => n + k,
+    }
+}
+
+/// When the driver writes a fault's configuration.
+enum When {
+    /// Before slot s (None: the delimiter) of the cycle, timed on these
+    /// fibres' monitors (breaks, repairs, deaths).
+    Slot(Vec<usize>, Option<usize>),
+    /// A flip of the DATA frame on this fibre: armed when the previous
+    /// frame has ended there.
+    FrameEnded(usize),
+    /// A flip of the SEC on this fibre: armed when this many SECs passed.
+    Secs(usize, u64),
 }
 
 struct Ring {
@@ -154,6 +210,8 @@ struct Ring {
     /// Per fibre and capture buffer, the H1 entry last compared: a fibre
     /// without frames keeps it, and CYC (3 bits) repeats every 8 cycles.
     h1_seen: Vec<[u64; 4]>,
+    /// Capture entries per cycle and fibre.
+    capn: usize,
     /// Per slot, whether its Alive bit runs inverted against the model's
     /// since the last recovery window (None: not yet seen after it).
     alive_inv: Vec<Option<bool>>,
@@ -265,6 +323,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         m,
         ticks: 0,
         h1_seen: vec![[u64::MAX; 4]; 2 * n],
+        capn,
         alive_inv: vec![Some(false); s],
     };
     let t1 = Instant::now();
@@ -351,34 +410,61 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     // the node that carry the model's frame (a wrapped ring passes some
     // nodes twice): before slot s when the first of them has shown slot
     // s − 1, before the delimiter when all have ended the previous frame.
-    let mut faults: Vec<(u32, Vec<usize>, Option<usize>, (usize, u32, u64))> = cfg
+    // (fault index, cycle, when, configuration write (select, field, value))
+    type Pending = (usize, u32, When, (usize, u32, u64));
+    let mut faults: Vec<Pending> = cfg
         .faults
         .iter()
-        .filter_map(|&(c, f)| {
-            let fibre_index = |fb: Fibre| match fb {
-                Fibre::P(k) => k,
-                Fibre::S(k) => n + k,
-            };
-            Some(match f {
-                Fault::Break { fibre, slot } | Fault::Repair { fibre, slot } => {
-                    let fi = fibre_index(fibre);
-                    let dark = matches!(f, Fault::Break { .. });
-                    (c, vec![fi], slot, (fi, field::BREAK, dark as u64))
-                }
-                Fault::Kill { node, slot } => {
-                    let rec = &recs[if slot.is_some() {
-                        c
-                    } else {
-                        c.saturating_sub(1)
-                    } as usize];
-                    let outs: Vec<usize> = [node, n + (node + n - 1) % n]
-                        .into_iter()
-                        .filter(|&fi| matches!(rec.fibres[fi], Carry::Data(_)))
-                        .collect();
-                    (c, outs, slot, (node, field::KILL, 1))
-                }
-                Fault::Flip { .. } => return None,
-            })
+        .enumerate()
+        .map(|(i, &(c, f))| match f {
+            Fault::Break { fibre, slot } | Fault::Repair { fibre, slot } => {
+                let fi = fibre_index(fibre, n);
+                let dark = matches!(f, Fault::Break { .. });
+                (
+                    i,
+                    c,
+                    When::Slot(vec![fi], slot),
+                    (fi, field::BREAK, dark as u64),
+                )
+            }
+            Fault::Kill { node, slot } => {
+                let rec = &recs[if slot.is_some() {
+                    c
+                } else {
+                    c.saturating_sub(1)
+                } as usize];
+                let outs: Vec<usize> = [node, n + (node + n - 1) % n]
+                    .into_iter()
+                    .filter(|&fi| matches!(rec.fibres[fi], Carry::Data(_)))
+                    .collect();
+                (i, c, When::Slot(outs, slot), (node, field::KILL, 1))
+            }
+            Fault::Flip { fibre, target, bit } => {
+                let fi = fibre_index(fibre, n);
+                let at = match target {
+                    FlipTarget::Cs => 0,
+                    FlipTarget::H0 => 10,
+                    FlipTarget::H1 => 35,
+                    FlipTarget::Slot(s) => 60 + 25 * s as u64,
+                } + bit as u64;
+                let when = match recs[c as usize].fibres[fi] {
+                    Carry::Sec { .. } => {
+                        let before = recs[..c as usize]
+                            .iter()
+                            .map(|x| {
+                                matches!(x.fibres[fi], Carry::Sec { ok: true }) as u64
+                                    + x.sec_with_data
+                                        .iter()
+                                        .filter(|&&(y, ok)| y == fi && ok)
+                                        .count() as u64
+                            })
+                            .sum();
+                        When::Secs(fi, before)
+                    }
+                    _ => When::FrameEnded(fi),
+                };
+                (i, c, when, (fi, field::FLIP, at))
+            }
         })
         .collect();
     let wins: Vec<(u32, u32)> = ring::windows(cfg)
@@ -387,6 +473,13 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         .collect();
     let win_of = |c: u32| wins.iter().copied().find(|&(a, z)| a <= c && c <= z);
     let mut snaps = Snapshots::new(n);
+    let mut fault_ticks: Vec<Option<u64>> = vec![None; cfg.faults.len()];
+    let mut gap_at: Vec<Option<u64>> = vec![None; cfg.faults.len()];
+    // Per fibre: ticks from a frame's start to its H1 there.
+    let mut pace_off: Vec<Option<u64>> = vec![None; 2 * n];
+    let mut mode_ticks: Vec<(usize, u64, u64)> = vec![];
+    let mut fs_ticks: Vec<Option<u64>> = vec![None; n];
+    let mut modes = vec![0u64; n];
     let mut nsec_at: Vec<Vec<u64>> = vec![];
     let limit = (cfg.cycles as u64 + 4) * period * TICKS_PER_BIT as u64 * 2 + 100_000;
     let progress_every = (cfg.cycles / 20).max(1);
@@ -431,7 +524,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             }
             if c >= 2 {
                 let w = win_of(c - 2);
-                compare_cycle(&mut r, cfg, recs, c - 2, w, capn, &mut mism, &mut words);
+                compare_cycle(&mut r, cfg, recs, c - 2, w, &mut mism, &mut words);
                 compared = c - 1;
             }
         }
@@ -444,7 +537,26 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 break;
             }
             let pace = if node == cfg.sm { node } else { into(node) };
-            if r.rd(pace, st::NEND) >= c as u64 {
+            // Frame c − 1 ended on the pace fibre; or, if a bit error made it
+            // invisible there, as long after its start as frame 0 took.
+            let fr = r.rd(pace, st::FRAME);
+            let th1 = r.rd(pace, st::TH1);
+            let prev = starts[c as usize - 1];
+            let ended = fr >> 3 & 1 == 0
+                && fr & 7 == ((c - 1) & 7) as u64
+                && th1.wrapping_sub(prev) & 0xffff_ffff < 1 << 31;
+            // The fibre's H1 delay after a frame's start, from the last H1
+            // it showed; the frame ends 25·S bit times after its H1.
+            let cyc = (fr & 7) as u32;
+            if let Some(k) = (0..sent).rev().find(|k| k & 7 == cyc) {
+                let d = th1.wrapping_sub(starts[k as usize]) & 0xffff_ffff;
+                if d < 2 * period * TICKS_PER_BIT as u64 {
+                    pace_off[pace] = Some(d);
+                }
+            }
+            let tail = (25 * s as u64 + 8) * TICKS_PER_BIT as u64;
+            let timed = pace_off[pace].is_some_and(|o| r.ticks >= prev + o + tail);
+            if ended || timed {
                 r.wb(node, slot as u16, Some(data))?;
                 writes.remove(i);
             } else {
@@ -470,30 +582,61 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         // frames, when the special master has started frame c.
         let mut i = 0;
         while i < faults.len() {
-            let (c, ref fis, slot, (sel, fd, val)) = faults[i];
-            let mut ats = vec![];
-            for &fi in fis {
-                let at = r.rd(fi, st::AT);
-                ats.push((at >> 31 == 1, (at >> 28 & 7) as u32, at & 0xfff));
-            }
-            let due = match slot {
-                None => {
-                    c == 0
-                        || sent > c
-                        || (!ats.is_empty()
-                            && ats
-                                .iter()
-                                .all(|&(infr, cyc, _)| !infr && cyc == c.wrapping_sub(1) & 7))
+            let (idx, c, ref when, (sel, fd, val)) = faults[i];
+            let due = match *when {
+                When::Slot(ref fis, slot) => {
+                    let ats: Vec<(bool, u32, u64)> = fis
+                        .iter()
+                        .map(|&fi| {
+                            let at = r.rd(fi, st::AT);
+                            (at >> 31 == 1, (at >> 28 & 7) as u32, at & 0xfff)
+                        })
+                        .collect();
+                    match slot {
+                        None => {
+                            // In the idle gap: 10 bit times after frame
+                            // c − 1 ended, so that the next node has its
+                            // last word out and confirmed by idles.
+                            let ended = !ats.is_empty()
+                                && ats
+                                    .iter()
+                                    .all(|&(infr, cyc, _)| !infr && cyc == c.wrapping_sub(1) & 7);
+                            if ended && gap_at[idx].is_none() {
+                                gap_at[idx] = Some(r.ticks + 10 * TICKS_PER_BIT as u64);
+                            }
+                            // (A repaired fibre carried nothing: when the
+                            // special master starts frame c.)
+                            let dark = matches!(cfg.faults[idx].1, Fault::Repair { .. });
+                            c == 0
+                                || sent > c + 1
+                                || (dark && sent > c)
+                                || gap_at[idx].is_some_and(|t| r.ticks >= t)
+                        }
+                        Some(s) => {
+                            let want = if s == 0 { 0xfff } else { s as u64 - 1 };
+                            sent > c + 1
+                                || ats
+                                    .iter()
+                                    .any(|&(infr, cyc, last)| infr && cyc == c & 7 && last == want)
+                        }
+                    }
                 }
-                Some(s) => {
-                    let want = if s == 0 { 0xfff } else { s as u64 - 1 };
-                    sent > c + 1
-                        || ats
-                            .iter()
-                            .any(|&(infr, cyc, last)| infr && cyc == c & 7 && last == want)
+                When::FrameEnded(fi) => {
+                    // Frame c − 1 has started, and its H1 (not an older
+                    // one with the same CYC) ended on the fibre.
+                    let ended = |r: &mut Ring| {
+                        let fr = r.rd(fi, st::FRAME);
+                        let th1 = r.rd(fi, st::TH1);
+                        fr >> 3 & 1 == 0
+                            && fr & 7 == ((c - 1) & 7) as u64
+                            && th1.wrapping_sub(starts[c as usize - 1]) & 0xffff_ffff < 1 << 31
+                    };
+                    c == 0 || sent > c + 1 || (sent >= c && ended(&mut r))
                 }
+                When::Secs(fi, k) => c == 0 || sent > c + 1 || r.rd(fi, st::NSEC) >= k,
             };
             if due {
+                fault_ticks[idx] = Some(r.ticks);
                 r.cfg(sel, fd, val);
                 faults.remove(i);
             } else {
@@ -502,16 +645,30 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         }
         if r.ticks % 16 == 0 {
             snaps.poll(&mut r, recs, &starts, sent);
+            if !cfg.faults.is_empty() {
+                for k in 0..n {
+                    let m = r.rd(k, st::MODE);
+                    if m != modes[k] {
+                        modes[k] = m;
+                        mode_ticks.push((k, r.ticks, m));
+                    }
+                    if fs_ticks[k].is_none() && r.rd(k, st::FS) == 1 {
+                        fs_ticks[k] = Some(r.ticks);
+                    }
+                }
+            }
         }
         if sent == cfg.cycles && stopped_at.is_none() {
             stopped_at = Some(r.ticks);
         }
-        if stopped_at.is_some() {
+        if let Some(t) = stopped_at {
             // The last frame has come back to the special master (frames
-            // lost to a fault do not count).
+            // lost to a fault do not count), or, in a ring that a fault
+            // left without a way back, two periods have passed.
             let back = r.rd(into(cfg.sm), st::FRAME);
             if r.rd(into(cfg.sm), st::NEND) >= cfg.cycles as u64
                 || (back >> 3 & 1 == 0 && back & 7 == (last_cycle & 7) as u64)
+                || r.ticks > t + 2 * period * TICKS_PER_BIT as u64
             {
                 break;
             }
@@ -545,7 +702,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         state.push(vals);
     }
     for c in compared..cfg.cycles {
-        compare_cycle(&mut r, cfg, recs, c, win_of(c), capn, &mut mism, &mut words);
+        compare_cycle(&mut r, cfg, recs, c, win_of(c), &mut mism, &mut words);
     }
     // SEC packets per fibre and cycle, outside the recovery windows.
     nsec_at.push((0..2 * n).map(|f| r.rd(f, st::NSEC)).collect());
@@ -606,7 +763,11 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             if wins.is_empty() {
                 check("serr", want.serr as u64, v[5]);
             }
-            check("hop", want.hop.unwrap_or(0) as u64, v[6]);
+            // HOP of the last frame that came back (none came in the last
+            // cycle: the register keeps an older one).
+            if let Some(h) = want.hop {
+                check("hop", h as u64, v[6]);
+            }
         }
         if nd.kind == Kind::Actuator {
             check("output", want.output as u64, v[7]);
@@ -635,9 +796,13 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         if nd.kind.is_master() {
             for slot in 0..s {
                 let g = r.wb(k, slot as u16, None)? as u64;
-                // A stranded slot (its writer off the path after a split,
-                // protocol §13): any value the model showed in it before.
-                let stranded = !last.path.contains(&cfg.writer[slot])
+                // A stranded slot (its writer off the path after a split),
+                // or a memory frozen by failsafe in a window (protocol
+                // §13): any value the model showed in the slot before.
+                let frozen = want.failsafe && !wins.is_empty();
+                let stranded = (frozen || !last.path.contains(&cfg.writer[slot]))
+                    && recs.iter().any(|x| x.produced.get(slot).is_some_and(|&p| p as u64 == g))
+                    || (frozen || !last.path.contains(&cfg.writer[slot]))
                     && recs.iter().any(|x| {
                         x.fibres.iter().any(|carry| {
                             matches!(carry, Carry::Data(fr)
@@ -700,6 +865,9 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         fwd_delay_bits,
         rows,
         recording: r.m.take_recording(),
+        fault_ticks,
+        mode_ticks,
+        fs_ticks,
     })
 }
 
@@ -827,10 +995,10 @@ fn compare_cycle(
     recs: &[CycleRecord],
     c: u32,
     win: Option<(u32, u32)>,
-    capn: usize,
     mism: &mut Vec<Mismatch>,
     words: &mut u64,
 ) {
+    let capn = r.capn;
     let n = cfg.nodes.len();
     let rec = &recs[c as usize];
     let b = (c & 3) as usize;

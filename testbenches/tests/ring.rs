@@ -112,6 +112,14 @@ fn ring8_double_fault_failsafe_agrees_with_the_model() {
     passes("ring8_double.toml");
 }
 
+/// Single line-bit errors on the sender's bit grid: slot words (one at a
+/// word's last bit, hitting the next word too), a header, a delimiter, a
+/// SEC header; every one detected where the model says.
+#[test]
+fn ring8_bit_errors_agree_with_the_model() {
+    passes("ring8_parity.toml");
+}
+
 #[test]
 fn ring8_failsafe_request_agrees_with_the_model() {
     passes("ring8_failsafe_request.toml");

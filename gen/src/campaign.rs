@@ -1,0 +1,924 @@
+//! `merkur campaign`: a fault-injection campaign through the RTL (Verilator)
+//! and the reference model, compared case by case under the recovery-window
+//! rules of docs/protocol.md §13, with a Markdown and JSON report.
+//!
+//! Cases per base ring (its own faults dropped): every single fibre break
+//! (primary and secondary) and every node death but the special master's;
+//! double faults (the second 4 cycles after the first, on a link the first
+//! did not darken), all or a seeded sample; repairs of every fibre;
+//! bit-error runs at given bit error rates (line bits of every packet on
+//! every fibre, at most one per packet and fibre, which is what the harness
+//! can place); clock-offset runs (every node at a seeded offset within
+//! ±ppm, one fault-free and one with a break). Everything is derived from
+//! `--seed`, so a case list is the same on every machine and `--shard K/N`
+//! splits it; `--merge` joins shard reports.
+
+use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
+use merkur_model::ring::{self, table1, Carry, CycleRecord, Mode, Port, Slot};
+use merkur_model::scenario::Kind;
+use merkur_rtl::ring_top::TICKS_PER_BIT;
+use merkur_testbenches::ring_sim::{self, Options};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::Instant;
+
+/// Cycle of the (first) fault in generated cases.
+const FAULT_CYCLE: u32 = 3;
+
+/// What to run.
+pub struct Plan {
+    /// Base rings (scenario files).
+    pub rings: Vec<PathBuf>,
+    /// Single faults per ring: a seeded sample of k, or None: all (with
+    /// `full`, 30 sampled on rings of more than 32 nodes).
+    pub singles: Option<usize>,
+    /// The `--full` preset's sampling by ring size.
+    pub full: bool,
+    /// Double faults per ring: a seeded sample of k, or None: all on rings
+    /// of up to 16 nodes, a sample of 32 on bigger ones (8 above 32 nodes).
+    pub doubles: Option<usize>,
+    /// Bit error rates; runs per rate.
+    pub ber: Vec<f64>,
+    /// Runs per bit error rate.
+    pub ber_runs: usize,
+    /// Clock-offset points, ppm.
+    pub ppm: Vec<f64>,
+    /// Repair cases.
+    pub repairs: bool,
+    /// Campaign seed.
+    pub seed: u64,
+    /// Parallel simulations.
+    pub jobs: usize,
+    /// This shard, 1-based, of how many.
+    pub shard: (usize, usize),
+    /// Only the case with this name.
+    pub case: Option<String>,
+}
+
+/// One case's result (a row of the JSON report).
+#[derive(Serialize, Deserialize, Clone, Debug)]
+pub struct CaseResult {
+    /// Unique name: ring/class/detail.
+    pub name: String,
+    /// Base ring name.
+    pub ring: String,
+    /// Nodes in the ring.
+    pub nodes: usize,
+    /// Fault class.
+    pub class: String,
+    /// The faults, as `merkur check` prints them.
+    pub faults: Vec<String>,
+    /// RTL phase seed.
+    pub seed: u64,
+    /// Mismatches against the model (after the window rules).
+    pub mismatches: usize,
+    /// The first few, or the error that stopped the run.
+    pub first: Vec<String>,
+    /// Words compared.
+    pub words: u64,
+    /// Model: every live node out of failsafe at the end, after a
+    /// structural fault.
+    pub healed: bool,
+    /// Model: some live node in failsafe at the end.
+    pub failsafe: bool,
+    /// Model: slot words that came back to the special master good in the
+    /// fault-free ring but not in this one.
+    pub words_lost: u64,
+    /// Model: frames that did not come back whole, where the fault-free
+    /// ring's did.
+    pub cycles_lost: u32,
+    /// Model: cycles from the first fault until every live node's memory
+    /// equals the fault-free ring's for good (None: never in the run).
+    pub cycles_to_recover: Option<u32>,
+    /// RTL: bit times from the first fault to the first switchbox change.
+    pub detect_bits: Option<f64>,
+    /// RTL: bit times from the first fault to the last switchbox change it
+    /// caused (the ring is wrapped at both ends).
+    pub switchover_bits: Option<f64>,
+    /// RTL: bit times from the last fault until every live node is in
+    /// failsafe.
+    pub failsafe_bits: Option<f64>,
+    /// Line rate of the ring (Mbit/s), for µs.
+    pub mbps: f64,
+    /// Bit flips injected.
+    pub flips: u32,
+    /// Flipped words the receiver took as good (single-bit errors
+    /// accepted; must be 0).
+    pub accepted: u32,
+    /// Wall seconds of the RTL run.
+    pub wall_s: f64,
+}
+
+/// The whole report.
+#[derive(Serialize, Deserialize, Debug, Default)]
+pub struct Report {
+    /// The command line(s) that produced it.
+    pub commands: Vec<String>,
+    /// Every case.
+    pub cases: Vec<CaseResult>,
+}
+
+struct Case {
+    name: String,
+    ring: String,
+    class: &'static str,
+    cfg: Config,
+    seed: u64,
+}
+
+fn splitmix(mut x: u64) -> u64 {
+    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = x;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+fn hash_name(seed: u64, name: &str) -> u64 {
+    name.bytes()
+        .fold(splitmix(seed), |h, b| splitmix(h ^ b as u64))
+}
+
+/// A small seeded generator (the case's own stream).
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = splitmix(self.0);
+        self.0
+    }
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n.max(1)
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// The single structural faults of a ring: (label, fault, links it darkens).
+fn singles(base: &Config) -> Vec<(String, Fault, Vec<usize>)> {
+    let n = base.nodes.len();
+    let mut v = vec![];
+    for k in 0..n {
+        v.push((
+            format!("P{k}"),
+            Fault::Break {
+                fibre: Fibre::P(k),
+                slot: None,
+            },
+            vec![k],
+        ));
+    }
+    for k in 0..n {
+        v.push((
+            format!("S{k}"),
+            Fault::Break {
+                fibre: Fibre::S(k),
+                slot: None,
+            },
+            vec![k],
+        ));
+    }
+    for k in (0..n).filter(|&k| k != base.sm) {
+        // A dead node darkens both its links.
+        v.push((
+            format!("n{k}"),
+            Fault::Kill {
+                node: k,
+                slot: None,
+            },
+            vec![k, (k + n - 1) % n],
+        ));
+    }
+    v
+}
+
+fn with_slot(f: Fault, slot: Option<usize>) -> Fault {
+    match f {
+        Fault::Break { fibre, .. } => Fault::Break { fibre, slot },
+        Fault::Kill { node, .. } => Fault::Kill { node, slot },
+        Fault::Repair { fibre, .. } => Fault::Repair { fibre, slot },
+        other => other,
+    }
+}
+
+fn slot_label(s: Option<usize>) -> String {
+    s.map(|s| format!(".s{s}")).unwrap_or_default()
+}
+
+/// Builds the case list of one base ring.
+fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
+    let mut out = vec![];
+    let seed = plan.seed;
+    let mut push = |name: String, class: &'static str, cfg: Config| {
+        let s = hash_name(seed, &name);
+        out.push(Case {
+            name,
+            ring: ring_name.to_string(),
+            class,
+            cfg,
+            seed: s,
+        });
+    };
+    let mut clean = base.clone();
+    clean.faults.clear();
+    let slot_of = |name: &str| -> Option<usize> {
+        // Before the delimiter one time in four, else before a seeded slot.
+        let h = hash_name(seed ^ 0x51, name);
+        (h % 4 != 0).then(|| (h >> 8) as usize % base.slots)
+    };
+    let ones = singles(base);
+    let mut picked: Vec<usize> = (0..ones.len()).collect();
+    let n = base.nodes.len();
+    let single_sample = match plan.singles {
+        None if plan.full && n > 32 => Some(30),
+        d => d,
+    };
+    if let Some(k) = single_sample {
+        let mut r = Rng(hash_name(seed, &format!("{ring_name}/singles")));
+        for i in 0..picked.len().min(k) {
+            let j = i + r.below((picked.len() - i) as u64) as usize;
+            picked.swap(i, j);
+        }
+        picked.truncate(k);
+        picked.sort_unstable();
+    }
+    for (label, f, _) in picked.iter().map(|&i| &ones[i]) {
+        let class = match f {
+            Fault::Break {
+                fibre: Fibre::P(_), ..
+            } => "break-primary",
+            Fault::Break { .. } => "break-secondary",
+            _ => "node-death",
+        };
+        let key = format!("{ring_name}/{class}/{label}");
+        let s = slot_of(&key);
+        let mut cfg = clean.clone();
+        cfg.cycles = FAULT_CYCLE + 7;
+        cfg.faults = vec![(FAULT_CYCLE, with_slot(*f, s))];
+        push(format!("{key}@{FAULT_CYCLE}{}", slot_label(s)), class, cfg);
+    }
+    // Double faults: the second on a link the first did not darken.
+    let second = FAULT_CYCLE + 4;
+    let mut pairs = vec![];
+    for (a, (la, fa, da)) in ones.iter().enumerate() {
+        for (b, (lb, fb, db)) in ones.iter().enumerate() {
+            if a == b || db.iter().any(|l| da.contains(l)) {
+                continue;
+            }
+            // A killed node cannot be hit again.
+            if let (Fault::Kill { node: x, .. }, Fault::Kill { node: y, .. }) = (fa, fb) {
+                if x == y {
+                    continue;
+                }
+            }
+            pairs.push((la.clone(), *fa, lb.clone(), *fb));
+        }
+    }
+    let sample = match plan.doubles {
+        None if n > 32 => Some(8),
+        None if n > 16 => Some(32),
+        d => d,
+    };
+    if let Some(k) = sample {
+        let mut r = Rng(hash_name(seed, &format!("{ring_name}/doubles")));
+        // A seeded partial shuffle: the first k of a random order.
+        for i in 0..pairs.len().min(k) {
+            let j = i + r.below((pairs.len() - i) as u64) as usize;
+            pairs.swap(i, j);
+        }
+        pairs.truncate(k);
+    }
+    for (la, fa, lb, fb) in pairs {
+        let mut cfg = clean.clone();
+        cfg.cycles = second + 5;
+        cfg.faults = vec![(FAULT_CYCLE, fa), (second, fb)];
+        push(
+            format!("{ring_name}/double/{la}@{FAULT_CYCLE}+{lb}@{second}"),
+            "double",
+            cfg,
+        );
+    }
+    if plan.repairs {
+        // Every fibre on rings of up to 16 nodes, 8 sampled on bigger ones.
+        let mut fibres: Vec<Fibre> = (0..n).map(Fibre::P).chain((0..n).map(Fibre::S)).collect();
+        if n > 16 {
+            let mut r = Rng(hash_name(seed, &format!("{ring_name}/repairs")));
+            for i in 0..8.min(fibres.len()) {
+                let j = i + r.below((fibres.len() - i) as u64) as usize;
+                fibres.swap(i, j);
+            }
+            fibres.truncate(8);
+        }
+        for f in fibres {
+            let mut cfg = clean.clone();
+            let fix = FAULT_CYCLE + 3;
+            cfg.cycles = fix + 7;
+            cfg.faults = vec![
+                (
+                    FAULT_CYCLE,
+                    Fault::Break {
+                        fibre: f,
+                        slot: None,
+                    },
+                ),
+                (
+                    fix,
+                    Fault::Repair {
+                        fibre: f,
+                        slot: None,
+                    },
+                ),
+            ];
+            push(
+                format!("{ring_name}/repair/{f}@{FAULT_CYCLE}-{fix}"),
+                "repair",
+                cfg,
+            );
+        }
+    }
+    for &ber in &plan.ber {
+        for run in 0..plan.ber_runs {
+            let name = format!("{ring_name}/ber/{ber:e}#{run}");
+            let mut cfg = clean.clone();
+            cfg.cycles = 10;
+            cfg.faults = ber_flips(&cfg, ber, hash_name(seed, &name));
+            push(name, "bit-errors", cfg);
+        }
+    }
+    for &ppm in &plan.ppm {
+        for run in 0..2 {
+            let name = format!("{ring_name}/clock-offset/{ppm}ppm#{run}");
+            let mut r = Rng(hash_name(seed, &name));
+            let mut cfg = clean.clone();
+            cfg.cycles = 10;
+            for nd in cfg.nodes.iter_mut() {
+                nd.ppm = ((r.unit() * 2.0 - 1.0) * ppm).round();
+            }
+            if run == 1 {
+                let k = r.below(cfg.nodes.len() as u64) as usize;
+                cfg.faults = vec![(
+                    FAULT_CYCLE,
+                    Fault::Break {
+                        fibre: Fibre::P(k),
+                        slot: None,
+                    },
+                )];
+            }
+            push(name, "clock-offset", cfg);
+        }
+    }
+    out
+}
+
+/// Seeded line-bit errors at rate `ber` on every packet of every fibre of
+/// the fault-free run (cycles 1 …), at most one per packet and fibre.
+fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
+    let recs = ring::run(cfg);
+    let n = cfg.nodes.len();
+    let mut r = Rng(seed);
+    let mut v = vec![];
+    for rec in recs.iter().skip(1).take(cfg.cycles as usize - 2) {
+        for (fi, carry) in rec.fibres.iter().enumerate() {
+            let bits = match carry {
+                Carry::Data(_) => 60 + 25 * cfg.slots,
+                Carry::Sec { .. } => 60,
+                _ => continue,
+            };
+            // P(at least one error in the packet), then a uniform position
+            // (the harness cannot reach the delimiter's first two bits).
+            let p = 1.0 - (1.0 - ber).powi(bits as i32);
+            if r.unit() >= p {
+                continue;
+            }
+            let at = 2 + r.below(bits as u64 - 2) as usize;
+            let (target, bit) = match at {
+                0..=9 => (FlipTarget::Cs, at),
+                10..=34 => (FlipTarget::H0, at - 10),
+                35..=59 => (FlipTarget::H1, at - 35),
+                _ => (FlipTarget::Slot((at - 60) / 25), (at - 60) % 25),
+            };
+            let fibre = if fi < n {
+                Fibre::P(fi)
+            } else {
+                Fibre::S(fi - n)
+            };
+            v.push((
+                rec.cycle,
+                Fault::Flip {
+                    fibre,
+                    target,
+                    bit: bit as u32,
+                },
+            ));
+        }
+    }
+    v
+}
+
+/// The special master's INPUT fibre in cycle c.
+fn sm_input(cfg: &Config, recs: &[CycleRecord], c: usize) -> usize {
+    let n = cfg.nodes.len();
+    let sm = cfg.sm;
+    let mode = if c == 0 {
+        Mode::N
+    } else {
+        recs[c - 1].nodes[sm].mode
+    };
+    match table1(mode).0 {
+        Port::Si => n + sm,
+        _ => (sm + n - 1) % n,
+    }
+}
+
+/// Per slot, whether it came back good to the special master in cycle c.
+fn returned(cfg: &Config, recs: &[CycleRecord], c: usize) -> Vec<bool> {
+    match &recs[c].fibres[sm_input(cfg, recs, c)] {
+        Carry::Data(fr) => fr
+            .words
+            .iter()
+            .map(|w| matches!(w, Slot::Data(_)))
+            .collect(),
+        _ => vec![false; cfg.slots],
+    }
+}
+
+fn killed(cfg: &Config) -> Vec<usize> {
+    cfg.faults
+        .iter()
+        .filter_map(|(_, f)| match f {
+            Fault::Kill { node, .. } => Some(*node),
+            _ => None,
+        })
+        .collect()
+}
+
+/// What the live nodes hold (masters' memories, actuators' outputs) of slots
+/// whose writer lives.
+fn delivered(cfg: &Config, rec: &CycleRecord) -> Vec<u16> {
+    let dead = killed(cfg);
+    let mut v = vec![];
+    for (k, st) in rec.nodes.iter().enumerate() {
+        if dead.contains(&k) {
+            continue;
+        }
+        match cfg.nodes[k].kind {
+            Kind::Actuator => v.push(st.output),
+            Kind::Master | Kind::SpecialMaster => v.extend(
+                st.db
+                    .iter()
+                    .enumerate()
+                    .filter(|(s, _)| !dead.contains(&cfg.writer[*s]))
+                    .map(|(_, &x)| x),
+            ),
+            Kind::Sensor => {}
+        }
+    }
+    v
+}
+
+fn run_case(case: &Case) -> CaseResult {
+    let cfg = &case.cfg;
+    let recs = ring::run(cfg);
+    let mut clean_cfg = cfg.clone();
+    clean_cfg.faults.clear();
+    let clean = ring::run(&clean_cfg);
+    let structural: Vec<(u32, Fault)> = cfg
+        .faults
+        .iter()
+        .copied()
+        .filter(|(_, f)| !matches!(f, Fault::Flip { .. }))
+        .collect();
+    let dead = killed(cfg);
+    let last = recs.last().expect("cycles > 0");
+    let failsafe = last
+        .nodes
+        .iter()
+        .enumerate()
+        .any(|(k, x)| x.failsafe && !dead.contains(&k));
+    let mut words_lost = 0;
+    let mut cycles_lost = 0;
+    for c in 0..recs.len() {
+        let (a, b) = (returned(cfg, &recs, c), returned(cfg, &clean, c));
+        words_lost += a.iter().zip(&b).filter(|(x, y)| **y && !**x).count() as u64;
+        let whole = |rs: &[CycleRecord]| match &rs[c].fibres[sm_input(cfg, rs, c)] {
+            Carry::Data(fr) => !fr.words.iter().any(|w| matches!(w, Slot::Missing)),
+            _ => false,
+        };
+        if whole(&clean) && !whole(&recs) {
+            cycles_lost += 1;
+        }
+    }
+    let first_fault = cfg.faults.iter().map(|&(c, _)| c).min();
+    let mut from = None;
+    for (x, y) in recs.iter().zip(&clean) {
+        if delivered(cfg, x) == delivered(cfg, y) {
+            from.get_or_insert(x.cycle);
+        } else {
+            from = None;
+        }
+    }
+    let cycles_to_recover = match (first_fault, from) {
+        (Some(c), Some(f)) => Some(f.saturating_sub(c)),
+        (None, _) => Some(0),
+        _ => None,
+    };
+    let flips = cfg
+        .faults
+        .iter()
+        .filter(|(_, f)| matches!(f, Fault::Flip { .. }))
+        .count() as u32;
+    let mut res = CaseResult {
+        name: case.name.clone(),
+        ring: case.ring.clone(),
+        nodes: cfg.nodes.len(),
+        class: case.class.to_string(),
+        faults: cfg
+            .faults
+            .iter()
+            .map(|(c, f)| format!("cycle {c}: {f}"))
+            .collect(),
+        seed: case.seed,
+        mismatches: 0,
+        first: vec![],
+        words: 0,
+        healed: !structural.is_empty() && !failsafe,
+        failsafe,
+        words_lost,
+        cycles_lost,
+        cycles_to_recover,
+        detect_bits: None,
+        switchover_bits: None,
+        failsafe_bits: None,
+        mbps: cfg.line_rate_mbps,
+        flips,
+        accepted: 0,
+        wall_s: 0.0,
+    };
+    if let Some(why) = ring_sim::unsupported(cfg) {
+        res.mismatches = 1;
+        res.first = vec![format!("not simulated in RTL: {why}")];
+        return res;
+    }
+    let opts = Options {
+        seed: case.seed,
+        ..Default::default()
+    };
+    let rep = match ring_sim::run(cfg, &recs, &opts) {
+        Ok(r) => r,
+        Err(e) => {
+            res.mismatches = 1;
+            res.first = vec![format!("error: {e}")];
+            return res;
+        }
+    };
+    res.wall_s = rep.wall.as_secs_f64();
+    res.words = rep.words;
+    res.mismatches = rep.mismatches.len();
+    res.first = rep
+        .mismatches
+        .iter()
+        .take(5)
+        .map(|m| m.to_string())
+        .collect();
+    // A flipped word the RTL took as good where the model says bad.
+    for (c, f) in &cfg.faults {
+        if let Fault::Flip { fibre, target, .. } = f {
+            let what = match target {
+                FlipTarget::Slot(s) => format!("slot {s}"),
+                _ => continue,
+            };
+            let place = fibre.to_string();
+            res.accepted += rep
+                .mismatches
+                .iter()
+                .filter(|m| m.cycle == *c && m.place == place && m.what == what)
+                .filter(|m| m.got.len() >= 5 && m.expected == "x")
+                .count() as u32;
+        }
+    }
+    let bits = |t: u64| t as f64 / TICKS_PER_BIT as f64;
+    if let Some(Some(t0)) = structural
+        .first()
+        .and_then(|x| cfg.faults.iter().position(|y| y == x))
+        .map(|i| rep.fault_ticks[i])
+    {
+        // Switchbox changes the first fault caused: before any later fault
+        // and within two periods.
+        let until = structural
+            .get(1)
+            .and_then(|x| cfg.faults.iter().position(|y| y == x))
+            .and_then(|i| rep.fault_ticks[i])
+            .unwrap_or(u64::MAX)
+            .min(t0 + 2 * cfg.period as u64 * TICKS_PER_BIT as u64);
+        let ch: Vec<u64> = rep
+            .mode_ticks
+            .iter()
+            .filter(|&&(k, t, _)| t > t0 && t < until && !dead.contains(&k))
+            .map(|&(_, t, _)| t)
+            .collect();
+        res.detect_bits = ch.iter().min().map(|&t| bits(t - t0));
+        res.switchover_bits = ch.iter().max().map(|&t| bits(t - t0));
+    }
+    if failsafe {
+        if let Some(Some(tl)) = cfg
+            .faults
+            .iter()
+            .rposition(|(_, f)| !matches!(f, Fault::Flip { .. }))
+            .map(|i| rep.fault_ticks[i])
+        {
+            let live: Vec<Option<u64>> = rep
+                .fs_ticks
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| !dead.contains(k))
+                .map(|(_, t)| *t)
+                .collect();
+            if live.iter().all(|t| t.is_some()) {
+                let t = live.iter().flatten().max().copied().unwrap_or(tl);
+                res.failsafe_bits = Some(bits(t.saturating_sub(tl)));
+            }
+        }
+    }
+    res
+}
+
+/// Parses `K/N` (1 ≤ K ≤ N).
+pub fn parse_shard(s: &str) -> Result<(usize, usize), String> {
+    let bad = || format!("error: --shard {s}: expected K/N with 1 <= K <= N, e.g. 2/4");
+    let (k, n) = s.split_once('/').ok_or_else(bad)?;
+    let (k, n): (usize, usize) = (
+        k.trim().parse().map_err(|_| bad())?,
+        n.trim().parse().map_err(|_| bad())?,
+    );
+    if k == 0 || n == 0 || k > n {
+        return Err(bad());
+    }
+    Ok((k, n))
+}
+
+/// Parses a comma list of positive numbers for `flag`.
+pub fn parse_list(flag: &str, s: &str, max: f64) -> Result<Vec<f64>, String> {
+    if s.trim().is_empty() || s.trim() == "none" {
+        return Ok(vec![]);
+    }
+    s.split(',')
+        .map(|x| {
+            let v: f64 = x
+                .trim()
+                .parse()
+                .map_err(|_| format!("error: {flag} {s}: `{}` is not a number", x.trim()))?;
+            if !(v.is_finite() && v >= 0.0 && v <= max) {
+                return Err(format!("error: {flag} {s}: {v} is outside 0 ..= {max}"));
+            }
+            Ok(v)
+        })
+        .collect()
+}
+
+/// Runs the campaign; returns the report.
+pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
+    let mut cases = vec![];
+    for path in &plan.rings {
+        let (_, base) = crate::read_scenario(path)?;
+        let ring_name = base.name.clone();
+        if let Some(why) = ring_sim::unsupported(&Config {
+            faults: vec![],
+            ..base.clone()
+        }) {
+            return Err(format!(
+                "error: --ring {}: not simulated in RTL: {why}",
+                path.display()
+            ));
+        }
+        cases.extend(cases_of(&ring_name, &base, plan));
+    }
+    if let Some(want) = &plan.case {
+        cases.retain(|c| &c.name == want);
+        if cases.is_empty() {
+            return Err(format!("error: --case {want}: no such case in this campaign (names are listed in the report)"));
+        }
+    }
+    let total = cases.len();
+    let (k, n) = plan.shard;
+    let mine: Vec<Case> = cases
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| i % n == k - 1)
+        .map(|(_, c)| c)
+        .collect();
+    eprintln!(
+        "campaign: {} cases (shard {k}/{n} of {total}), {} parallel; Verilator models are built once per ring and cached",
+        mine.len(),
+        plan.jobs
+    );
+    // Build (or find) each ring's Verilator model once, before the workers.
+    let mut built = std::collections::BTreeSet::new();
+    for c in &mine {
+        if built.insert(c.ring.clone()) {
+            let kinds: Vec<Kind> = c.cfg.nodes.iter().map(|x| x.kind).collect();
+            let t = Instant::now();
+            merkur_testbenches::verilator::Model::build_top_traced(
+                &merkur_rtl::ring_top::ring_verilog(&kinds, c.cfg.slots),
+                "merkur_ring",
+                None,
+            )?;
+            eprintln!(
+                "  model of {} ready ({:.1} s)",
+                c.ring,
+                t.elapsed().as_secs_f64()
+            );
+        }
+    }
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let results: Mutex<Vec<CaseResult>> = Mutex::new(vec![]);
+    let t0 = Instant::now();
+    std::thread::scope(|s| {
+        for _ in 0..plan.jobs.max(1) {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::SeqCst);
+                let Some(case) = mine.get(i) else { break };
+                let r = run_case(case);
+                let bad = r.mismatches > 0;
+                let d = done.fetch_add(1, Ordering::SeqCst) + 1;
+                let mut all = results.lock().unwrap_or_else(|e| e.into_inner());
+                all.push(r);
+                let failed = all.iter().filter(|x| x.mismatches > 0).count();
+                progress(d, mine.len(), failed, t0.elapsed().as_secs_f64());
+                if bad {
+                    eprintln!(
+                        "\nMISMATCH {} (seed {}): {}",
+                        case.name,
+                        case.seed,
+                        all.last().map(|x| x.first.join("; ")).unwrap_or_default()
+                    );
+                }
+            });
+        }
+    });
+    eprintln!();
+    let mut cases = results.into_inner().unwrap_or_else(|e| e.into_inner());
+    cases.sort_by(|a, b| a.name.cmp(&b.name));
+    Ok(Report {
+        commands: vec![command],
+        cases,
+    })
+}
+
+fn progress(done: usize, total: usize, failed: usize, secs: f64) {
+    let width = 30;
+    let fill = (done * width).checked_div(total).unwrap_or(width);
+    let eta = if done == 0 {
+        0.0
+    } else {
+        secs / done as f64 * (total - done) as f64
+    };
+    eprint!(
+        "\r[{}{}] {done}/{total} cases, {failed} with mismatches, {secs:.0} s, ~{eta:.0} s left ",
+        "#".repeat(fill),
+        ".".repeat(width - fill)
+    );
+}
+
+/// Joins shard reports (cases by name; a case in two reports must agree).
+pub fn merge(paths: &[PathBuf]) -> Result<Report, String> {
+    let mut by_name: BTreeMap<String, CaseResult> = BTreeMap::new();
+    let mut commands = vec![];
+    for p in paths {
+        let text = std::fs::read_to_string(p)
+            .map_err(|e| format!("error: --merge {}: cannot read: {e}", p.display()))?;
+        let r: Report = serde_json::from_str(&text).map_err(|e| {
+            format!(
+                "error: --merge {}: not a campaign JSON report: {e}",
+                p.display()
+            )
+        })?;
+        commands.extend(r.commands);
+        for c in r.cases {
+            by_name.insert(c.name.clone(), c);
+        }
+    }
+    Ok(Report {
+        commands,
+        cases: by_name.into_values().collect(),
+    })
+}
+
+fn us(bits: f64, mbps: f64) -> f64 {
+    bits / mbps
+}
+
+fn stat<I: Iterator<Item = f64>>(it: I) -> (usize, f64, f64) {
+    let v: Vec<f64> = it.collect();
+    if v.is_empty() {
+        return (0, 0.0, 0.0);
+    }
+    let max = v.iter().cloned().fold(f64::MIN, f64::max);
+    (v.len(), v.iter().sum::<f64>() / v.len() as f64, max)
+}
+
+/// The Markdown report.
+pub fn markdown(r: &Report) -> String {
+    let mut o = String::new();
+    o += "# merkur fault-injection campaign\n\n";
+    o += "Produced by:\n\n";
+    for c in &r.commands {
+        o += &format!("    {c}\n");
+    }
+    o += "\nEvery case runs the ring through the reference model and through the RTL (Verilator) and compares them under the recovery-window rules of docs/protocol.md §13. *Model* columns are the protocol's behaviour (the RTL agreed wherever mismatches are 0); *RTL* columns are measured in the Verilator run (switchbox and failsafe states polled every 2 bit times). Times in µs are at the ring's line rate.\n\n";
+    let mism: usize = r.cases.iter().filter(|c| c.mismatches > 0).count();
+    let accepted: u32 = r.cases.iter().map(|c| c.accepted).sum();
+    let flips: u32 = r.cases.iter().map(|c| c.flips).sum();
+    o += &format!(
+        "**{} cases, {} with mismatches against the model; {} bit flips injected, {} single-bit errors accepted.** Multi-bit errors in one word: not injected (the harness places at most one flip per packet and fibre), so none can be reported undetected here; the model's exhaustive check of every single line-bit error is `model/tests/line.rs`.\n\n",
+        r.cases.len(), mism, flips, accepted
+    );
+    let mut groups: BTreeMap<(usize, String, String), Vec<&CaseResult>> = BTreeMap::new();
+    for c in &r.cases {
+        groups
+            .entry((c.nodes, c.ring.clone(), c.class.clone()))
+            .or_default()
+            .push(c);
+    }
+    o += "| ring | class | cases | mismatches | healed | failsafe | words lost (max) | cycles lost (max) | cycles to recover (max) | detection, bit times (mean / max) | switchover, µs (mean / max) | failsafe latency, µs (max) | flips | accepted |\n";
+    o += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for ((_, ring, class), cs) in &groups {
+        let (nd, dm, dx) = stat(cs.iter().filter_map(|c| c.detect_bits));
+        let (ns, sm, sx) = stat(
+            cs.iter()
+                .filter_map(|c| c.switchover_bits.map(|b| us(b, c.mbps))),
+        );
+        let (nf, _, fx) = stat(
+            cs.iter()
+                .filter_map(|c| c.failsafe_bits.map(|b| us(b, c.mbps))),
+        );
+        let rec = cs.iter().map(|c| c.cycles_to_recover);
+        let rec_max = if rec.clone().any(|x| x.is_none()) {
+            "never (failsafe)".to_string()
+        } else {
+            rec.flatten().max().unwrap_or(0).to_string()
+        };
+        o +=
+            &format!(
+            "| {ring} | {class} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            cs.len(),
+            cs.iter().filter(|c| c.mismatches > 0).count(),
+            cs.iter().filter(|c| c.healed).count(),
+            cs.iter().filter(|c| c.failsafe).count(),
+            cs.iter().map(|c| c.words_lost).max().unwrap_or(0),
+            cs.iter().map(|c| c.cycles_lost).max().unwrap_or(0),
+            rec_max,
+            if nd > 0 { format!("{dm:.1} / {dx:.1}") } else { "–".into() },
+            if ns > 0 { format!("{sm:.2} / {sx:.2}") } else { "–".into() },
+            if nf > 0 { format!("{fx:.2}") } else { "–".into() },
+            cs.iter().map(|c| c.flips).sum::<u32>(),
+            cs.iter().map(|c| c.accepted).sum::<u32>(),
+        );
+    }
+    let bad: Vec<&CaseResult> = r.cases.iter().filter(|c| c.mismatches > 0).collect();
+    if !bad.is_empty() {
+        o += "\n## Cases with mismatches\n\n";
+        for c in bad {
+            o += &format!(
+                "- `{}` (seed {}, {} mismatches; rerun: `merkur campaign --ring <{}> --case '{}'`): {}\n",
+                c.name,
+                c.seed,
+                c.mismatches,
+                c.ring,
+                c.name,
+                c.first.join("; ")
+            );
+        }
+    }
+    o += "\nColumns: *healed* — after a structural fault every live node is out of failsafe at the end (model); *words lost* — slot words that came back to the special master good in the fault-free ring but not in this one (the cut frame's rest and the RECONFIG alarms' home slots); *cycles lost* — frames that did not come back whole; *cycles to recover* — from the first fault until every live node holds what the fault-free ring's nodes hold, for good; *detection* — from the fault to the first switchbox change (RTL); *switchover* — to the last one it caused, the ring wrapped at both ends (RTL); *failsafe latency* — from the second fault until every live node is in failsafe (RTL); *accepted* — flipped words a receiver took as good.\n";
+    o
+}
+
+/// Writes `campaign.md` and `campaign.json` into `dir` (atomically).
+pub fn write(report: &Report, dir: &Path) -> Result<(), String> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| format!("error: --output {}: cannot create: {e}", dir.display()))?;
+    let json = serde_json::to_string_pretty(report).map_err(|e| format!("error: {e}"))?;
+    crate::write_atomic(&dir.join("campaign.json"), &json)?;
+    crate::write_atomic(&dir.join("campaign.md"), &markdown(report))?;
+    eprintln!(
+        "wrote {} and {}",
+        dir.join("campaign.md").display(),
+        dir.join("campaign.json").display()
+    );
+    Ok(())
+}
+
+/// Default base rings: tb-data's 8-node ring, or 8, 32 and 100 nodes.
+pub fn default_rings(full: bool) -> Vec<PathBuf> {
+    let root = merkur_testbenches::repo_root().join("tb-data");
+    let names: &[&str] = if full {
+        &["ring8.toml", "ring32.toml", "ring100.toml"]
+    } else {
+        &["ring8.toml"]
+    };
+    names.iter().map(|n| root.join(n)).collect()
+}
