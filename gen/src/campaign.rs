@@ -90,6 +90,8 @@ pub struct CaseResult {
     /// Model: frames that did not come back whole, where the fault-free
     /// ring's did.
     pub cycles_lost: u32,
+    /// RTL: the same, as the special master's input monitors saw it.
+    pub rtl_cycles_lost: u32,
     /// Model: cycles from the first fault until every live node's memory
     /// equals the fault-free ring's for good (None: never in the run).
     pub cycles_to_recover: Option<u32>,
@@ -415,6 +417,19 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
             ));
         }
     }
+    // Errors can change what a fibre carries later (a lost frame, a
+    // failsafe); keep only flips the harness can place in the run with the
+    // errors before them.
+    for _ in 0..8 {
+        let mut with = cfg.clone();
+        with.faults = v.clone();
+        let got = ring::run(&with);
+        let before = v.len();
+        v.retain(|&(c, f)| ring_sim::flip_unsupported(&got, n, c, f).is_none());
+        if v.len() == before {
+            break;
+        }
+    }
     v
 }
 
@@ -548,6 +563,7 @@ fn run_case(case: &Case) -> CaseResult {
         failsafe,
         words_lost,
         cycles_lost,
+        rtl_cycles_lost: 0,
         cycles_to_recover,
         detect_bits: None,
         switchover_bits: None,
@@ -575,6 +591,15 @@ fn run_case(case: &Case) -> CaseResult {
         }
     };
     res.wall_s = rep.wall.as_secs_f64();
+    res.rtl_cycles_lost = (0..recs.len())
+        .filter(|&c| {
+            let whole_clean = match &clean[c].fibres[sm_input(cfg, &clean, c)] {
+                Carry::Data(fr) => !fr.words.iter().any(|w| matches!(w, Slot::Missing)),
+                _ => false,
+            };
+            whole_clean && !rep.returned_whole[c]
+        })
+        .count() as u32;
     res.words = rep.words;
     res.mismatches = rep.mismatches.len();
     res.first = rep
@@ -843,7 +868,7 @@ pub fn markdown(r: &Report) -> String {
             .or_default()
             .push(c);
     }
-    o += "| ring | class | cases | mismatches | healed | failsafe | words lost (max) | cycles lost (max) | cycles to recover (max) | detection, bit times (mean / max) | switchover, µs (mean / max) | failsafe latency, µs (max) | flips | accepted |\n";
+    o += "| ring | class | cases | mismatches | healed | failsafe | words lost (max) | frames lost, model / RTL (max) | cycles to recover (max) | detection, bit times (mean / max) | switchover, µs (mean / max) | failsafe latency, µs (max) | flips | accepted |\n";
     o += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for ((_, ring, class), cs) in &groups {
         let (nd, dm, dx) = stat(cs.iter().filter_map(|c| c.detect_bits));
@@ -855,8 +880,18 @@ pub fn markdown(r: &Report) -> String {
             cs.iter()
                 .filter_map(|c| c.failsafe_bits.map(|b| us(b, c.mbps))),
         );
+        let frames = format!(
+            "{} / {}",
+            cs.iter().map(|c| c.cycles_lost).max().unwrap_or(0),
+            cs.iter().map(|c| c.rtl_cycles_lost).max().unwrap_or(0)
+        );
         let rec = cs.iter().map(|c| c.cycles_to_recover);
-        let rec_max = if rec.clone().any(|x| x.is_none()) {
+        let structural = cs
+            .iter()
+            .any(|c| c.switchover_bits.is_some() || c.healed || c.failsafe);
+        let rec_max = if !structural {
+            "–".to_string()
+        } else if rec.clone().any(|x| x.is_none()) {
             "never (failsafe)".to_string()
         } else {
             rec.flatten().max().unwrap_or(0).to_string()
@@ -869,7 +904,7 @@ pub fn markdown(r: &Report) -> String {
             cs.iter().filter(|c| c.healed).count(),
             cs.iter().filter(|c| c.failsafe).count(),
             cs.iter().map(|c| c.words_lost).max().unwrap_or(0),
-            cs.iter().map(|c| c.cycles_lost).max().unwrap_or(0),
+            frames,
             rec_max,
             if nd > 0 { format!("{dm:.1} / {dx:.1}") } else { "–".into() },
             if ns > 0 { format!("{sm:.2} / {sx:.2}") } else { "–".into() },
@@ -893,7 +928,7 @@ pub fn markdown(r: &Report) -> String {
             );
         }
     }
-    o += "\nColumns: *healed* — after a structural fault every live node is out of failsafe at the end (model); *words lost* — slot words that came back to the special master good in the fault-free ring but not in this one (the cut frame's rest and the RECONFIG alarms' home slots); *cycles lost* — frames that did not come back whole; *cycles to recover* — from the first fault until every live node holds what the fault-free ring's nodes hold, for good; *detection* — from the fault to the first switchbox change (RTL); *switchover* — to the last one it caused, the ring wrapped at both ends (RTL); *failsafe latency* — from the second fault until every live node is in failsafe (RTL); *accepted* — flipped words a receiver took as good.\n";
+    o += "\nColumns: *healed* — after a structural fault every live node is out of failsafe at the end (model); *words lost* — slot words that came back to the special master good in the fault-free ring but not in this one (the cut frame's rest and the RECONFIG alarms' home slots); *frames lost* — frames that did not come back whole to the special master where the fault-free ring's did (model / RTL monitors: a break in the last ~80 bit times of a frame also costs the next frame's head in RTL, protocol §13); *cycles to recover* — from the first fault until every live node holds what the fault-free ring's nodes hold, for good; *detection* — from the fault to the first switchbox change (RTL); *switchover* — to the last one it caused, the ring wrapped at both ends (RTL); *failsafe latency* — from the second fault until every live node is in failsafe (RTL); *accepted* — flipped words a receiver took as good.\n";
     o
 }
 

@@ -13,6 +13,7 @@
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit), bit 0 first |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`RxWord`] |
+//! | `i_flush` | in | 1 | clock | the input was switched to another line: the packet ends, a held word is dropped |
 //! | `o_los` | out | 1 | clock | loss of signal |
 //! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 //! | `o_start` | out | 1 | clock | J K found |
@@ -55,6 +56,9 @@ pub struct Monitor {
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// Node address.
     pub i_address: Signal<In, Bits<12>>,
+    /// The input was switched to another line: end the packet, drop the
+    /// held word.
+    pub i_flush: Signal<In, Bit>,
     /// Loss of signal.
     pub o_los: Signal<Out, Bit>,
     /// Recovered bit valid (from the CDR).
@@ -123,6 +127,7 @@ impl Monitor {
             i_samples: Default::default(),
             i_slots_m1: Default::default(),
             i_address: Default::default(),
+            i_flush: Default::default(),
             o_los: Default::default(),
             o_bvalid: Default::default(),
             o_level: Default::default(),
@@ -181,7 +186,8 @@ impl Logic for Monitor {
         // switched line; what comes next is another stream).
         self.framer.i_end.next = self.word.o_end.val()
             | self.cdr.o_los.val()
-            | (self.quiet.q.val() == self.drop_after.val());
+            | (self.quiet.q.val() == self.drop_after.val())
+            | self.i_flush.val();
         self.word.i_start.next = self.framer.o_start.val();
         self.word.i_gvalid.next = self.framer.o_gvalid.val();
         self.word.i_group.next = self.framer.o_group.val();
@@ -220,7 +226,9 @@ impl Logic for Monitor {
             self.o_wvalid.next = true;
             self.p_valid.d.next = false;
         }
-        if self.p_valid.q.val() & (self.quiet.q.val() == self.drop_after.val()) {
+        if self.p_valid.q.val()
+            & ((self.quiet.q.val() == self.drop_after.val()) | self.i_flush.val())
+        {
             self.p_valid.d.next = false;
         }
         if self.word.o_wvalid.val() {

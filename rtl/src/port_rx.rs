@@ -9,6 +9,7 @@
 //! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::rx_word::RxWord`] |
 //! | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
+//! | `i_flush` | in | 1 | clock | as [`Monitor`] |
 //! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
 //! | `o_los`, `o_cf`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
 //! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
@@ -38,6 +39,8 @@ pub struct PortRx {
     pub i_address: Signal<In, Bits<12>>,
     /// A test signal counts as channel failure.
     pub i_tst_fail: Signal<In, Bit>,
+    /// The switchbox moved this input to another line (see [`Monitor`]).
+    pub i_flush: Signal<In, Bit>,
     /// Packet start.
     pub o_start: Signal<Out, Bit>,
     /// Inside a packet.
@@ -92,6 +95,7 @@ impl PortRx {
             i_samples: Default::default(),
             i_slots_m1: Default::default(),
             i_address: Default::default(),
+            i_flush: Default::default(),
             i_tst_fail: Default::default(),
             o_start: Default::default(),
             o_inpkt: Default::default(),
@@ -128,6 +132,7 @@ impl Logic for PortRx {
         self.mon.i_samples.next = self.i_samples.val();
         self.mon.i_slots_m1.next = self.i_slots_m1.val();
         self.mon.i_address.next = self.i_address.val();
+        self.mon.i_flush.next = self.i_flush.val();
         self.ctrl.i_los.next = self.mon.o_los.val();
         self.ctrl.i_wvalid.next = self.mon.o_wvalid.val();
         self.ctrl.i_kind.next = self.mon.o_kind.val();

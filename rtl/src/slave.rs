@@ -134,6 +134,7 @@ pub struct Slave {
     failsafe: DFF<Bit>,
     rw: DFF<Bit>,
     h0_rwc: DFF<Bit>,
+    sw_flush: DFF<Bit>,
     armed: DFF<Bit>,
     last_cyc: DFF<Bits<3>>,
     ferr_owed: DFF<Bits<3>>,
@@ -214,6 +215,7 @@ impl Slave {
             failsafe: Default::default(),
             rw: Default::default(),
             h0_rwc: Default::default(),
+            sw_flush: Default::default(),
             armed: Default::default(),
             last_cyc: Default::default(),
             ferr_owed: Default::default(),
@@ -245,7 +247,7 @@ impl Logic for Slave {
         dff_setup!(
             self, clock, mode, failsafe, rw, armed, quiet, grace, settle, ack_time, seen_ack,
             pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_last, rep_cut, fwd_cut,
-            last_cyc, ferr_owed, h0_rwc
+            last_cyc, ferr_owed, h0_rwc, sw_flush
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -520,8 +522,13 @@ impl Logic for Slave {
         }
         self.rep.i_phase.next = self.rx_bsr.o_phase.val();
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
-        // At a switch the TST generator starts with a dark lead-in.
+        // At a switch the TST generator starts with a dark lead-in, and
+        // the receivers, whose lines change, drop what they were in.
         self.tst.i_restart.next = self.new_mode.val() != self.mode.q.val();
+        // (Registered: the switch decision depends on what they report.)
+        self.sw_flush.d.next = self.new_mode.val() != self.mode.q.val();
+        self.rx_in.i_flush.next = self.sw_flush.q.val();
+        self.rx_bsr.i_flush.next = self.sw_flush.q.val();
         self.tst.i_address.next = self.i_address.val();
         self.bss_pair.next = self.rep.o_line.val();
         if self.wrapped.val() {

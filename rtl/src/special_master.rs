@@ -158,6 +158,7 @@ pub struct SpecialMaster {
     seen_ack: DFF<Bit>,
     pend_rc: DFF<Bit>,
     ret_rwp: DFF<Bit>,
+    sw_flush: DFF<Bit>,
     new_mode: Signal<Local, Bits<2>>,
     wrapped: Signal<Local, Bit>,
     rw: Signal<Local, Bit>,
@@ -265,6 +266,7 @@ impl Default for SpecialMaster {
             seen_ack: Default::default(),
             pend_rc: Default::default(),
             ret_rwp: Default::default(),
+            sw_flush: Default::default(),
             new_mode: Default::default(),
             wrapped: Default::default(),
             rw: Default::default(),
@@ -331,7 +333,7 @@ impl Logic for SpecialMaster {
             self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, fs_tx, ret_rwc, ret_cyc,
             hop, armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1,
             pend_i2, prev_alarm, ferr_owed, rdl, rcd, rcd_run, rdata, relay, rlast, mode, settle,
-            grace, ack_time, seen_ack, pend_rc, ret_rwp
+            grace, ack_time, seen_ack, pend_rc, ret_rwp, sw_flush
         );
         self.sbox.i_mode.next = self.mode.q.val();
         self.sbox.i_pi.next = self.i_pi.val();
@@ -742,8 +744,13 @@ impl Logic for SpecialMaster {
         }
         // BSS: the SEC or the relayed frame in mode N, TST when wrapped.
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
-        // At a switch the TST generator starts with a dark lead-in.
+        // At a switch the TST generator starts with a dark lead-in, and
+        // the receivers, whose lines change, drop what they were in.
         self.tst.i_restart.next = self.new_mode.val() != self.mode.q.val();
+        // (Registered: the switch decision depends on what they report.)
+        self.sw_flush.d.next = self.new_mode.val() != self.mode.q.val();
+        self.rx_in.i_flush.next = self.sw_flush.q.val();
+        self.rx_bsr.i_flush.next = self.sw_flush.q.val();
         self.tst.i_address.next = self.i_address.val();
         self.bss_pair.next = self.stx.o_line.val();
         if self.relay.q.val() {

@@ -100,6 +100,9 @@ pub struct Report {
     pub mode_ticks: Vec<(usize, u64, u64)>,
     /// Per node, the tick it was first seen in failsafe (same polling).
     pub fs_ticks: Vec<Option<u64>>,
+    /// Per cycle, whether its frame came back whole to the special master
+    /// (a good H1 and every slot, on PI or SI), as the RTL's monitors saw it.
+    pub returned_whole: Vec<bool>,
 }
 
 /// Options of a run.
@@ -148,7 +151,7 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
 /// The harness arms a flip in the idle gap before its packet and finds the
 /// packet by its J K ([`merkur_rtl::ring_top`]): the fibre must carry one
 /// packet in the cycle, after an idle gap the driver can see.
-fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Option<String> {
+pub fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Option<String> {
     let Fault::Flip { fibre, target, bit } = f else {
         return None;
     };
@@ -212,6 +215,8 @@ struct Ring {
     h1_seen: Vec<[u64; 4]>,
     /// Capture entries per cycle and fibre.
     capn: usize,
+    /// See [`Report::returned_whole`].
+    whole: Vec<bool>,
     /// Per slot, whether its Alive bit runs inverted against the model's
     /// since the last recovery window (None: not yet seen after it).
     alive_inv: Vec<Option<bool>>,
@@ -324,6 +329,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         ticks: 0,
         h1_seen: vec![[u64::MAX; 4]; 2 * n],
         capn,
+        whole: vec![false; cfg.cycles as usize],
         alive_inv: vec![Some(false); s],
     };
     let t1 = Instant::now();
@@ -868,6 +874,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         fault_ticks,
         mode_ticks,
         fs_ticks,
+        returned_whole: r.whole.clone(),
     })
 }
 
@@ -968,7 +975,9 @@ impl Snapshots {
                 ];
                 for (i, (_, name)) in COUNTERS.iter().enumerate() {
                     let applies = match i {
-                        2 => kind.is_master(),
+                        // (Not while a slot is stranded: whether its last
+                        // word is checked, stale, or VOID is bit timing.)
+                        2 => kind.is_master() && !stranded(cfg, &recs[c as usize]),
                         3 => k == cfg.sm,
                         _ => true,
                     };
@@ -988,6 +997,12 @@ impl Snapshots {
     }
 }
 
+/// Whether some slot's writer is off the frame's path in this cycle (dead,
+/// or cut off by a split ring): protocol §13, stranded slots.
+fn stranded(cfg: &Config, rec: &CycleRecord) -> bool {
+    cfg.writer.iter().any(|w| !rec.path.contains(w))
+}
+
 /// Compares every fibre's capture of cycle `c` with the model.
 fn compare_cycle(
     r: &mut Ring,
@@ -999,6 +1014,20 @@ fn compare_cycle(
     words: &mut u64,
 ) {
     let capn = r.capn;
+    // Whole at the special master: on its PI or its SI fibre.
+    let sm = cfg.sm;
+    let n_ = cfg.nodes.len();
+    for f in [(sm + n_ - 1) % n_, n_ + sm] {
+        let h1 = r.cap(f, 4 * capn + 2 * (c & 3) as usize + 1);
+        let mut whole = (h1 >> 20) & 7 == (c & 7) as u64 && (h1 >> 18) & 3 == 1;
+        for slot in 0..cfg.slots {
+            let e = r.cap(f, (c & 3) as usize * capn + slot);
+            whole &= (e >> 20) & 7 == (c & 7) as u64 && (e >> 18) & 3 != 0;
+        }
+        if whole {
+            r.whole[c as usize] = true;
+        }
+    }
     let n = cfg.nodes.len();
     let rec = &recs[c as usize];
     let b = (c & 3) as usize;
@@ -1037,10 +1066,11 @@ fn compare_cycle(
             return matches!(got, Slot::Void);
         };
         recs[..=c as usize].iter().any(|x| {
-            x.fibres.iter().any(|carry| {
-                matches!(carry, Carry::Data(fr)
+            x.produced.get(slot) == Some(&g.data)
+                || x.fibres.iter().any(|carry| {
+                    matches!(carry, Carry::Data(fr)
                     if matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data == g.data))
-            })
+                })
         })
     };
     for (f, carry) in rec.fibres.iter().enumerate() {
