@@ -383,25 +383,42 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
     let mut r = Rng(seed);
     let mut v = vec![];
     for rec in recs.iter().skip(1).take(cfg.cycles as usize - 2) {
+        // Words already hit in this cycle (on any fibre): a second flip in
+        // a word that travels on damaged is a double error, which these
+        // runs do not inject (the report says so).
+        let mut hit: Vec<(bool, usize)> = vec![];
         for (fi, carry) in rec.fibres.iter().enumerate() {
-            let bits = match carry {
-                Carry::Data(_) => 60 + 25 * cfg.slots,
-                Carry::Sec { .. } => 60,
-                _ => continue,
-            };
+            // The frame's code bits (DATA frames: the harness places a flip
+            // exactly only on a line bit that starts with an edge, a code 1;
+            // where it has to estimate a boundary it can be half a bit off,
+            // which a receiver reads as a slip, not as one bit error).
+            let Carry::Data(fr) = carry else { continue };
+            let ones = code_ones(cfg, fr);
+            let bits = 60 + 25 * cfg.slots;
             // P(at least one error in the packet), then a uniform position
-            // (the harness cannot reach the delimiter's first two bits).
+            // among the bits the harness can place.
             let p = 1.0 - (1.0 - ber).powi(bits as i32);
-            if r.unit() >= p {
+            if r.unit() >= p || ones.is_empty() {
                 continue;
             }
-            let at = 2 + r.below(bits as u64 - 2) as usize;
+            let at = ones[r.below(ones.len() as u64) as usize];
             let (target, bit) = match at {
                 0..=9 => (FlipTarget::Cs, at),
                 10..=34 => (FlipTarget::H0, at - 10),
                 35..=59 => (FlipTarget::H1, at - 35),
                 _ => (FlipTarget::Slot((at - 60) / 25), (at - 60) % 25),
             };
+            // A word's last bit also hits the next word (protocol §4).
+            let word = |a: usize| match a {
+                0..=9 => 0,
+                _ => 1 + (a - 10) / 25,
+            };
+            let sec = false;
+            let words = [word(at), word(at + 1)];
+            if words.iter().any(|w| hit.contains(&(sec, *w))) {
+                continue;
+            }
+            hit.extend(words.iter().map(|w| (sec, *w)));
             let fibre = if fi < n {
                 Fibre::P(fi)
             } else {
@@ -431,6 +448,42 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
         }
     }
     v
+}
+
+/// Line-bit positions (from the J) of a DATA frame whose code bit is 1,
+/// among the bits the harness can reach (from 2 on) in words whose code the
+/// model knows (good or VOID).
+fn code_ones(cfg: &Config, fr: &merkur_model::ring::Frame) -> Vec<usize> {
+    use merkur_model::line::{push_group, word_code_bits, CODE_J, CODE_K, CODE_S};
+    let merkur_model::ring::HeaderRx::Ok(h) = fr.hdr else {
+        return vec![];
+    };
+    let mut code: Vec<Option<u8>> = vec![];
+    let mut jk = vec![];
+    push_group(&mut jk, CODE_J);
+    push_group(&mut jk, CODE_K);
+    code.extend(jk.into_iter().map(Some));
+    for w in [h.h0(cfg.slots), h.h1()] {
+        code.extend(word_code_bits(&w, cfg.ext).into_iter().map(Some));
+    }
+    for w in &fr.words {
+        match w {
+            Slot::Data(d) => code.extend(word_code_bits(d, cfg.ext).into_iter().map(Some)),
+            Slot::Void => {
+                let mut v = vec![];
+                for _ in 0..5 {
+                    push_group(&mut v, CODE_S);
+                }
+                code.extend(v.into_iter().map(Some));
+            }
+            _ => code.extend(std::iter::repeat(None).take(25)),
+        }
+    }
+    code.iter()
+        .enumerate()
+        .filter(|&(i, b)| i >= 2 && *b == Some(1))
+        .map(|(i, _)| i)
+        .collect()
 }
 
 /// The special master's INPUT fibre in cycle c.
@@ -858,7 +911,7 @@ pub fn markdown(r: &Report) -> String {
     let accepted: u32 = r.cases.iter().map(|c| c.accepted).sum();
     let flips: u32 = r.cases.iter().map(|c| c.flips).sum();
     o += &format!(
-        "**{} cases, {} with mismatches against the model; {} bit flips injected, {} single-bit errors accepted.** Multi-bit errors in one word: not injected (the harness places at most one flip per packet and fibre), so none can be reported undetected here; the model's exhaustive check of every single line-bit error is `model/tests/line.rs`.\n\n",
+        "**{} cases, {} with mismatches against the model; {} bit flips injected, {} single-bit errors accepted.** Multi-bit errors in one word: not injected (at most one flip per packet and fibre, and per word and cycle across the ring: a word damaged on one hop travels on damaged, and a second flip on a later hop can restore both parities, which is a double error), so none can be reported undetected here; the model's exhaustive check of every single line-bit error is `model/tests/line.rs`.\n\n",
         r.cases.len(), mism, flips, accepted
     );
     let mut groups: BTreeMap<(usize, String, String), Vec<&CaseResult>> = BTreeMap::new();

@@ -885,8 +885,8 @@ impl Ring {
     /// header was valid.
     fn process(&mut self, k: usize, frame: &mut Frame, ev: &mut Vec<Event>) -> bool {
         let HeaderRx::Ok(mut h) = frame.hdr else {
-            // Frame ignored; forwarded as it is. Words are still decoded.
-            self.count_errors(k, frame);
+            // Frame ignored (the receiver drops the packet at its rejected
+            // header, protocol §9: no perr for its words); forwarded as it is.
             return false;
         };
         if h.fs {
@@ -932,7 +932,6 @@ impl Ring {
             return false;
         };
         let HeaderRx::Ok(h) = frame.hdr else {
-            self.count_errors(sm, &frame);
             self.store = vec![Slot::Void; s_count];
             self.nodes[sm].hop = None;
             return false;

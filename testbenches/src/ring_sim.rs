@@ -543,26 +543,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 break;
             }
             let pace = if node == cfg.sm { node } else { into(node) };
-            // Frame c − 1 ended on the pace fibre; or, if a bit error made it
-            // invisible there, as long after its start as frame 0 took.
-            let fr = r.rd(pace, st::FRAME);
-            let th1 = r.rd(pace, st::TH1);
-            let prev = starts[c as usize - 1];
-            let ended = fr >> 3 & 1 == 0
-                && fr & 7 == ((c - 1) & 7) as u64
-                && th1.wrapping_sub(prev) & 0xffff_ffff < 1 << 31;
-            // The fibre's H1 delay after a frame's start, from the last H1
-            // it showed; the frame ends 25·S bit times after its H1.
-            let cyc = (fr & 7) as u32;
-            if let Some(k) = (0..sent).rev().find(|k| k & 7 == cyc) {
-                let d = th1.wrapping_sub(starts[k as usize]) & 0xffff_ffff;
-                if d < 2 * period * TICKS_PER_BIT as u64 {
-                    pace_off[pace] = Some(d);
-                }
-            }
-            let tail = (25 * s as u64 + 8) * TICKS_PER_BIT as u64;
-            let timed = pace_off[pace].is_some_and(|o| r.ticks >= prev + o + tail);
-            if ended || timed {
+            if frame_over(&mut r, pace, c - 1, &starts, sent, &mut pace_off, period, s) {
                 r.wb(node, slot as u16, Some(data))?;
                 writes.remove(i);
             } else {
@@ -628,16 +609,19 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                     }
                 }
                 When::FrameEnded(fi) => {
-                    // Frame c − 1 has started, and its H1 (not an older
-                    // one with the same CYC) ended on the fibre.
-                    let ended = |r: &mut Ring| {
-                        let fr = r.rd(fi, st::FRAME);
-                        let th1 = r.rd(fi, st::TH1);
-                        fr >> 3 & 1 == 0
-                            && fr & 7 == ((c - 1) & 7) as u64
-                            && th1.wrapping_sub(starts[c as usize - 1]) & 0xffff_ffff < 1 << 31
-                    };
-                    c == 0 || sent > c + 1 || (sent >= c && ended(&mut r))
+                    c == 0
+                        || sent > c + 1
+                        || (sent >= c
+                            && frame_over(
+                                &mut r,
+                                fi,
+                                c - 1,
+                                &starts,
+                                sent,
+                                &mut pace_off,
+                                period,
+                                s,
+                            ))
                 }
                 When::Secs(fi, k) => c == 0 || sent > c + 1 || r.rd(fi, st::NSEC) >= k,
             };
@@ -997,6 +981,39 @@ impl Snapshots {
     }
 }
 
+/// Frame `k` has passed fibre `f`: its H1 (not an older one with the same
+/// CYC) was seen and its last slot too; or, when a bit error made it
+/// invisible there, as long after its start as the fibre's last visible
+/// frame took to end (learnt into `off`, the H1 delay after a frame's
+/// start), plus 8 bit times: in the idle gap before the next.
+#[allow(clippy::too_many_arguments)]
+fn frame_over(
+    r: &mut Ring,
+    f: usize,
+    k: u32,
+    starts: &[u64],
+    sent: u32,
+    off: &mut [Option<u64>],
+    period: u64,
+    slots: usize,
+) -> bool {
+    let fr = r.rd(f, st::FRAME);
+    let th1 = r.rd(f, st::TH1);
+    let prev = starts[k as usize];
+    let ended = fr >> 3 & 1 == 0
+        && fr & 7 == (k & 7) as u64
+        && th1.wrapping_sub(prev) & 0xffff_ffff < 1 << 31;
+    let cyc = (fr & 7) as u32;
+    if let Some(j) = (0..sent).rev().find(|j| j & 7 == cyc) {
+        let d = th1.wrapping_sub(starts[j as usize]) & 0xffff_ffff;
+        if d < 2 * period * TICKS_PER_BIT as u64 {
+            off[f] = Some(d);
+        }
+    }
+    let tail = (25 * slots as u64 + 8) * TICKS_PER_BIT as u64;
+    ended || off[f].is_some_and(|o| r.ticks >= prev + o + tail)
+}
+
 /// Whether some slot's writer is off the frame's path in this cycle (dead,
 /// or cut off by a split ring): protocol §13, stranded slots.
 fn stranded(cfg: &Config, rec: &CycleRecord) -> bool {
@@ -1059,7 +1076,10 @@ fn compare_cycle(
     // brought back, which is bit timing: VOID, or data the model showed in
     // that slot before — never a foreign value.
     let stranded = |slot: usize, got: &Slot| -> bool {
-        if rec.path.contains(&cfg.writer[slot]) {
+        let w = cfg.writer[slot];
+        // (Or frozen: a writer in failsafe wrote last whatever it wrote
+        // before the second fault reached it.)
+        if rec.path.contains(&w) && !rec.nodes[w].failsafe {
             return false;
         }
         let Slot::Data(g) = got else {
