@@ -14,7 +14,7 @@
 //! splits it; `--merge` joins shard reports.
 
 use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
-use merkur_model::ring::{self, table1, Carry, CycleRecord, Mode, Port, Slot};
+use merkur_model::ring::{self, splitmix, table1, Carry, CycleRecord, Mode, Port, Slot};
 use merkur_model::scenario::Kind;
 use merkur_rtl::ring_top::TICKS_PER_BIT;
 use merkur_testbenches::ring_sim::{self, Options};
@@ -129,14 +129,6 @@ struct Case {
     class: &'static str,
     cfg: Config,
     seed: u64,
-}
-
-fn splitmix(mut x: u64) -> u64 {
-    x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    let mut z = x;
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
 }
 
 fn hash_name(seed: u64, name: &str) -> u64 {
@@ -513,20 +505,10 @@ fn returned(cfg: &Config, recs: &[CycleRecord], c: usize) -> Vec<bool> {
     }
 }
 
-fn killed(cfg: &Config) -> Vec<usize> {
-    cfg.faults
-        .iter()
-        .filter_map(|(_, f)| match f {
-            Fault::Kill { node, .. } => Some(*node),
-            _ => None,
-        })
-        .collect()
-}
-
 /// What the live nodes hold (masters' memories, actuators' outputs) of slots
 /// whose writer lives.
 fn delivered(cfg: &Config, rec: &CycleRecord) -> Vec<u16> {
-    let dead = killed(cfg);
+    let dead = cfg.killed();
     let mut v = vec![];
     for (k, st) in rec.nodes.iter().enumerate() {
         if dead.contains(&k) {
@@ -559,7 +541,7 @@ fn run_case(case: &Case) -> CaseResult {
         .copied()
         .filter(|(_, f)| !matches!(f, Fault::Flip { .. }))
         .collect();
-    let dead = killed(cfg);
+    let dead = cfg.killed();
     let last = recs.last().expect("cycles > 0");
     let failsafe = last
         .nodes

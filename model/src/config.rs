@@ -211,6 +211,17 @@ pub mod cfg_bits {
 }
 
 impl Config {
+    /// Nodes that die during the run (kill faults).
+    pub fn killed(&self) -> Vec<usize> {
+        self.faults
+            .iter()
+            .filter_map(|(_, f)| match f {
+                Fault::Kill { node, .. } => Some(*node),
+                _ => None,
+            })
+            .collect()
+    }
+
     /// The configuration byte of `slot` in master `node` (protocol §7): LAST
     /// for slot S−1, ACT for served slots, LOCAL for its own slots, ALIVE_EN
     /// for every other slot unless `alive_check = false`.

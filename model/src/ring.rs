@@ -378,7 +378,8 @@ pub struct CycleRecord {
     pub sec_with_data: Vec<(usize, bool)>,
 }
 
-fn splitmix(mut x: u64) -> u64 {
+/// SplitMix64 finaliser: the model's (and the campaign's) seed mixer.
+pub fn splitmix(mut x: u64) -> u64 {
     x = x.wrapping_add(0x9e37_79b9_7f4a_7c15);
     let mut z = x;
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);

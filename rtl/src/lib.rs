@@ -48,6 +48,7 @@ pub mod rx_word;
 pub mod slave;
 pub mod special_master;
 pub mod stream_ctrl;
+pub mod switch_ctl;
 pub mod switchbox;
 pub mod tst_tx;
 pub mod verilog;

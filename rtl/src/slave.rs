@@ -42,6 +42,7 @@
 use crate::fwd::Fwd;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
+use crate::switch_ctl::SwitchCtl;
 use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
 use rust_hdl::prelude::*;
@@ -119,9 +120,8 @@ pub struct Slave {
     pub o_perr: Signal<Out, Bits<16>>,
     /// Rejected headers at INPUT.
     pub o_ferr: Signal<Out, Bits<16>>,
-    reintegrate: Constant<Bits<9>>,
-    settle_start: Constant<Bits<7>>,
     sbox: Switchbox,
+    swc: SwitchCtl,
     rx_in: PortRx,
     rx_bsr: PortRx,
     fwd: Fwd,
@@ -130,7 +130,6 @@ pub struct Slave {
     rep_last: DFF<Bit>,
     rep_cut: DFF<Bit>,
     fwd_cut: DFF<Bit>,
-    mode: DFF<Bits<2>>,
     failsafe: DFF<Bit>,
     rw: DFF<Bit>,
     h0_rwc: DFF<Bit>,
@@ -140,10 +139,6 @@ pub struct Slave {
     ferr_owed: DFF<Bits<3>>,
     cyc_gap: Signal<Local, Bits<3>>,
     quiet: DFF<Bits<16>>,
-    grace: DFF<Bits<16>>,
-    settle: DFF<Bits<7>>,
-    ack_time: DFF<Bits<9>>,
-    seen_ack: DFF<Bit>,
     pend_fs: DFF<Bit>,
     pend_rc: DFF<Bit>,
     pend_i1: DFF<Bit>,
@@ -155,7 +150,6 @@ pub struct Slave {
     wrapped: Signal<Local, Bit>,
     out_pair: Signal<Local, Bits<2>>,
     bss_pair: Signal<Local, Bits<2>>,
-    new_mode: Signal<Local, Bits<2>>,
 }
 
 impl Default for Slave {
@@ -200,9 +194,8 @@ impl Slave {
             o_failsafe: Default::default(),
             o_perr: Default::default(),
             o_ferr: Default::default(),
-            reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
-            settle_start: Constant::new(SETTLE_CLOCKS.to_bits()),
             sbox: Default::default(),
+            swc: Default::default(),
             rx_in: PortRx::new(false),
             rx_bsr: PortRx::new(false),
             fwd: Fwd::new(),
@@ -211,7 +204,6 @@ impl Slave {
             rep_last: Default::default(),
             rep_cut: Default::default(),
             fwd_cut: Default::default(),
-            mode: Default::default(),
             failsafe: Default::default(),
             rw: Default::default(),
             h0_rwc: Default::default(),
@@ -221,10 +213,6 @@ impl Slave {
             ferr_owed: Default::default(),
             cyc_gap: Default::default(),
             quiet: Default::default(),
-            grace: Default::default(),
-            settle: Default::default(),
-            ack_time: Default::default(),
-            seen_ack: Default::default(),
             pend_fs: Default::default(),
             pend_rc: Default::default(),
             pend_i1: Default::default(),
@@ -236,7 +224,6 @@ impl Slave {
             wrapped: Default::default(),
             out_pair: Default::default(),
             bss_pair: Default::default(),
-            new_mode: Default::default(),
         }
     }
 }
@@ -245,18 +232,17 @@ impl Logic for Slave {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, mode, failsafe, rw, armed, quiet, grace, settle, ack_time, seen_ack,
-            pend_fs, pend_rc, pend_i1, pend_i2, act_data, perr, ferr, rep_last, rep_cut, fwd_cut,
-            last_cyc, ferr_owed, h0_rwc, sw_flush
+            self, clock, failsafe, rw, armed, quiet, pend_fs, pend_rc, pend_i1, pend_i2, act_data,
+            perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
         self.fwd.clock.next = self.clock.val();
         self.tst.clock.next = self.clock.val();
-        self.wrapped.next = self.mode.q.val() != 0;
+        self.wrapped.next = self.swc.o_mode.val() != 0;
 
         // Switchbox.
-        self.sbox.i_mode.next = self.mode.q.val();
+        self.sbox.i_mode.next = self.swc.o_mode.val();
         self.sbox.i_pi.next = self.i_pi.val();
         self.sbox.i_si.next = self.i_si.val();
         self.rx_in.i_samples.next = self.sbox.o_input.val();
@@ -267,8 +253,8 @@ impl Logic for Slave {
         self.rx_bsr.i_address.next = self.i_address.val();
         // In mode N a TST where DATA is expected is a failure; not during
         // the grace period after unwrapping.
-        self.rx_in.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
-        self.rx_bsr.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
+        self.rx_in.i_tst_fail.next = !self.wrapped.val() & self.swc.o_grace_over.val();
+        self.rx_bsr.i_tst_fail.next = !self.wrapped.val() & self.swc.o_grace_over.val();
 
         // Forwarder INPUT -> OUTPUT.
         self.fwd.i_bvalid.next = self.rx_in.o_bvalid.val();
@@ -326,10 +312,10 @@ impl Logic for Slave {
         }
         if self.pend_rc.q.val() {
             self.reason.next = 4.into();
-            if self.mode.q.val() == 1 {
+            if self.swc.o_mode.val() == 1 {
                 self.reason.next = 5.into();
             }
-            if self.mode.q.val() == 2 {
+            if self.swc.o_mode.val() == 2 {
                 self.reason.next = 6.into();
             }
         }
@@ -424,70 +410,25 @@ impl Logic for Slave {
         if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
             self.failsafe.d.next = true;
         }
-        if self.grace.q.val() != 0 {
-            self.grace.d.next = self.grace.q.val() - 1;
+        // Switchbox decisions (protocol §10, §12): crate::switch_ctl.
+        self.swc.clock.next = self.clock.val();
+        self.swc.i_armed.next = self.armed.q.val();
+        self.swc.i_cf_in.next = self.rx_in.o_cf.val();
+        self.swc.i_cf_bsr.next = self.rx_bsr.o_cf.val();
+        self.swc.i_rw.next = self.rw.q.val();
+        self.swc.i_fs.next = self.failsafe.q.val();
+        self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
+        self.swc.i_frame_start.next = self.rx_in.o_start.val();
+        self.swc.i_bsr_data.next = self.rx_bsr.o_wvalid.val()
+            & (self.rx_bsr.o_kind.val() == 0)
+            & self.rx_bsr.o_ok.val()
+            & (self.rx_bsr.o_ptype.val() == 0);
+        self.swc.i_cs_timeout.next = self.i_cs_timeout.val();
+        if self.swc.o_fs_set.val() {
+            self.failsafe.d.next = true;
         }
-        if self.settle.q.val() != 0 {
-            self.settle.d.next = self.settle.q.val() - 1;
-        }
-
-        // Switchbox decisions (protocol §10, §12).
-        // Stream controllers act only once the node is armed (its first good
-        // frame): at power-up every line is dark. After a switchbox change
-        // the receive ports need 50 bit times to lock to their new lines;
-        // their verdicts about the old lines are not acted on.
-        self.new_mode.next = self.mode.q.val();
-        if !self.armed.q.val() | (self.settle.q.val() != 0) {
-        } else if !self.wrapped.val() {
-            if self.rx_in.o_cf.val() {
-                self.new_mode.next = 1.into();
-                if self.rx_bsr.o_cf.val() | self.rw.q.val() {
-                    self.failsafe.d.next = true;
-                }
-            } else if self.rx_bsr.o_cf.val() {
-                self.new_mode.next = 2.into();
-                if self.rw.q.val() {
-                    self.failsafe.d.next = true;
-                }
-            }
-        } else {
-            if self.rx_in.o_cf.val() {
-                self.failsafe.d.next = true;
-            }
-            // Reintegration: the partner's TST with ACK heard on BSR.
-            if self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val() {
-                self.seen_ack.d.next = true;
-                if self.ack_time.q.val() != 511 {
-                    self.ack_time.d.next = self.ack_time.q.val() + 1;
-                }
-            }
-            if !self.failsafe.q.val() {
-                if (self.mode.q.val() == 2)
-                    & (self.ack_time.q.val() >= self.reintegrate.val())
-                    & self.rx_in.o_start.val()
-                {
-                    self.new_mode.next = 0.into();
-                }
-                if (self.mode.q.val() == 1)
-                    & self.seen_ack.q.val()
-                    & self.rx_bsr.o_wvalid.val()
-                    & (self.rx_bsr.o_kind.val() == 0)
-                    & self.rx_bsr.o_ok.val()
-                    & (self.rx_bsr.o_ptype.val() == 0)
-                {
-                    self.new_mode.next = 0.into();
-                }
-            }
-        }
-        if self.new_mode.val() != self.mode.q.val() {
-            self.mode.d.next = self.new_mode.val();
-            self.settle.d.next = self.settle_start.val();
+        if self.swc.o_change.val() {
             self.pend_rc.d.next = true;
-            self.ack_time.d.next = 0.into();
-            self.seen_ack.d.next = false;
-            if self.new_mode.val() == 0 {
-                self.grace.d.next = self.i_cs_timeout.val() >> 1;
-            }
         }
 
         // OUTPUT: the forwarded stream; while INPUT is dark the retime
@@ -524,9 +465,9 @@ impl Logic for Slave {
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
         // At a switch the TST generator starts with a dark lead-in, and
         // the receivers, whose lines change, drop what they were in.
-        self.tst.i_restart.next = self.new_mode.val() != self.mode.q.val();
+        self.tst.i_restart.next = self.swc.o_change.val();
         // (Registered: the switch decision depends on what they report.)
-        self.sw_flush.d.next = self.new_mode.val() != self.mode.q.val();
+        self.sw_flush.d.next = self.swc.o_change.val();
         self.rx_in.i_flush.next = self.sw_flush.q.val();
         self.rx_bsr.i_flush.next = self.sw_flush.q.val();
         self.tst.i_address.next = self.i_address.val();
@@ -540,7 +481,7 @@ impl Logic for Slave {
         self.o_so.next = self.sbox.o_so.val();
 
         self.o_act_data.next = self.act_data.q.val();
-        self.o_mode.next = self.mode.q.val();
+        self.o_mode.next = self.swc.o_mode.val();
         self.o_failsafe.next = self.failsafe.q.val();
         self.o_perr.next = self.perr.q.val();
         self.o_ferr.next = self.ferr.q.val();

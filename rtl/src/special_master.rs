@@ -64,7 +64,7 @@ use crate::mdb::Mdb;
 use crate::pkt_tx::PktTx;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
-use crate::slave::{REINTEGRATE_CLOCKS, SETTLE_CLOCKS};
+use crate::switch_ctl::SwitchCtl;
 use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
 use rust_hdl::prelude::*;
@@ -149,17 +149,10 @@ pub struct SpecialMaster {
     rep: Retime,
     sbox: Switchbox,
     tst: TstTx,
-    reintegrate: Constant<Bits<9>>,
-    settle_start: Constant<Bits<7>>,
-    mode: DFF<Bits<2>>,
-    settle: DFF<Bits<7>>,
-    grace: DFF<Bits<16>>,
-    ack_time: DFF<Bits<9>>,
-    seen_ack: DFF<Bit>,
+    swc: SwitchCtl,
     pend_rc: DFF<Bit>,
     ret_rwp: DFF<Bit>,
     sw_flush: DFF<Bit>,
-    new_mode: Signal<Local, Bits<2>>,
     wrapped: Signal<Local, Bit>,
     rw: Signal<Local, Bit>,
     bss_pair: Signal<Local, Bits<2>>,
@@ -257,17 +250,10 @@ impl Default for SpecialMaster {
             rep: Default::default(),
             sbox: Default::default(),
             tst: Default::default(),
-            reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
-            settle_start: Constant::new(SETTLE_CLOCKS.to_bits()),
-            mode: Default::default(),
-            settle: Default::default(),
-            grace: Default::default(),
-            ack_time: Default::default(),
-            seen_ack: Default::default(),
+            swc: Default::default(),
             pend_rc: Default::default(),
             ret_rwp: Default::default(),
             sw_flush: Default::default(),
-            new_mode: Default::default(),
             wrapped: Default::default(),
             rw: Default::default(),
             bss_pair: Default::default(),
@@ -332,14 +318,14 @@ impl Logic for SpecialMaster {
         dff_setup!(
             self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, fs_tx, ret_rwc, ret_cyc,
             hop, armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1,
-            pend_i2, prev_alarm, ferr_owed, rdl, rcd, rcd_run, rdata, relay, rlast, mode, settle,
-            grace, ack_time, seen_ack, pend_rc, ret_rwp, sw_flush
+            pend_i2, prev_alarm, ferr_owed, rdl, rcd, rcd_run, rdata, relay, rlast, pend_rc,
+            ret_rwp, sw_flush
         );
-        self.sbox.i_mode.next = self.mode.q.val();
+        self.sbox.i_mode.next = self.swc.o_mode.val();
         self.sbox.i_pi.next = self.i_pi.val();
         self.sbox.i_si.next = self.i_si.val();
         self.tst.clock.next = self.clock.val();
-        self.wrapped.next = self.mode.q.val() != 0;
+        self.wrapped.next = self.swc.o_mode.val() != 0;
         // The ring is wrapped: this node, or the last returned header.
         self.rw.next = self.wrapped.val() | self.ret_rwc.q.val() | self.ret_rwp.q.val();
         self.rx_in.clock.next = self.clock.val();
@@ -363,8 +349,8 @@ impl Logic for SpecialMaster {
         self.rx_bsr.i_address.next = self.i_address.val();
         // In mode N a TST where DATA is expected is a failure; not during
         // the grace period after unwrapping.
-        self.rx_in.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
-        self.rx_bsr.i_tst_fail.next = !self.wrapped.val() & (self.grace.q.val() == 0);
+        self.rx_in.i_tst_fail.next = !self.wrapped.val() & self.swc.o_grace_over.val();
+        self.rx_bsr.i_tst_fail.next = !self.wrapped.val() & self.swc.o_grace_over.val();
 
         // The period: one tick every i_period bit times once running.
         self.half.d.next = !self.half.q.val();
@@ -433,10 +419,10 @@ impl Logic for SpecialMaster {
         }
         if self.pend_rc.q.val() {
             self.reason.next = 4.into();
-            if self.mode.q.val() == 1 {
+            if self.swc.o_mode.val() == 1 {
                 self.reason.next = 5.into();
             }
-            if self.mode.q.val() == 2 {
+            if self.swc.o_mode.val() == 2 {
                 self.reason.next = 6.into();
             }
         }
@@ -571,66 +557,26 @@ impl Logic for SpecialMaster {
         if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
             self.failsafe.d.next = true;
         }
-        if self.grace.q.val() != 0 {
-            self.grace.d.next = self.grace.q.val() - 1;
+        // Switchbox decisions, as every node's (crate::switch_ctl); a WD
+        // special master unwraps at its next period tick.
+        self.swc.clock.next = self.clock.val();
+        self.swc.i_armed.next = self.armed.q.val();
+        self.swc.i_cf_in.next = self.rx_in.o_cf.val();
+        self.swc.i_cf_bsr.next = self.rx_bsr.o_cf.val();
+        self.swc.i_rw.next = self.rw.val();
+        self.swc.i_fs.next = self.failsafe.q.val();
+        self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
+        self.swc.i_frame_start.next = self.tick.val();
+        self.swc.i_bsr_data.next = self.rx_bsr.o_wvalid.val()
+            & (self.rx_bsr.o_kind.val() == 0)
+            & self.rx_bsr.o_ok.val()
+            & (self.rx_bsr.o_ptype.val() == 0);
+        self.swc.i_cs_timeout.next = self.i_cs_timeout.val();
+        if self.swc.o_fs_set.val() {
+            self.failsafe.d.next = true;
         }
-        if self.settle.q.val() != 0 {
-            self.settle.d.next = self.settle.q.val() - 1;
-        }
-        // Switchbox decisions, as every node's (protocol §10, §12; see
-        // crate::slave).
-        self.new_mode.next = self.mode.q.val();
-        if !self.armed.q.val() | (self.settle.q.val() != 0) {
-        } else if !self.wrapped.val() {
-            if self.rx_in.o_cf.val() {
-                self.new_mode.next = 1.into();
-                if self.rx_bsr.o_cf.val() | self.rw.val() {
-                    self.failsafe.d.next = true;
-                }
-            } else if self.rx_bsr.o_cf.val() {
-                self.new_mode.next = 2.into();
-                if self.rw.val() {
-                    self.failsafe.d.next = true;
-                }
-            }
-        } else {
-            if self.rx_in.o_cf.val() {
-                self.failsafe.d.next = true;
-            }
-            // Reintegration: the partner's TST with ACK heard on BSR.
-            if self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val() {
-                self.seen_ack.d.next = true;
-                if self.ack_time.q.val() != 511 {
-                    self.ack_time.d.next = self.ack_time.q.val() + 1;
-                }
-            }
-            if !self.failsafe.q.val() {
-                if (self.mode.q.val() == 2)
-                    & (self.ack_time.q.val() >= self.reintegrate.val())
-                    & self.tick.val()
-                {
-                    self.new_mode.next = 0.into();
-                }
-                if (self.mode.q.val() == 1)
-                    & self.seen_ack.q.val()
-                    & self.rx_bsr.o_wvalid.val()
-                    & (self.rx_bsr.o_kind.val() == 0)
-                    & self.rx_bsr.o_ok.val()
-                    & (self.rx_bsr.o_ptype.val() == 0)
-                {
-                    self.new_mode.next = 0.into();
-                }
-            }
-        }
-        if self.new_mode.val() != self.mode.q.val() {
-            self.mode.d.next = self.new_mode.val();
-            self.settle.d.next = self.settle_start.val();
+        if self.swc.o_change.val() {
             self.pend_rc.d.next = true;
-            self.ack_time.d.next = 0.into();
-            self.seen_ack.d.next = false;
-            if self.new_mode.val() == 0 {
-                self.grace.d.next = self.i_cs_timeout.val() >> 1;
-            }
         }
         if self.rx_in.o_wvalid.val()
             & (self.rx_in.o_kind.val() == 2)
@@ -690,7 +636,7 @@ impl Logic for SpecialMaster {
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();
         self.o_irq_fs.next = self.mdb.o_irq_fs.val();
-        self.o_mode.next = self.mode.q.val();
+        self.o_mode.next = self.swc.o_mode.val();
         self.o_failsafe.next = self.failsafe.q.val();
         self.o_perr.next = self.perr.q.val();
         self.o_ferr.next = self.ferr.q.val();
@@ -746,9 +692,9 @@ impl Logic for SpecialMaster {
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
         // At a switch the TST generator starts with a dark lead-in, and
         // the receivers, whose lines change, drop what they were in.
-        self.tst.i_restart.next = self.new_mode.val() != self.mode.q.val();
+        self.tst.i_restart.next = self.swc.o_change.val();
         // (Registered: the switch decision depends on what they report.)
-        self.sw_flush.d.next = self.new_mode.val() != self.mode.q.val();
+        self.sw_flush.d.next = self.swc.o_change.val();
         self.rx_in.i_flush.next = self.sw_flush.q.val();
         self.rx_bsr.i_flush.next = self.sw_flush.q.val();
         self.tst.i_address.next = self.i_address.val();

@@ -49,6 +49,10 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ("monitor", block_verilog(monitor::Monitor::new(false))),
         ("switchbox", block_verilog(switchbox::Switchbox::default())),
         (
+            "switch_ctl",
+            block_verilog(switch_ctl::SwitchCtl::default()),
+        ),
+        (
             "stream_ctrl",
             block_verilog(stream_ctrl::StreamCtrl::default()),
         ),

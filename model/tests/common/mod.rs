@@ -1,7 +1,7 @@
 //! Helpers shared by the model's integration tests.
 #![allow(dead_code)]
 
-use merkur_model::config::{self, Config, Fault, SlotKind};
+use merkur_model::config::{self, Config, SlotKind};
 use merkur_model::ring::{self, CycleRecord};
 use merkur_model::scenario::Kind;
 
@@ -12,13 +12,7 @@ pub fn load(text: &str) -> Config {
 
 /// Nodes killed by the end of the run.
 pub fn killed(cfg: &Config) -> Vec<usize> {
-    cfg.faults
-        .iter()
-        .filter_map(|(_, f)| match f {
-            Fault::Kill { node, .. } => Some(*node),
-            _ => None,
-        })
-        .collect()
+    cfg.killed()
 }
 
 /// What the ring delivers, per (node, slot): masters' data memories and

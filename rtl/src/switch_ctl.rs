@@ -1,0 +1,178 @@
+//! # switch_ctl — a node's switchbox decisions (protocol §10, §12)
+//!
+//! Purpose: the local fault management of every node, the special master
+//! included: from its two stream controllers it decides the switchbox mode
+//! (Table 1), the failsafe of a second fault, and reintegration when a
+//! repaired link's partner acknowledges its TST. No central station: each
+//! node runs one of these on what it sees.
+//!
+//! - mode N: INPUT fails → WU (and failsafe if BSR failed too, or the node
+//!   knows the ring is already wrapped: the second fault); else BSR fails →
+//!   WD (failsafe if the ring is known wrapped);
+//! - wrapped: INPUT fails → failsafe; the partner's TST with ACK heard on
+//!   BSR → a WD node unwraps at the next frame start after
+//!   [`crate::slave::REINTEGRATE_CLOCKS`] of it, a WU node when a DATA
+//!   header arrives on BSR after it (not in failsafe);
+//! - stream controllers act only once the node is armed (its first good
+//!   frame) and not for [`crate::slave::SETTLE_CLOCKS`] after a change (the
+//!   receivers lock to their new lines); after unwrapping, a TST where DATA
+//!   is expected is not a failure for half a CS timeout (`o_grace_over`).
+//!
+//! | port | dir | width | clock domain | meaning |
+//! |---|---|---|---|---|
+//! | `clock` | in | 1 | — | core clock |
+//! | `i_armed` | in | 1 | clock | the node has received its first good frame |
+//! | `i_cf_in`, `i_cf_bsr` | in | 1 | clock | channel failure on INPUT, on BSR |
+//! | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
+//! | `i_fs` | in | 1 | clock | the node is in failsafe |
+//! | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
+//! | `i_frame_start` | in | 1 | clock | a frame starts (INPUT's J K; the special master's period tick) |
+//! | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
+//! | `i_cs_timeout` | in | 16 | static | CS timeout, clocks |
+//! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
+//! | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
+//! | `o_fs_set` | out | 1 | clock | enter failsafe (combinational) |
+//! | `o_grace_over` | out | 1 | clock | a TST on a mode-N input counts as failure again |
+//!
+//! Latency: a decision takes effect at the next clock edge (`o_mode`).
+//!
+//! ```text
+//! i_cf_in   ____/‾‾‾‾‾‾‾‾‾
+//! o_change  ____/‾\________        (mode N, ring not known wrapped)
+//! o_mode    ==N===X==WU====
+//! ```
+
+use crate::slave::{REINTEGRATE_CLOCKS, SETTLE_CLOCKS};
+use rust_hdl::prelude::*;
+
+/// Switchbox decision logic.
+#[derive(LogicBlock)]
+pub struct SwitchCtl {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// First good frame seen.
+    pub i_armed: Signal<In, Bit>,
+    /// Channel failure on INPUT.
+    pub i_cf_in: Signal<In, Bit>,
+    /// Channel failure on BSR.
+    pub i_cf_bsr: Signal<In, Bit>,
+    /// The ring is known wrapped.
+    pub i_rw: Signal<In, Bit>,
+    /// In failsafe.
+    pub i_fs: Signal<In, Bit>,
+    /// Partner's TST with ACK on BSR.
+    pub i_tst_ack: Signal<In, Bit>,
+    /// A frame starts.
+    pub i_frame_start: Signal<In, Bit>,
+    /// A good DATA H0 on BSR.
+    pub i_bsr_data: Signal<In, Bit>,
+    /// CS timeout, clocks.
+    pub i_cs_timeout: Signal<In, Bits<16>>,
+    /// Mode.
+    pub o_mode: Signal<Out, Bits<2>>,
+    /// The mode changes at the next edge.
+    pub o_change: Signal<Out, Bit>,
+    /// Enter failsafe.
+    pub o_fs_set: Signal<Out, Bit>,
+    /// Grace period over.
+    pub o_grace_over: Signal<Out, Bit>,
+    reintegrate: Constant<Bits<9>>,
+    settle_start: Constant<Bits<7>>,
+    mode: DFF<Bits<2>>,
+    settle: DFF<Bits<7>>,
+    grace: DFF<Bits<16>>,
+    ack_time: DFF<Bits<9>>,
+    seen_ack: DFF<Bit>,
+    new_mode: Signal<Local, Bits<2>>,
+}
+
+impl Default for SwitchCtl {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            i_armed: Default::default(),
+            i_cf_in: Default::default(),
+            i_cf_bsr: Default::default(),
+            i_rw: Default::default(),
+            i_fs: Default::default(),
+            i_tst_ack: Default::default(),
+            i_frame_start: Default::default(),
+            i_bsr_data: Default::default(),
+            i_cs_timeout: Default::default(),
+            o_mode: Default::default(),
+            o_change: Default::default(),
+            o_fs_set: Default::default(),
+            o_grace_over: Default::default(),
+            reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
+            settle_start: Constant::new(SETTLE_CLOCKS.to_bits()),
+            mode: Default::default(),
+            settle: Default::default(),
+            grace: Default::default(),
+            ack_time: Default::default(),
+            seen_ack: Default::default(),
+            new_mode: Default::default(),
+        }
+    }
+}
+
+impl Logic for SwitchCtl {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, mode, settle, grace, ack_time, seen_ack);
+        if self.grace.q.val() != 0 {
+            self.grace.d.next = self.grace.q.val() - 1;
+        }
+        if self.settle.q.val() != 0 {
+            self.settle.d.next = self.settle.q.val() - 1;
+        }
+        self.o_fs_set.next = false;
+        self.new_mode.next = self.mode.q.val();
+        if !self.i_armed.val() | (self.settle.q.val() != 0) {
+        } else if self.mode.q.val() == 0 {
+            if self.i_cf_in.val() {
+                self.new_mode.next = 1.into();
+                if self.i_cf_bsr.val() | self.i_rw.val() {
+                    self.o_fs_set.next = true;
+                }
+            } else if self.i_cf_bsr.val() {
+                self.new_mode.next = 2.into();
+                if self.i_rw.val() {
+                    self.o_fs_set.next = true;
+                }
+            }
+        } else {
+            if self.i_cf_in.val() {
+                self.o_fs_set.next = true;
+            }
+            if self.i_tst_ack.val() {
+                self.seen_ack.d.next = true;
+                if self.ack_time.q.val() != 511 {
+                    self.ack_time.d.next = self.ack_time.q.val() + 1;
+                }
+            }
+            if !self.i_fs.val() {
+                if (self.mode.q.val() == 2)
+                    & (self.ack_time.q.val() >= self.reintegrate.val())
+                    & self.i_frame_start.val()
+                {
+                    self.new_mode.next = 0.into();
+                }
+                if (self.mode.q.val() == 1) & self.seen_ack.q.val() & self.i_bsr_data.val() {
+                    self.new_mode.next = 0.into();
+                }
+            }
+        }
+        self.o_change.next = self.new_mode.val() != self.mode.q.val();
+        if self.new_mode.val() != self.mode.q.val() {
+            self.mode.d.next = self.new_mode.val();
+            self.settle.d.next = self.settle_start.val();
+            self.ack_time.d.next = 0.into();
+            self.seen_ack.d.next = false;
+            if self.new_mode.val() == 0 {
+                self.grace.d.next = self.i_cs_timeout.val() >> 1;
+            }
+        }
+        self.o_mode.next = self.mode.q.val();
+        self.o_grace_over.next = self.grace.q.val() == 0;
+    }
+}
