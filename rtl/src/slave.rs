@@ -134,6 +134,7 @@ pub struct Slave {
     rw: DFF<Bit>,
     h0_rwc: DFF<Bit>,
     sw_flush: DFF<Bit>,
+    inpkt_was: DFF<Bit>,
     armed: DFF<Bit>,
     last_cyc: DFF<Bits<3>>,
     ferr_owed: DFF<Bits<3>>,
@@ -208,6 +209,7 @@ impl Slave {
             rw: Default::default(),
             h0_rwc: Default::default(),
             sw_flush: Default::default(),
+            inpkt_was: Default::default(),
             armed: Default::default(),
             last_cyc: Default::default(),
             ferr_owed: Default::default(),
@@ -233,7 +235,8 @@ impl Logic for Slave {
     fn update(&mut self) {
         dff_setup!(
             self, clock, failsafe, rw, armed, quiet, pend_fs, pend_rc, pend_i1, pend_i2, act_data,
-            perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush
+            perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush,
+            inpkt_was
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -418,7 +421,9 @@ impl Logic for Slave {
         self.swc.i_rw.next = self.rw.q.val();
         self.swc.i_fs.next = self.failsafe.q.val();
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
-        self.swc.i_frame_start.next = self.rx_in.o_start.val();
+        // A WD node unwraps between frames (the next one goes round whole).
+        self.swc.i_frame_start.next = self.inpkt_was.q.val() & !self.rx_in.o_inpkt.val();
+        self.inpkt_was.d.next = self.rx_in.o_inpkt.val();
         self.swc.i_bsr_data.next = self.rx_bsr.o_wvalid.val()
             & (self.rx_bsr.o_kind.val() == 0)
             & self.rx_bsr.o_ok.val()
@@ -465,9 +470,9 @@ impl Logic for Slave {
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
         // At a switch the TST generator starts with a dark lead-in, and
         // the receivers, whose lines change, drop what they were in.
-        self.tst.i_restart.next = self.swc.o_change.val();
+        self.tst.i_restart.next = self.swc.o_tst_start.val();
         // (Registered: the switch decision depends on what they report.)
-        self.sw_flush.d.next = self.swc.o_change.val();
+        self.sw_flush.d.next = self.swc.o_relink.val();
         self.rx_in.i_flush.next = self.sw_flush.q.val();
         self.rx_bsr.i_flush.next = self.sw_flush.q.val();
         self.tst.i_address.next = self.i_address.val();

@@ -692,9 +692,9 @@ impl Logic for SpecialMaster {
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
         // At a switch the TST generator starts with a dark lead-in, and
         // the receivers, whose lines change, drop what they were in.
-        self.tst.i_restart.next = self.swc.o_change.val();
+        self.tst.i_restart.next = self.swc.o_tst_start.val();
         // (Registered: the switch decision depends on what they report.)
-        self.sw_flush.d.next = self.swc.o_change.val();
+        self.sw_flush.d.next = self.swc.o_relink.val();
         self.rx_in.i_flush.next = self.sw_flush.q.val();
         self.rx_bsr.i_flush.next = self.sw_flush.q.val();
         self.tst.i_address.next = self.i_address.val();

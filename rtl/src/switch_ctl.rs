@@ -26,11 +26,13 @@
 //! | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
 //! | `i_fs` | in | 1 | clock | the node is in failsafe |
 //! | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
-//! | `i_frame_start` | in | 1 | clock | a frame starts (INPUT's J K; the special master's period tick) |
+//! | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
 //! | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
 //! | `i_cs_timeout` | in | 16 | static | CS timeout, clocks |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
 //! | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
+//! | `o_relink` | out | 1 | clock | … and INPUT and BSR move to other lines (into or out of WU) |
+//! | `o_tst_start` | out | 1 | clock | … and the TST generator goes onto an output (N → WU, WD) |
 //! | `o_fs_set` | out | 1 | clock | enter failsafe (combinational) |
 //! | `o_grace_over` | out | 1 | clock | a TST on a mode-N input counts as failure again |
 //!
@@ -72,6 +74,10 @@ pub struct SwitchCtl {
     pub o_mode: Signal<Out, Bits<2>>,
     /// The mode changes at the next edge.
     pub o_change: Signal<Out, Bit>,
+    /// The receivers' lines move.
+    pub o_relink: Signal<Out, Bit>,
+    /// TST goes onto an output.
+    pub o_tst_start: Signal<Out, Bit>,
     /// Enter failsafe.
     pub o_fs_set: Signal<Out, Bit>,
     /// Grace period over.
@@ -101,6 +107,8 @@ impl Default for SwitchCtl {
             i_cs_timeout: Default::default(),
             o_mode: Default::default(),
             o_change: Default::default(),
+            o_relink: Default::default(),
+            o_tst_start: Default::default(),
             o_fs_set: Default::default(),
             o_grace_over: Default::default(),
             reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
@@ -163,6 +171,9 @@ impl Logic for SwitchCtl {
             }
         }
         self.o_change.next = self.new_mode.val() != self.mode.q.val();
+        self.o_relink.next =
+            self.o_change.val() & ((self.mode.q.val() == 1) != (self.new_mode.val() == 1));
+        self.o_tst_start.next = self.o_change.val() & (self.mode.q.val() == 0);
         if self.new_mode.val() != self.mode.q.val() {
             self.mode.d.next = self.new_mode.val();
             self.settle.d.next = self.settle_start.val();
