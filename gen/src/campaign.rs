@@ -56,6 +56,8 @@ pub struct Plan {
     pub shard: (usize, usize),
     /// Only the case with this name.
     pub case: Option<String>,
+    /// Waveform of the one case `case` names.
+    pub wave: Option<PathBuf>,
 }
 
 /// One case's result (a row of the JSON report).
@@ -529,7 +531,7 @@ fn delivered(cfg: &Config, rec: &CycleRecord) -> Vec<u16> {
     v
 }
 
-fn run_case(case: &Case) -> CaseResult {
+fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
     let cfg = &case.cfg;
     let recs = ring::run(cfg);
     let mut clean_cfg = cfg.clone();
@@ -615,6 +617,7 @@ fn run_case(case: &Case) -> CaseResult {
     }
     let opts = Options {
         seed: case.seed,
+        wave: wave.map(Path::to_path_buf),
         ..Default::default()
     };
     let rep = match ring_sim::run(cfg, &recs, &opts) {
@@ -755,6 +758,9 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
         }
         cases.extend(cases_of(&ring_name, &base, plan));
     }
+    if plan.wave.is_some() && plan.case.is_none() {
+        return Err("error: --wave needs --case: a waveform is written for one case".into());
+    }
     if let Some(want) = &plan.case {
         cases.retain(|c| &c.name == want);
         if cases.is_empty() {
@@ -801,7 +807,7 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
             s.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::SeqCst);
                 let Some(case) = mine.get(i) else { break };
-                let r = run_case(case);
+                let r = run_case(case, plan.wave.as_deref());
                 let bad = r.mismatches > 0;
                 let d = done.fetch_add(1, Ordering::SeqCst) + 1;
                 let mut all = results.lock().unwrap_or_else(|e| e.into_inner());
@@ -953,11 +959,10 @@ pub fn markdown(r: &Report) -> String {
         o += "\n## Cases with mismatches\n\n";
         for c in bad {
             o += &format!(
-                "- `{}` (seed {}, {} mismatches; rerun: `merkur campaign --ring <{}> --case '{}'`): {}\n",
+                "- `{}` (seed {}, {} mismatches; rerun: the command above with `--case '{}'`, and `--wave FILE` for its waveform): {}\n",
                 c.name,
                 c.seed,
                 c.mismatches,
-                c.ring,
                 c.name,
                 c.first.join("; ")
             );

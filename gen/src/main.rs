@@ -1,7 +1,6 @@
 //! `merkur`: the command-line tool of the merkur project.
 //!
-//! Subcommands that exist work; nothing here is a placeholder. Synthesis
-//! comes with a later issue.
+//! Subcommands that exist work; nothing here is a placeholder.
 
 use clap::{Parser, Subcommand};
 use merkur_model::{config, ring, trace};
@@ -11,6 +10,7 @@ use std::process::ExitCode;
 mod campaign;
 mod demo;
 mod sim;
+mod synth;
 
 #[derive(Parser)]
 #[command(
@@ -110,12 +110,40 @@ enum Cmd {
         /// Run only the case of this name (as the report lists it).
         #[arg(long, value_name = "NAME")]
         case: Option<String>,
+        /// With --case: write the case's RTL run as an FST waveform (GTKWave save file beside it).
+        #[arg(long, value_name = "FILE")]
+        wave: Option<PathBuf>,
         /// Write campaign.md and campaign.json into this directory (else the Markdown goes to stdout).
         #[arg(short, long, value_name = "DIR")]
         output: Option<PathBuf>,
         /// Merge these JSON reports (from shards) instead of running.
         #[arg(long, value_name = "FILE", num_args = 1..)]
         merge: Vec<PathBuf>,
+    },
+    /// Synthesize a scenario's nodes with the open tools and write the artifacts and a report
+    /// (synth.md, synth.json): iCE40 bitstream and timing, CoolRunner-II mapping, Spartan-6
+    /// resources, or the XEM6010 board top. Exit status 1 when an iCE40 node misses timing at
+    /// the design clock or does not fit the device (CPLD and Spartan-6 overflows are reported).
+    Synth {
+        /// Scenario file (TOML): the ring whose nodes are built (home slots, slots, period).
+        scenario: PathBuf,
+        /// ice40-hx8k (bitstream, nextpnr timing), xc2c256 (CPLD mapping), xc6s (Spartan-6
+        /// resources) or xem6010 (board top, UCF, ISE script; bitstream with --features xem6010).
+        #[arg(long, value_name = "TARGET")]
+        target: String,
+        /// Build this node (ring index; repeatable). Default: the special master, the first
+        /// master and the first slave (XEM6010: the special master and the first master).
+        #[arg(long = "node", value_name = "K")]
+        nodes: Vec<usize>,
+        /// Design line rate in Mbit/s (core clock = 2×); default the scenario's (50).
+        #[arg(long, value_name = "MBPS")]
+        line_rate: Option<f64>,
+        /// Output folder (default merkur-synth/<scenario name>-<target>).
+        #[arg(short, long, value_name = "DIR")]
+        output: Option<PathBuf>,
+        /// nextpnr placement seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
     },
     /// Run the built-in 8-node ring with one line break through the model (explained cycle
     /// by cycle) and through the RTL in Verilator, and show that they agree.
@@ -269,6 +297,7 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
         jobs,
         shard,
         case,
+        wave,
         output,
         merge,
     } = cmd
@@ -331,6 +360,7 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
                 None => (1, 1),
             },
             case: case.clone(),
+            wave: wave.clone(),
         };
         campaign::run(&plan, command)?
     };
@@ -371,6 +401,27 @@ fn main() -> ExitCode {
             Ok(false) => return ExitCode::from(1),
             Err(e) => Err(e),
         },
+        Cmd::Synth {
+            scenario,
+            target,
+            nodes,
+            line_rate,
+            output,
+            seed,
+        } => {
+            let o = synth::Opts {
+                target,
+                nodes,
+                line_rate: *line_rate,
+                output: output.as_deref(),
+                seed: *seed,
+            };
+            match synth::run(scenario, &o) {
+                Ok(true) => Ok(()),
+                Ok(false) => return ExitCode::from(1),
+                Err(e) => Err(e),
+            }
+        }
         Cmd::Demo { wave, model_only } => demo::run((!*model_only).then_some(wave.as_path())),
         Cmd::Campaign { .. } => match campaign_cmd(&cli.cmd) {
             Ok(true) => Ok(()),

@@ -30,6 +30,7 @@
 //! - [`tst_tx`]: link test packets of a wrapped node
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
 
+pub mod boards;
 pub mod cdr;
 pub mod chain8;
 pub mod dec5b4b;
@@ -50,5 +51,7 @@ pub mod special_master;
 pub mod stream_ctrl;
 pub mod switch_ctl;
 pub mod switchbox;
+pub mod synth_top;
 pub mod tst_tx;
 pub mod verilog;
+pub mod xem6010;

@@ -108,6 +108,7 @@ pub struct Retime {
     send0: Signal<Local, Bit>,
     send1: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
+    under: Signal<Local, Bit>,
     oldest: Signal<Local, Bit>,
     new_lvl: Signal<Local, Bit>,
     len: Signal<Local, Bits<3>>,
@@ -145,6 +146,7 @@ impl Default for Retime {
             send0: Default::default(),
             send1: Default::default(),
             take: Default::default(),
+            under: Default::default(),
             oldest: Default::default(),
             new_lvl: Default::default(),
             len: Default::default(),
@@ -188,6 +190,9 @@ impl Logic for Retime {
         if self.cnt.q.val() == 8 {
             self.oldest.next = self.sr.q.val().get_bit(7);
         }
+        // Underflow: a bit boundary while running with nothing buffered.
+        self.under.next =
+            (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0);
         self.new_lvl.next = self.lvl.q.val();
         if (self.send0.val() | self.send1.val()) & (self.dark.q.val() == 0) {
             // An idle bit (NRZI 1: the level toggles).
@@ -259,36 +264,13 @@ impl Logic for Retime {
             }
             self.cnt_next.next = self.cnt_next.val() + 1;
         }
-        // The wait of the bit written now, in receive samples.
-        // (Bit by bit: rust-hdl widens only through 32-bit literals.)
-        self.lag.next = 0.into();
-        if self.rem_next.val().get_bit(0) {
-            self.lag.next = self.lag.val() + 2;
-        }
-        if self.rem_next.val().get_bit(1) {
-            self.lag.next = self.lag.val() + 4;
-        }
-        if self.rem_next.val().get_bit(2) {
-            self.lag.next = self.lag.val() + 8;
-        }
-        if self.cnt_next.val().get_bit(0) {
-            self.lag.next = self.lag.val() + 8;
-        }
-        if self.cnt_next.val().get_bit(1) {
-            self.lag.next = self.lag.val() + 16;
-        }
-        if self.cnt_next.val().get_bit(2) {
-            self.lag.next = self.lag.val() + 32;
-        }
-        if self.cnt_next.val().get_bit(3) {
-            self.lag.next = self.lag.val() + 64;
-        }
-        if self.i_phase.val().get_bit(0) {
-            self.lag.next = self.lag.val() - 1;
-        }
-        if self.i_phase.val().get_bit(1) {
-            self.lag.next = self.lag.val() - 2;
-        }
+        // The wait of the bit written now, in receive samples:
+        // 2 per half clock to its boundary, 8 per buffered bit, less the
+        // sample of its clock it was taken from (one add and one subtract,
+        // not a chain: this is on the core clock's critical path).
+        self.lag.next = ((bit_cast::<8, 4>(self.cnt_next.val()) | 0) << 3)
+            + ((bit_cast::<8, 3>(self.rem_next.val()) | 0) << 1)
+            - bit_cast::<8, 2>(self.i_phase.val());
         if self.run.q.val() & self.i_valid.val() {
             if self.lag.val() > self.hi_limit.val() {
                 if self.hi.q.val() != 7 {
@@ -321,15 +303,13 @@ impl Logic for Retime {
             self.lo.d.next = 0.into();
             self.gap.d.next = 0.into();
         }
-        if ((self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0))
-            | (self.cnt_next.val() > self.depth.val())
-        {
+        if self.under.val() | (self.cnt_next.val() > self.depth.val()) {
             // Underflow or overflow: start again with the next bit.
             self.slip.d.next = true;
             self.run.d.next = false;
             self.cnt.d.next = 0.into();
         }
-        if (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0) {
+        if self.under.val() {
             // Underflow (the input stopped): the line stays dark for
             // DARK_BITS, so that downstream receivers mute and drop a word
             // that was cut short (its last bits would otherwise be

@@ -12,7 +12,9 @@
 //! - wrapped: INPUT fails → failsafe; the partner's TST with ACK heard on
 //!   BSR → a WD node unwraps at the next frame start after
 //!   [`crate::slave::REINTEGRATE_CLOCKS`] of it, a WU node when a DATA
-//!   header arrives on BSR after it (not in failsafe);
+//!   header arrives on BSR after it and no packet is arriving on INPUT (if
+//!   one is — the frame that went the long way round — when it ends, so it
+//!   is not cut into the new one); not in failsafe;
 //! - stream controllers act only once the node is armed (its first good
 //!   frame) and not for [`crate::slave::SETTLE_CLOCKS`] after a change (the
 //!   receivers lock to their new lines); after unwrapping, a TST where DATA
@@ -28,6 +30,7 @@
 //! | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
 //! | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
 //! | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
+//! | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
 //! | `i_cs_timeout` | in | 16 | static | CS timeout, clocks |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
 //! | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
@@ -68,6 +71,8 @@ pub struct SwitchCtl {
     pub i_frame_start: Signal<In, Bit>,
     /// A good DATA H0 on BSR.
     pub i_bsr_data: Signal<In, Bit>,
+    /// A packet is arriving on INPUT.
+    pub i_in_pkt: Signal<In, Bit>,
     /// CS timeout, clocks.
     pub i_cs_timeout: Signal<In, Bits<16>>,
     /// Mode.
@@ -89,6 +94,7 @@ pub struct SwitchCtl {
     grace: DFF<Bits<16>>,
     ack_time: DFF<Bits<9>>,
     seen_ack: DFF<Bit>,
+    pend_up: DFF<Bit>,
     new_mode: Signal<Local, Bits<2>>,
 }
 
@@ -104,6 +110,7 @@ impl Default for SwitchCtl {
             i_tst_ack: Default::default(),
             i_frame_start: Default::default(),
             i_bsr_data: Default::default(),
+            i_in_pkt: Default::default(),
             i_cs_timeout: Default::default(),
             o_mode: Default::default(),
             o_change: Default::default(),
@@ -118,6 +125,7 @@ impl Default for SwitchCtl {
             grace: Default::default(),
             ack_time: Default::default(),
             seen_ack: Default::default(),
+            pend_up: Default::default(),
             new_mode: Default::default(),
         }
     }
@@ -126,7 +134,7 @@ impl Default for SwitchCtl {
 impl Logic for SwitchCtl {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, mode, settle, grace, ack_time, seen_ack);
+        dff_setup!(self, clock, mode, settle, grace, ack_time, seen_ack, pend_up);
         if self.grace.q.val() != 0 {
             self.grace.d.next = self.grace.q.val() - 1;
         }
@@ -166,6 +174,12 @@ impl Logic for SwitchCtl {
                     self.new_mode.next = 0.into();
                 }
                 if (self.mode.q.val() == 1) & self.seen_ack.q.val() & self.i_bsr_data.val() {
+                    self.pend_up.d.next = true;
+                }
+                if (self.mode.q.val() == 1)
+                    & (self.pend_up.q.val() | (self.seen_ack.q.val() & self.i_bsr_data.val()))
+                    & !self.i_in_pkt.val()
+                {
                     self.new_mode.next = 0.into();
                 }
             }
@@ -179,6 +193,7 @@ impl Logic for SwitchCtl {
             self.settle.d.next = self.settle_start.val();
             self.ack_time.d.next = 0.into();
             self.seen_ack.d.next = false;
+            self.pend_up.d.next = false;
             if self.new_mode.val() == 0 {
                 self.grace.d.next = self.i_cs_timeout.val() >> 1;
             }

@@ -338,7 +338,11 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     // Shared configuration: S−1, CS timeout 2.5 periods (2 per protocol
     // §12 plus margin for the clock offsets), period.
     r.cfg(0, field::SLOTS_M1, s as u64 - 1);
-    r.cfg(0, field::CS_TIMEOUT, (5 * period).min(0xfffe));
+    r.cfg(
+        0,
+        field::CS_TIMEOUT,
+        merkur_rtl::synth_top::cs_timeout_clocks(period),
+    );
     r.cfg(0, field::PERIOD, period);
     for (k, nd) in cfg.nodes.iter().enumerate() {
         let inc = (INC_NOMINAL as f64 * (1.0 + nd.ppm * 1e-6)).round() as u64;

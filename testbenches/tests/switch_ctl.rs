@@ -109,4 +109,26 @@ fn a_wrapped_node_reintegrates() {
     c.set("i_fs", 0);
     c.ticks(2);
     assert_eq!(c.get("o_mode"), 0);
+
+    // WU while a packet is still arriving on INPUT (the frame that went the
+    // long way round): the DATA header on BSR is remembered, and the node
+    // unwraps when that packet has ended, not in the middle of it.
+    let mut c = Ctl::new();
+    c.set("i_armed", 1);
+    c.set("i_cf_in", 1);
+    c.ticks(1);
+    c.set("i_cf_in", 0);
+    c.ticks(SETTLE_CLOCKS);
+    c.set("i_tst_ack", 1);
+    c.ticks(2);
+    c.set("i_in_pkt", 1);
+    c.set("i_bsr_data", 1);
+    c.ticks(1);
+    c.set("i_bsr_data", 0);
+    c.ticks(40);
+    assert_eq!(c.get("o_mode"), 1, "not inside the INPUT packet");
+    c.set("i_in_pkt", 0);
+    assert_eq!(c.get("o_relink"), 1, "the receivers move when it has ended");
+    c.ticks(1);
+    assert_eq!(c.get("o_mode"), 0);
 }

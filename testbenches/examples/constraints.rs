@@ -1,0 +1,13 @@
+//! Writes every board's constraints file into `constraints/` from
+//! rtl/src/boards.rs: `cargo run -p merkur-testbenches --example constraints`.
+fn main() {
+    let dir = merkur_testbenches::repo_root().join("constraints");
+    for b in merkur_rtl::boards::all() {
+        let path = dir.join(b.file);
+        if let Err(e) = std::fs::write(&path, merkur_rtl::boards::constraints_file(&b)) {
+            eprintln!("error: cannot write {}: {e}", path.display());
+            std::process::exit(1);
+        }
+        println!("wrote {}", path.display());
+    }
+}
