@@ -162,12 +162,22 @@ pub fn module_name(kind: Kind) -> &'static str {
 }
 
 /// Renames rust-hdl's `top` and `top$…` modules of one block.
-pub(crate) fn renamed(verilog: &str, name: &str) -> String {
+fn renamed(verilog: &str, name: &str) -> String {
     verilog
         .replace("module top(", &format!("module {name}("))
         .replace("module top$", &format!("module {name}$"))
         .replace("\ntop$", &format!("\n{name}$"))
         .replace(" top$", &format!(" {name}$"))
+}
+
+/// The Verilog of a node kind's modules, named after [`module_name`].
+pub fn node_verilog(kind: Kind) -> String {
+    let v = match kind {
+        Kind::Sensor | Kind::Actuator => block_verilog(crate::slave::Slave::new()),
+        Kind::Master => block_verilog(crate::master::Master::default()),
+        Kind::SpecialMaster => block_verilog(crate::special_master::SpecialMaster::default()),
+    };
+    renamed(&v, module_name(kind))
 }
 
 /// Capture entries per cycle buffer: slots rounded up to a power of two.
@@ -193,12 +203,7 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
         }
     }
     for k in need {
-        let v = match k {
-            Kind::Sensor | Kind::Actuator => block_verilog(crate::slave::Slave::new()),
-            Kind::Master => block_verilog(crate::master::Master::default()),
-            Kind::SpecialMaster => block_verilog(crate::special_master::SpecialMaster::default()),
-        };
-        out.push_str(&renamed(&v, module_name(k)));
+        out.push_str(&node_verilog(k));
     }
     out.push_str(&renamed(
         &block_verilog(crate::monitor::Monitor::new(false)),

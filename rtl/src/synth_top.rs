@@ -38,7 +38,6 @@
 //! o_po pair    {b1,b0} registered at clk ↑ ─▶ po = b0 (clk high), b1 (clk low)
 //! ```
 
-use crate::verilog::block_verilog;
 use merkur_model::scenario::Kind;
 
 /// Clocks without a good frame before a node enters failsafe: 2.5 cycle
@@ -99,20 +98,7 @@ module merkur_ddr_out(clk, d, q);
 endmodule
 "#;
 
-/// Module name of the node inside the top.
-fn node_module(kind: Kind) -> &'static str {
-    crate::ring_top::module_name(kind)
-}
-
-/// The node's own Verilog, its modules renamed after [`node_module`].
-fn node_verilog(kind: Kind) -> String {
-    let v = match kind {
-        Kind::Sensor | Kind::Actuator => block_verilog(crate::slave::Slave::new()),
-        Kind::Master => block_verilog(crate::master::Master::default()),
-        Kind::SpecialMaster => block_verilog(crate::special_master::SpecialMaster::default()),
-    };
-    crate::ring_top::renamed(&v, node_module(kind))
-}
+use crate::ring_top::{module_name as node_module, node_verilog};
 
 /// Refuses a configuration the ports cannot carry.
 fn check(st: &NodeStatic) -> Result<(), String> {
