@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 mod campaign;
+mod dcm;
 mod demo;
 mod sim;
 mod synth;
@@ -26,7 +27,8 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Cmd {
-    /// Validate a scenario and print a summary of its ring.
+    /// Validate a scenario and print a summary of its ring (or of its token bus: a file with a
+    /// `[token_bus]` table is an IEEE 802.4 Dual Channel Manager scenario).
     Check {
         /// Scenario file (TOML).
         scenario: PathBuf,
@@ -34,7 +36,7 @@ enum Cmd {
         #[arg(long, value_name = "MBPS")]
         line_rate: Option<f64>,
     },
-    /// Run the reference model on a scenario and write its golden trace.
+    /// Run the reference model on a scenario (ring or token bus) and write its golden trace.
     Trace {
         /// Scenario file (TOML).
         scenario: PathBuf,
@@ -42,7 +44,8 @@ enum Cmd {
         #[arg(short, long, value_name = "FILE")]
         output: Option<PathBuf>,
     },
-    /// Write the Verilog of a scenario's ring (node modules, monitors, the `merkur_ring` top) and the lint waivers.
+    /// Write the Verilog of a scenario's ring (node modules, monitors, the `merkur_ring` top) and the lint waivers;
+    /// for a token-bus scenario, the station's DCM + RMM (`merkur_dcm`).
     Verilog {
         /// Scenario file (TOML).
         scenario: PathBuf,
@@ -50,14 +53,15 @@ enum Cmd {
         #[arg(short, long, value_name = "DIR")]
         output: PathBuf,
     },
-    /// Run a scenario's ring as Verilog in Verilator and compare it with the model's golden trace.
+    /// Run a scenario's ring as Verilog in Verilator and compare it with the model's golden trace;
+    /// for a token-bus scenario, every station's DCM + RMM against the model, octet for octet.
     Sim {
         /// Scenario file (TOML).
         scenario: PathBuf,
         /// Write an FST waveform (and a GTKWave save file beside it, FILE.gtkw).
         #[arg(long, value_name = "FILE")]
         wave: Option<PathBuf>,
-        /// Seed of the nodes' clock phases.
+        /// Seed of the nodes' clock phases (ring scenarios).
         #[arg(long, default_value_t = 1)]
         seed: u64,
         /// How many mismatches to list on a failure.
@@ -163,9 +167,21 @@ fn default_demo_wave() -> PathBuf {
         .join("demo_8_break.fst")
 }
 
+fn read_text(path: &Path) -> Result<String, String> {
+    std::fs::read_to_string(path)
+        .map_err(|e| format!("error: cannot read scenario {}: {e}", path.display()))
+}
+
+/// A ring scenario (token-bus scenarios are refused with a clear error:
+/// only `check`, `trace`, `verilog` and `sim` take them).
 pub(crate) fn read_scenario(path: &Path) -> Result<(String, config::Config), String> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("error: cannot read scenario {}: {e}", path.display()))?;
+    let text = read_text(path)?;
+    if merkur_model::tbconfig::is_token_bus(&text) {
+        return Err(format!(
+            "error: {} is a token-bus scenario ([token_bus]); this command takes MERKUR ring scenarios (token-bus scenarios run with check, trace, verilog and sim)",
+            path.display()
+        ));
+    }
     let name = path.display().to_string();
     let cfg = config::load(&name, &text).map_err(|e| e.to_string())?;
     Ok((text, cfg))
@@ -382,25 +398,55 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
     Ok(bad == 0 && accepted == 0)
 }
 
+/// The file's text when it is a token-bus scenario, `None` for a ring
+/// scenario (or anything else, which the ring parser then reports).
+fn token_bus(path: &Path) -> Result<Option<String>, String> {
+    let text = read_text(path)?;
+    Ok(merkur_model::tbconfig::is_token_bus(&text).then_some(text))
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let r = match &cli.cmd {
         Cmd::Check {
             scenario,
             line_rate,
-        } => check(scenario, *line_rate),
-        Cmd::Trace { scenario, output } => trace_cmd(scenario, output.as_deref()),
-        Cmd::Verilog { scenario, output } => sim::verilog(scenario, output),
+        } => match token_bus(scenario) {
+            Err(e) => Err(e),
+            Ok(Some(_)) if line_rate.is_some() => Err(format!(
+                "error: --line-rate is for ring scenarios; {} is a token-bus scenario (token_bus.rate_mbps sets its rate)",
+                scenario.display()
+            )),
+            Ok(Some(text)) => dcm::check(scenario, &text),
+            Ok(None) => check(scenario, *line_rate),
+        },
+        Cmd::Trace { scenario, output } => match token_bus(scenario) {
+            Err(e) => Err(e),
+            Ok(Some(text)) => dcm::trace(scenario, &text, output.as_deref()),
+            Ok(None) => trace_cmd(scenario, output.as_deref()),
+        },
+        Cmd::Verilog { scenario, output } => match token_bus(scenario) {
+            Err(e) => Err(e),
+            Ok(Some(text)) => dcm::verilog(scenario, &text, output),
+            Ok(None) => sim::verilog(scenario, output),
+        },
         Cmd::Sim {
             scenario,
             wave,
             seed,
             show,
-        } => match sim::sim(scenario, wave.as_deref(), *seed, *show) {
-            Ok(true) => Ok(()),
-            Ok(false) => return ExitCode::from(1),
-            Err(e) => Err(e),
-        },
+        } => {
+            let r = match token_bus(scenario) {
+                Err(e) => Err(e),
+                Ok(Some(text)) => dcm::sim(scenario, &text, wave.as_deref(), *show),
+                Ok(None) => sim::sim(scenario, wave.as_deref(), *seed, *show),
+            };
+            match r {
+                Ok(true) => Ok(()),
+                Ok(false) => return ExitCode::from(1),
+                Err(e) => Err(e),
+            }
+        }
         Cmd::Synth {
             scenario,
             target,

@@ -457,3 +457,85 @@ fn synth_refuses_bad_arguments() {
         assert!(e.contains(want) && !e.contains("panicked"), "{args:?}: {e}");
     }
 }
+
+/// Token-bus scenarios (issue 6): trace, verilog, sim; ring-only commands
+/// refuse them by name.
+#[test]
+fn token_bus_scenarios_trace_emit_and_simulate() {
+    let d = scratch("dcm");
+    let out = d.join("kill.trace");
+    let o = merkur(&[
+        "trace",
+        "tb-data/dcm8_kill.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap(),
+        std::fs::read_to_string(root().join("tb-data/dcm8_kill.trace")).unwrap()
+    );
+    // The station's Verilog, lint-clean with the committed waivers.
+    let vd = d.join("v");
+    let o = merkur(&[
+        "verilog",
+        "tb-data/dcm8_kill.toml",
+        "-o",
+        vd.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let v = std::fs::read_to_string(vd.join("merkur_dcm.v")).unwrap();
+    assert!(v.contains("module merkur_dcm("), "no merkur_dcm module");
+    let lint = Command::new("verilator")
+        .args(["--lint-only", "-Wall", "--top-module", "merkur_dcm"])
+        .arg(vd.join("waivers.vlt"))
+        .arg(vd.join("merkur_dcm.v"))
+        .output()
+        .expect("verilator runs");
+    let err = text(&lint.stderr);
+    assert!(lint.status.success() && !err.contains("%Warning"), "{err}");
+    // Every station in Verilator against the model, with waveforms.
+    let w = d.join("kill.fst");
+    let o = merkur(&[
+        "sim",
+        "tb-data/dcm8_kill.toml",
+        "--wave",
+        w.to_str().unwrap(),
+    ]);
+    let s = text(&o.stdout);
+    assert!(o.status.success(), "{s}{}", text(&o.stderr));
+    assert!(s.contains("PASS: every station's RTL agrees"), "{s}");
+    assert!(s.contains("the RTL's trace is identical"), "{s}");
+    assert!(s.contains("kill station 3 @5000"), "{s}");
+    for k in 0..8 {
+        assert!(
+            d.join(format!("kill.s{k}.fst")).exists(),
+            "station {k} waveform"
+        );
+    }
+    assert!(
+        d.join("kill.s3.r1.fst").exists(),
+        "restarted station's waveform"
+    );
+    // Ring-only options and commands name the problem.
+    let o = merkur(&["check", "tb-data/dcm8_kill.toml", "--line-rate", "5"]);
+    assert!(!o.status.success());
+    assert!(text(&o.stderr).contains("--line-rate is for ring scenarios"));
+    for args in [
+        vec![
+            "campaign",
+            "--ring",
+            "tb-data/dcm8_kill.toml",
+            "--case",
+            "x",
+        ],
+        vec!["synth", "tb-data/dcm8_kill.toml", "--target", "xc6s"],
+    ] {
+        let o = merkur(&args);
+        let e = text(&o.stderr);
+        assert!(!o.status.success(), "{args:?}");
+        assert!(e.contains("is a token-bus scenario"), "{args:?}: {e}");
+        assert!(!e.contains("panicked"), "{e}");
+    }
+    let _ = std::fs::remove_dir_all(d);
+}

@@ -8,11 +8,17 @@
 //! - [`scenario`] / [`config`]: scenario files and their validation.
 //! - [`ring`]: the cycle-level ring simulation.
 //! - [`trace`]: the golden trace format.
+//! - [`rmm`], [`tokenbus`], [`tbconfig`]: the IEEE 802.4 Dual Channel
+//!   Manager and Redundancy Management Module, the token bus around them,
+//!   token-bus scenario files (docs/protocol.md Part II).
 
 #![deny(missing_docs)]
 
 pub mod config;
 pub mod line;
 pub mod ring;
+pub mod rmm;
 pub mod scenario;
+pub mod tbconfig;
+pub mod tokenbus;
 pub mod trace;

@@ -3,7 +3,7 @@
 //! changes a trace must regenerate it on purpose:
 //! `cargo run -p merkur -- trace tb-data/X.toml -o tb-data/X.trace`.
 
-use merkur_model::{config, ring, trace};
+use merkur_model::{config, ring, tbconfig, tokenbus, trace};
 use std::path::PathBuf;
 
 fn tb_data() -> PathBuf {
@@ -23,8 +23,13 @@ fn committed_traces_match_the_model() {
     for sc in &scenarios {
         let text = std::fs::read_to_string(sc).unwrap();
         let name = format!("tb-data/{}", sc.file_name().unwrap().to_string_lossy());
-        let cfg = config::load(&name, &text).unwrap_or_else(|e| panic!("{e}"));
-        let got = trace::render(&cfg, &text, &ring::run(&cfg));
+        let got = if tbconfig::is_token_bus(&text) {
+            let cfg = tbconfig::load(&name, &text).unwrap_or_else(|e| panic!("{e}"));
+            tokenbus::render(&cfg, &text, &tokenbus::run(&cfg))
+        } else {
+            let cfg = config::load(&name, &text).unwrap_or_else(|e| panic!("{e}"));
+            trace::render(&cfg, &text, &ring::run(&cfg))
+        };
         let tr = sc.with_extension("trace");
         let want = std::fs::read_to_string(&tr)
             .unwrap_or_else(|_| panic!("{} has no committed trace {}", sc.display(), tr.display()));

@@ -10,6 +10,8 @@
 //!
 //! Blocks:
 //! - [`chain8`]: eight slaves in a row (test top)
+//! - [`dcm`]: IEEE 802.4 Dual Channel Manager (transmit on both, receive from the active channel, channel status)
+//! - [`dcm_station`]: one token-bus station's DCM + RMM (`merkur_dcm`)
 //! - [`cdr`]: 8×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
@@ -21,6 +23,10 @@
 //! - [`pkt_tx`]: packet generator (DATA frames, SEC) of the special master
 //! - [`retime`]: elastic output buffer, sends forwarded bits on the node's own clock
 //! - [`ring_top`]: Verilog of a whole ring for simulation (clock gates, fibres, fault points, monitors)
+//! - [`rmm_detect`]: RMM fault detection from the six MAC events (SC, NS)
+//! - [`rmm_fcm`]: RMM fault correction machine (five states)
+//! - [`rmm_sfc`]: RMM status frame check (3 bytes per station in block RAM)
+//! - [`rmm_sfp`]: RMM status frame production (live counter, status byte)
 //! - [`rx_framer`]: NRZI decode, J K detection, group alignment
 //! - [`stream_ctrl`]: channel failure (pcf/scf) and test signal (ptst/stst)
 //! - [`port_rx`]: monitor + stream controller, one per logical input
@@ -33,6 +39,8 @@
 pub mod boards;
 pub mod cdr;
 pub mod chain8;
+pub mod dcm;
+pub mod dcm_station;
 pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod fwd;
@@ -44,6 +52,10 @@ pub mod pkt_tx;
 pub mod port_rx;
 pub mod retime;
 pub mod ring_top;
+pub mod rmm_detect;
+pub mod rmm_fcm;
+pub mod rmm_sfc;
+pub mod rmm_sfp;
 pub mod rx_framer;
 pub mod rx_word;
 pub mod slave;

@@ -162,7 +162,7 @@ pub fn module_name(kind: Kind) -> &'static str {
 }
 
 /// Renames rust-hdl's `top` and `top$…` modules of one block.
-fn renamed(verilog: &str, name: &str) -> String {
+pub fn renamed(verilog: &str, name: &str) -> String {
     verilog
         .replace("module top(", &format!("module {name}("))
         .replace("module top$", &format!("module {name}$"))

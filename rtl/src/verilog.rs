@@ -69,6 +69,18 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(special_master::SpecialMaster::default()),
         ),
         ("chain8", block_verilog(chain8::Chain8::default())),
+        ("dcm", block_verilog(dcm::Dcm::default())),
+        (
+            "rmm_detect",
+            block_verilog(rmm_detect::RmmDetect::default()),
+        ),
+        ("rmm_sfp", block_verilog(rmm_sfp::RmmSfp::default())),
+        ("rmm_sfc", block_verilog(rmm_sfc::RmmSfc::default())),
+        ("rmm_fcm", block_verilog(rmm_fcm::RmmFcm::default())),
+        (
+            "dcm_station",
+            block_verilog(dcm_station::DcmStation::default()),
+        ),
     ]
 }
 

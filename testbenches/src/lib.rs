@@ -58,6 +58,7 @@ pub fn pinned_tools() -> Result<Vec<PinnedTool>, String> {
     Ok(out)
 }
 
+pub mod dcm_sim;
 pub mod ring_sim;
 pub mod stim;
 pub mod verilator;

@@ -1,0 +1,169 @@
+//! # rmm_sfc — status frame check (docs/protocol.md §20)
+//!
+//! Purpose: the paper's Status Frame Check Sub-module. Every received status
+//! frame is written into block RAM by its source address: **3 bytes per
+//! station** — the 2 status bytes of the latest frame (`st`, 32 × 16) and the
+//! live counter seen at the previous check (`prev`, 32 × 8). Every
+//! `i_chk_period` octets a scan visits the 32 addresses, one per octet
+//! (34 octets with the read latency): a configured station (`i_stations`,
+//! not this one) whose live counter has not moved since the last scan is
+//! flagged **stale**; the scan ends with **Status Check = OK** (`o_chk_ok`,
+//! one octet) when no station is stale, every station reports both channels
+//! good, and this station's own channels are good (`i_own_good`).
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | octet clock |
+//! | `i_chk_period` | in | 16 | check period, octets (≥ 64) |
+//! | `i_addr` | in | 5 | own address |
+//! | `i_stations` | in | 32 | configured stations (bit per address) |
+//! | `i_own_good` | in | 1 | both own channels good |
+//! | `i_rx_sf` | in | 1 | a valid status frame was received |
+//! | `i_rx_sa` | in | 8 | its source address (≥ 32 ignored) |
+//! | `i_rx_sfw` | in | 16 | its status bytes |
+//! | `o_stale` | out | 32 | stations whose live counter stopped |
+//! | `o_chk_ok` | out | 1 | Status Check = OK |
+//! | `o_rise` | out | 1 | a station became stale (report interrupt) |
+//! | `i_nm_addr` | in | 5 | network manager: station whose stored status to read between scans |
+//! | `o_nm_word`, `o_nm_valid` | out | 16/1 | its latest status frame, one octet later; valid outside scans |
+//!
+//! Latency: a scan starts the octet after the period ends; station k's
+//! verdict is registered at octet k+2 of the scan, `o_chk_ok` after k = 31.
+//!
+//! ```text
+//! octet     0(start) 1      2      ..     33     34
+//! read      -        st[0]  st[1]  ..     st[31]
+//! verdict   -        -      s0     ..     s30    s31, o_chk_ok
+//! ```
+
+use rust_hdl::prelude::*;
+
+/// Status frame check.
+#[derive(LogicBlock, Default)]
+pub struct RmmSfc {
+    /// Octet clock.
+    pub clock: Signal<In, Clock>,
+    /// Check period, octets.
+    pub i_chk_period: Signal<In, Bits<16>>,
+    /// Own address.
+    pub i_addr: Signal<In, Bits<5>>,
+    /// Configured stations.
+    pub i_stations: Signal<In, Bits<32>>,
+    /// Own channels good.
+    pub i_own_good: Signal<In, Bit>,
+    /// Status frame received.
+    pub i_rx_sf: Signal<In, Bit>,
+    /// Its source address.
+    pub i_rx_sa: Signal<In, Bits<8>>,
+    /// Its status bytes.
+    pub i_rx_sfw: Signal<In, Bits<16>>,
+    /// Stale stations.
+    pub o_stale: Signal<Out, Bits<32>>,
+    /// Status Check = OK.
+    pub o_chk_ok: Signal<Out, Bit>,
+    /// A station became stale.
+    pub o_rise: Signal<Out, Bit>,
+    /// Network manager read address.
+    pub i_nm_addr: Signal<In, Bits<5>>,
+    /// Stored status frame of that station.
+    pub o_nm_word: Signal<Out, Bits<16>>,
+    /// `o_nm_word` is from `i_nm_addr` (not a scan read).
+    pub o_nm_valid: Signal<Out, Bit>,
+    st: RAM<Bits<16>, 5>,
+    prev: RAM<Bits<8>, 5>,
+    cnt: DFF<Bits<16>>,
+    scanning: DFF<Bit>,
+    scan_i: DFF<Bits<5>>,
+    s2_valid: DFF<Bit>,
+    s2_i: DFF<Bits<5>>,
+    all_ok: DFF<Bit>,
+    stale: DFF<Bits<32>>,
+    chk_ok: DFF<Bit>,
+    rise: DFF<Bit>,
+    nm_valid: DFF<Bit>,
+    member: Signal<Local, Bit>,
+    stale_k: Signal<Local, Bit>,
+    good_k: Signal<Local, Bit>,
+    all_ok_n: Signal<Local, Bit>,
+    stale_n: Signal<Local, Bits<32>>,
+    mask: Signal<Local, Bits<32>>,
+}
+
+impl Logic for RmmSfc {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, cnt, scanning, scan_i, s2_valid, s2_i, all_ok, stale, chk_ok, rise,
+            nm_valid
+        );
+        self.st.read_clock.next = self.clock.val();
+        self.st.write_clock.next = self.clock.val();
+        self.prev.read_clock.next = self.clock.val();
+        self.prev.write_clock.next = self.clock.val();
+        // Received status frames.
+        self.st.write_enable.next = self.i_rx_sf.val() & (self.i_rx_sa.val() < 32);
+        self.st.write_address.next = self.i_rx_sa.val().get_bits::<5>(0);
+        self.st.write_data.next = self.i_rx_sfw.val();
+        // The check period and the scan (stage 1: read).
+        if (self.cnt.q.val() + 1) >= self.i_chk_period.val() {
+            self.cnt.d.next = 0.into();
+            self.scanning.d.next = true;
+            self.scan_i.d.next = 0.into();
+        } else {
+            self.cnt.d.next = self.cnt.q.val() + 1;
+            if self.scanning.q.val() {
+                self.scanning.d.next = self.scan_i.q.val() != 31;
+                self.scan_i.d.next = self.scan_i.q.val() + 1;
+            }
+        }
+        // Between scans the network manager reads the status memory.
+        if self.scanning.q.val() {
+            self.st.read_address.next = self.scan_i.q.val();
+        } else {
+            self.st.read_address.next = self.i_nm_addr.val();
+        }
+        self.nm_valid.d.next = !self.scanning.q.val();
+        self.prev.read_address.next = self.scan_i.q.val();
+        self.s2_valid.d.next = self.scanning.q.val();
+        self.s2_i.d.next = self.scan_i.q.val();
+        // Stage 2: the verdict on station s2_i.
+        self.member.next = (((self.i_stations.val() >> self.s2_i.q.val()) & 1) == 1)
+            & (self.s2_i.q.val() != self.i_addr.val());
+        self.stale_k.next = self.member.val()
+            & (self.st.read_data.val().get_bits::<8>(8) == self.prev.read_data.val());
+        self.good_k.next = !self.member.val()
+            | (!self.stale_k.val()
+                & self.st.read_data.val().get_bit(1)
+                & self.st.read_data.val().get_bit(2));
+        self.mask.next = bits::<32>(1) << self.s2_i.q.val();
+        self.stale_n.next = self.stale.q.val();
+        self.all_ok_n.next = self.all_ok.q.val();
+        self.chk_ok.d.next = false;
+        self.prev.write_enable.next = false;
+        self.prev.write_address.next = self.s2_i.q.val();
+        self.prev.write_data.next = self.st.read_data.val().get_bits::<8>(8);
+        if self.s2_valid.q.val() {
+            self.prev.write_enable.next = self.member.val();
+            if self.stale_k.val() {
+                self.stale_n.next = self.stale.q.val() | self.mask.val();
+            } else {
+                self.stale_n.next = self.stale.q.val() & !self.mask.val();
+            }
+            if self.s2_i.q.val() == 0 {
+                self.all_ok_n.next = self.good_k.val();
+            } else {
+                self.all_ok_n.next = self.all_ok.q.val() & self.good_k.val();
+            }
+            self.chk_ok.d.next =
+                (self.s2_i.q.val() == 31) & self.all_ok_n.val() & self.i_own_good.val();
+        }
+        self.all_ok.d.next = self.all_ok_n.val();
+        self.stale.d.next = self.stale_n.val();
+        self.rise.d.next = (self.stale_n.val() & !self.stale.q.val()) != 0;
+        self.o_stale.next = self.stale.q.val();
+        self.o_chk_ok.next = self.chk_ok.q.val();
+        self.o_rise.next = self.rise.q.val();
+        self.o_nm_word.next = self.st.read_data.val();
+        self.o_nm_valid.next = self.nm_valid.q.val();
+    }
+}
