@@ -175,6 +175,24 @@ fn single_channel_faults_in_auto_normal_lose_no_frame() {
         assert!(r.rtl.frames_sent > 100, "{name}: traffic");
         assert_eq!(r.rtl.receptions_lost, 0, "{name}: frames lost");
     }
+    // 32 stations at 5 Mbit/s: the drop cable fault loses nothing either
+    // (the station death after it loses the frame the station was sending).
+    let (cfg, r) = rtl("dcm32_drop");
+    let first = cfg.events[0].at as usize;
+    assert!(r
+        .rtl
+        .outs
+        .iter()
+        .all(|o| o[first].unwrap().state == state::AUTO_NORMAL));
+    assert_eq!(
+        r.rtl.lost_by_fault[0], 0,
+        "dcm32_drop: frames lost to the drop cable fault"
+    );
+    assert_eq!(
+        r.rtl.switch_latency(0).map(|s| s.2),
+        Some(32),
+        "every station switched"
+    );
     // The same kind of fault with dual mode off does lose frames: the test
     // above is not blind.
     let (_, r) = rtl("dcm8_manual");
