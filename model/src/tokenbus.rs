@@ -148,7 +148,6 @@ struct Mac {
     rxbuf: Vec<u8>,
     rx_in: bool,
     idle: u32,
-    heard: bool,
     resp_frame: Vec<u16>,
     /// (asker, our successor) once our set_successor goes out.
     resp_to: (u8, u8),
@@ -189,7 +188,6 @@ impl Mac {
             rxbuf: vec![],
             rx_in: false,
             idle: 0,
-            heard: false,
             resp_frame: vec![],
             resp_to: (0, 0),
             leaving: false,
@@ -356,7 +354,6 @@ impl Mac {
             if self.txq.is_empty() {
                 self.st = self.after;
                 self.timer = 0;
-                self.heard = false;
                 if self.st == St::AwaitResponse {
                     self.timer = self.window(self.query);
                 } else if self.st == St::CheckTokenPass {
@@ -378,7 +375,8 @@ impl Mac {
                     let pad = vec![0u8; 2 * self.ts as usize + 1];
                     let f = frame(fc::CLAIM, BROADCAST, self.ts, &pad);
                     self.send(f, St::ClaimListen);
-                    self.st = St::UseToken; // transmitting
+                    // Transmitting the claim (UseToken stands for "sending").
+                    self.st = St::UseToken;
                     o.tx = self.txq.pop_front().unwrap_or(sym::SIL);
                 }
             }
