@@ -18,9 +18,12 @@
 //! fail. At most one bit is recovered per clock.
 //!
 //! A dead line: after [`MUTE_SAMPLES`] (5 bit times) without a transition no
-//! more bits are taken (legal streams toggle at least every 4 bit times, and
-//! a single line-bit error stretches that to 5), so a break passes on a
-//! cut-short packet, not a run of zeros. Loss of signal:
+//! more bits are taken (legal streams toggle at least every 5 bit times), so
+//! a break passes on a cut-short packet, not a run of zeros. Known gap
+//! (issue 5): one line-bit error inverts two adjacent code bits and can
+//! leave up to 6 zero code bits inside a packet (7 next to K); a run of 5 or
+//! more mutes the receiver and the rest of the frame is lost, where
+//! protocol §5 says a single error costs one word. Loss of signal:
 //! no transition for [`LOS_SAMPLES`] = 128 samples (16 bit times) raises
 //! `o_los` until the next transition.
 //!
