@@ -188,16 +188,13 @@ pub fn sim(path: &Path, text: &str, wave: Option<&Path>, show: usize) -> Result<
     let mut trace_ok = true;
     if let Ok(want) = std::fs::read_to_string(&golden) {
         let got = tokenbus::render(&cfg, text, &r.rtl);
-        match got.lines().zip(want.lines()).position(|(a, b)| a != b) {
-            None if got.lines().count() == want.lines().count() => {
-                println!(
-                    "golden trace {}: the RTL's trace is identical",
-                    golden.display()
-                )
-            }
-            p => {
+        match merkur_model::trace::first_difference(&got, &want) {
+            None => println!(
+                "golden trace {}: the RTL's trace is identical",
+                golden.display()
+            ),
+            Some(line) => {
                 trace_ok = false;
-                let line = p.unwrap_or(got.lines().count().min(want.lines().count())) + 1;
                 println!(
                     "golden trace {}: the RTL's trace differs at line {line} (regenerate it with `merkur trace` if the scenario changed)",
                     golden.display()

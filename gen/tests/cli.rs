@@ -23,6 +23,14 @@ fn text(o: &[u8]) -> String {
     String::from_utf8_lossy(o).to_string()
 }
 
+/// `merkur args` fails, without a panic, with `want` in its error.
+fn refused(args: &[&str], want: &str) {
+    let o = merkur(args);
+    assert!(!o.status.success(), "{args:?}");
+    let e = text(&o.stderr);
+    assert!(e.contains(want) && !e.contains("panicked"), "{args:?}: {e}");
+}
+
 fn scratch(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("merkur-cli-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
@@ -310,10 +318,7 @@ fn campaign_refuses_bad_arguments() {
             "--wave needs --case",
         ),
     ] {
-        let o = merkur(args);
-        assert!(!o.status.success(), "{args:?}");
-        let e = text(&o.stderr);
-        assert!(e.contains(want) && !e.contains("panicked"), "{args:?}: {e}");
+        refused(args, want);
     }
 }
 
@@ -451,10 +456,7 @@ fn synth_refuses_bad_arguments() {
             "nope.toml",
         ),
     ] {
-        let o = merkur(args);
-        assert!(!o.status.success(), "{args:?}");
-        let e = text(&o.stderr);
-        assert!(e.contains(want) && !e.contains("panicked"), "{args:?}: {e}");
+        refused(args, want);
     }
 }
 
@@ -486,14 +488,12 @@ fn token_bus_scenarios_trace_emit_and_simulate() {
     assert!(o.status.success(), "{}", text(&o.stderr));
     let v = std::fs::read_to_string(vd.join("merkur_dcm.v")).unwrap();
     assert!(v.contains("module merkur_dcm("), "no merkur_dcm module");
-    let lint = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "--top-module", "merkur_dcm"])
-        .arg(vd.join("waivers.vlt"))
-        .arg(vd.join("merkur_dcm.v"))
-        .output()
-        .expect("verilator runs");
-    let err = text(&lint.stderr);
-    assert!(lint.status.success() && !err.contains("%Warning"), "{err}");
+    if let Err(err) = merkur_testbenches::verilator::lint(
+        &[&vd.join("waivers.vlt"), &vd.join("merkur_dcm.v")],
+        "merkur_dcm",
+    ) {
+        panic!("merkur_dcm.v lint:\n{err}");
+    }
     // Every station in Verilator against the model, with waveforms.
     let w = d.join("kill.fst");
     let o = merkur(&[
@@ -518,24 +518,23 @@ fn token_bus_scenarios_trace_emit_and_simulate() {
         "restarted station's waveform"
     );
     // Ring-only options and commands name the problem.
-    let o = merkur(&["check", "tb-data/dcm8_kill.toml", "--line-rate", "5"]);
-    assert!(!o.status.success());
-    assert!(text(&o.stderr).contains("--line-rate is for ring scenarios"));
-    for args in [
-        vec![
+    refused(
+        &["check", "tb-data/dcm8_kill.toml", "--line-rate", "5"],
+        "--line-rate is for ring scenarios",
+    );
+    refused(
+        &[
             "campaign",
             "--ring",
             "tb-data/dcm8_kill.toml",
             "--case",
             "x",
         ],
-        vec!["synth", "tb-data/dcm8_kill.toml", "--target", "xc6s"],
-    ] {
-        let o = merkur(&args);
-        let e = text(&o.stderr);
-        assert!(!o.status.success(), "{args:?}");
-        assert!(e.contains("is a token-bus scenario"), "{args:?}: {e}");
-        assert!(!e.contains("panicked"), "{e}");
-    }
+        "is a token-bus scenario",
+    );
+    refused(
+        &["synth", "tb-data/dcm8_kill.toml", "--target", "xc6s"],
+        "is a token-bus scenario",
+    );
     let _ = std::fs::remove_dir_all(d);
 }

@@ -632,7 +632,6 @@ pub fn run_with(
     };
     let mut init = vec![false; n];
     let mut prev: Vec<Option<RmmOut>> = vec![None; n];
-    let mut prev_ev_seen = vec![0u8; n];
     // Data frames in flight: (sender, seq) → receivers expected.
     let mut pending: Vec<(usize, u16, u64, Vec<bool>)> = vec![];
     let mut received: Vec<BTreeSet<(usize, u16)>> = vec![BTreeSet::new(); n];
@@ -640,6 +639,7 @@ pub fn run_with(
     let mut last_fault: Option<usize> = None;
     for t in 0..cfg.ticks {
         // Scenario events at this tick.
+        let mut auto_now = vec![false; n];
         while ev_i < cfg.events.len() && cfg.events[ev_i].at == t {
             let e = &cfg.events[ev_i];
             match &e.what {
@@ -678,7 +678,8 @@ pub fn run_with(
                         m.babble = *d;
                     }
                 }
-                TbEvent::Auto(_) => {}
+                TbEvent::Auto(None) => auto_now.fill(true),
+                TbEvent::Auto(Some(s)) => auto_now[*s] = true,
             }
             if e.what.is_fault() {
                 last_fault = Some(ev_i);
@@ -690,13 +691,6 @@ pub fn run_with(
             });
             ev_i += 1;
         }
-        let auto_now: Vec<bool> = (0..n)
-            .map(|k| {
-                cfg.events.iter().any(|e| {
-                    e.at == t && matches!(e.what, TbEvent::Auto(s) if s.map_or(true, |s| s == k))
-                })
-            })
-            .collect();
         // 1. MACs.
         let alive: Vec<bool> = macs.iter().map(|m| m.is_some()).collect();
         let mut ins = vec![RmmIn::default(); n];
@@ -802,14 +796,7 @@ pub fn run_with(
             if record_outs {
                 run.outs[k].push(o);
             }
-            log_changes(
-                &mut run,
-                t,
-                k,
-                prev[k].as_ref(),
-                o.as_ref(),
-                &mut prev_ev_seen[k],
-            );
+            log_changes(&mut run, t, k, prev[k].as_ref(), o.as_ref());
             if let (Some(p), Some(o), Some(f)) = (prev[k], o, last_fault) {
                 if p.act != o.act && !run.switches[f].iter().any(|x| x.0 == k) {
                     run.switches[f].push((k, t - cfg.events[f].at));
@@ -848,14 +835,7 @@ pub fn run_with(
     Ok(run)
 }
 
-fn log_changes(
-    run: &mut TbRun,
-    t: u64,
-    k: usize,
-    p: Option<&RmmOut>,
-    o: Option<&RmmOut>,
-    seen: &mut u8,
-) {
+fn log_changes(run: &mut TbRun, t: u64, k: usize, p: Option<&RmmOut>, o: Option<&RmmOut>) {
     let mut push = |what: String| {
         run.changes.push(Change {
             t,
@@ -875,7 +855,6 @@ fn log_changes(
                 rmm::state::name(o.state),
                 if o.act { 'B' } else { 'A' }
             ));
-            *seen = o.ev_seen;
         }
         (Some(p), Some(o)) => {
             if p.state != o.state {
@@ -914,7 +893,6 @@ fn log_changes(
                     if o.cmd_ch { 'B' } else { 'A' }
                 ));
             }
-            *seen = o.ev_seen;
         }
     }
 }

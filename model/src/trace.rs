@@ -10,6 +10,21 @@ use std::fmt::Write;
 /// Version of the trace format; bump on any change of the text layout.
 pub const FORMAT: u32 = 1;
 
+/// The first line (1-based) where two traces differ, `None` when equal.
+pub fn first_difference(got: &str, want: &str) -> Option<usize> {
+    if got == want {
+        return None;
+    }
+    let (g, w) = (got.lines().count(), want.lines().count());
+    Some(
+        got.lines()
+            .zip(want.lines())
+            .position(|(a, b)| a != b)
+            .unwrap_or(g.min(w))
+            + 1,
+    )
+}
+
 /// Hex SHA-256 of a scenario file's bytes.
 pub fn scenario_hash(text: &str) -> String {
     let d = Sha256::digest(text.as_bytes());

@@ -33,13 +33,7 @@ fn committed_traces_match_the_model() {
         let tr = sc.with_extension("trace");
         let want = std::fs::read_to_string(&tr)
             .unwrap_or_else(|_| panic!("{} has no committed trace {}", sc.display(), tr.display()));
-        if got != want {
-            let line = got
-                .lines()
-                .zip(want.lines())
-                .position(|(a, b)| a != b)
-                .map(|i| i + 1)
-                .unwrap_or(got.lines().count().min(want.lines().count()) + 1);
+        if let Some(line) = trace::first_difference(&got, &want) {
             drift.push(format!(
                 "{} (first difference at line {line})",
                 tr.display()

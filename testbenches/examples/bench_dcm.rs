@@ -10,32 +10,20 @@
 //! octets is the same at both rates, µs = octets × 8 / rate.
 
 use merkur_model::rmm::state;
-use merkur_model::tbconfig::{self, ChanFault, TbEvent};
+use merkur_model::tbconfig::{ChanFault, TbEvent};
 use merkur_testbenches::dcm_sim::{self, Options};
-use merkur_testbenches::repo_root;
 use std::collections::BTreeMap;
 
 fn main() {
-    let mut files: Vec<_> = std::fs::read_dir(repo_root().join("tb-data"))
-        .expect("tb-data")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
     println!("| scenario | fault | class | stations switched | first..last switch, octets | µs at 5 Mbit/s | µs at 10 Mbit/s | receptions lost (RTL = model) |");
     println!("|---|---|---|---|---|---|---|---|");
     let mut by_class: BTreeMap<String, (u64, u64, u64)> = BTreeMap::new();
     let mut octets = 0u64;
     let mut wall = 0.0;
     let mut bad = false;
-    for p in files {
-        let text = std::fs::read_to_string(&p).expect("read");
-        if !tbconfig::is_token_bus(&text) {
-            continue;
-        }
-        let name = p.file_stem().unwrap().to_string_lossy().to_string();
-        let cfg = tbconfig::load(&name, &text).unwrap_or_else(|e| panic!("{e}"));
-        let r = dcm_sim::run(&cfg, &Options::default()).expect("runs");
+    for s in dcm_sim::scenarios().expect("tb-data") {
+        let (cfg, name) = (&s.cfg, &s.cfg.name);
+        let r = dcm_sim::run(cfg, &Options::default()).expect("runs");
         octets += r.compared;
         wall += r.wall.as_secs_f64();
         if let Some(m) = r.mismatches.first() {

@@ -176,6 +176,49 @@ impl StationHw for VStation {
     }
 }
 
+/// A token-bus scenario of `tb-data/`.
+#[derive(Debug, Clone)]
+pub struct Scenario {
+    /// `tb-data/<file>.toml`.
+    pub name: String,
+    /// The file's text.
+    pub text: String,
+    /// Validated.
+    pub cfg: TbConfig,
+}
+
+impl Scenario {
+    /// The committed golden trace beside it.
+    pub fn golden(&self) -> Result<String, String> {
+        let p = crate::repo_root().join(self.name.replace(".toml", ".trace"));
+        std::fs::read_to_string(&p).map_err(|e| format!("{}: {e}", p.display()))
+    }
+}
+
+/// Every token-bus scenario (a `[token_bus]` table) in `tb-data/`, by name.
+pub fn scenarios() -> Result<Vec<Scenario>, String> {
+    let dir = crate::repo_root().join("tb-data");
+    let mut v = vec![];
+    for e in std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+        let p = e.map_err(|e| e.to_string())?.path();
+        if p.extension().and_then(|x| x.to_str()) != Some("toml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&p).map_err(|e| format!("{}: {e}", p.display()))?;
+        if !merkur_model::tbconfig::is_token_bus(&text) {
+            continue;
+        }
+        let name = format!(
+            "tb-data/{}",
+            p.file_name().unwrap_or_default().to_string_lossy()
+        );
+        let cfg = merkur_model::tbconfig::load(&name, &text).map_err(|e| e.to_string())?;
+        v.push(Scenario { name, text, cfg });
+    }
+    v.sort_by(|a, b| a.name.cmp(&b.name));
+    Ok(v)
+}
+
 /// Options of a run.
 #[derive(Debug, Clone, Default)]
 pub struct Options {

@@ -129,6 +129,23 @@ fn wrapper_cpp(ports: &[Port]) -> String {
     s
 }
 
+/// `verilator --lint-only -Wall --top-module top` over `files` (a waiver
+/// file among them, `.vlt`): `Err` with Verilator's messages when it fails or
+/// warns.
+pub fn lint(files: &[&Path], top: &str) -> Result<(), String> {
+    let o = Command::new("verilator")
+        .args(["--lint-only", "-Wall", "--top-module", top])
+        .args(files)
+        .output()
+        .map_err(|e| format!("verilator not runnable ({e}); run scripts/install-tools.sh"))?;
+    let err = String::from_utf8_lossy(&o.stderr);
+    if o.status.success() && !err.contains("%Warning") {
+        Ok(())
+    } else {
+        Err(err.into_owned())
+    }
+}
+
 /// Version line of the installed Verilator (asked once per process).
 pub fn verilator_version() -> Result<String, String> {
     static VERSION: OnceLock<Result<String, String>> = OnceLock::new();

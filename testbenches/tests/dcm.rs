@@ -4,53 +4,46 @@
 //! correction machine is reached, see `every_transition_is_reached`), every
 //! output of every station in every octet.
 
-use merkur_model::tbconfig::{self, TbConfig};
-use merkur_testbenches::dcm_sim::{self, Options};
-use merkur_testbenches::repo_root;
+use merkur_model::rmm::{cause, state, RmmOut};
+use merkur_model::tbconfig::TbConfig;
+use merkur_testbenches::dcm_sim::{self, Options, Report, Scenario};
+use std::collections::BTreeSet;
+use std::sync::OnceLock;
 
-fn scenarios() -> Vec<(String, TbConfig)> {
-    let mut v = vec![];
-    for e in std::fs::read_dir(repo_root().join("tb-data")).unwrap() {
-        let p = e.unwrap().path();
-        if p.extension().and_then(|x| x.to_str()) != Some("toml") {
-            continue;
-        }
-        let text = std::fs::read_to_string(&p).unwrap();
-        if !tbconfig::is_token_bus(&text) {
-            continue;
-        }
-        let name = format!("tb-data/{}", p.file_name().unwrap().to_string_lossy());
-        let cfg = tbconfig::load(&name, &text).unwrap_or_else(|e| panic!("{e}"));
-        v.push((name, cfg));
-    }
-    v.sort_by(|a, b| a.0.cmp(&b.0));
-    assert!(v.len() >= 9, "token-bus scenarios present: {}", v.len());
-    v
+/// Every token-bus scenario of tb-data/, each run once through the RTL for
+/// all the tests of this file.
+fn runs() -> &'static [(Scenario, Report)] {
+    static RUNS: OnceLock<Vec<(Scenario, Report)>> = OnceLock::new();
+    RUNS.get_or_init(|| {
+        let v: Vec<(Scenario, Report)> = dcm_sim::scenarios()
+            .unwrap()
+            .into_iter()
+            .map(|s| {
+                let r = dcm_sim::run(&s.cfg, &Options::default())
+                    .unwrap_or_else(|e| panic!("{}: {e}", s.name));
+                (s, r)
+            })
+            .collect();
+        assert!(v.len() >= 9, "token-bus scenarios present: {}", v.len());
+        v
+    })
 }
 
 #[test]
 fn every_token_bus_scenario_agrees_with_the_model_octet_for_octet() {
     let mut failed = vec![];
-    for (name, cfg) in scenarios() {
-        let r = dcm_sim::run(&cfg, &Options::default()).unwrap_or_else(|e| panic!("{name}: {e}"));
+    for (s, r) in runs() {
+        let name = &s.name;
         println!(
             "{name}: {} station-octets compared in {:.2} s, {} mismatches",
             r.compared,
             r.wall.as_secs_f64(),
             r.mismatches.len()
         );
-        assert!(r.compared >= cfg.ticks, "{name}: nothing compared");
+        assert!(r.compared >= s.cfg.ticks, "{name}: nothing compared");
         // The RTL run, written as a trace, is the committed golden trace.
-        let text = std::fs::read_to_string(repo_root().join(&name)).unwrap();
-        let golden =
-            std::fs::read_to_string(repo_root().join(name.replace(".toml", ".trace"))).unwrap();
-        let mine = merkur_model::tokenbus::render(&cfg, &text, &r.rtl);
-        if mine != golden {
-            let line = mine
-                .lines()
-                .zip(golden.lines())
-                .position(|(a, b)| a != b)
-                .map_or(0, |i| i + 1);
+        let mine = merkur_model::tokenbus::render(&s.cfg, &s.text, &r.rtl);
+        if let Some(line) = merkur_model::trace::first_difference(&mine, &s.golden().unwrap()) {
             failed.push(format!(
                 "{name}: the RTL's trace differs from the golden trace at line {line}"
             ));
@@ -65,23 +58,19 @@ fn every_token_bus_scenario_agrees_with_the_model_octet_for_octet() {
     assert!(failed.is_empty(), "{}", failed.join("\n"));
 }
 
-/// Runs one scenario in RTL; panics with the first mismatch.
-fn rtl(name: &str) -> (TbConfig, merkur_testbenches::dcm_sim::Report) {
-    let (_, cfg) = scenarios()
-        .into_iter()
-        .find(|(n, _)| n == &format!("tb-data/{name}.toml"))
+/// One scenario's RTL run; panics with its first mismatch.
+fn rtl(name: &str) -> (&'static TbConfig, &'static Report) {
+    let (s, r) = runs()
+        .iter()
+        .find(|(s, _)| s.name == format!("tb-data/{name}.toml"))
         .unwrap_or_else(|| panic!("no scenario {name}"));
-    let r = dcm_sim::run(&cfg, &Options::default()).unwrap();
     assert!(
         r.mismatches.is_empty(),
         "{name}: {}",
         r.mismatches.first().unwrap()
     );
-    (cfg, r)
+    (&s.cfg, r)
 }
-
-use merkur_model::rmm::{cause, state, RmmOut};
-use std::collections::BTreeSet;
 
 /// (from, to, cause) of every transition and command report in a run.
 fn transitions(outs: &[Vec<Option<RmmOut>>]) -> BTreeSet<(u8, u8, u8)> {
@@ -128,9 +117,8 @@ fn every_transition_is_reached_in_rtl() {
     .into_iter()
     .collect();
     let mut got = BTreeSet::new();
-    for (name, cfg) in scenarios() {
-        let r = dcm_sim::run(&cfg, &Options::default()).unwrap();
-        assert!(r.mismatches.is_empty(), "{name}: {}", r.mismatches[0]);
+    for (s, r) in runs() {
+        assert!(r.mismatches.is_empty(), "{}: {}", s.name, r.mismatches[0]);
         got.extend(transitions(&r.rtl.outs));
     }
     let name = |t: &(u8, u8, u8)| {

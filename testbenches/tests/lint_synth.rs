@@ -4,6 +4,7 @@
 //! asserted here).
 
 use merkur_rtl::verilog::{all_blocks, WAIVERS};
+use merkur_testbenches::verilator::lint;
 use std::process::Command;
 
 fn scratch() -> std::path::PathBuf {
@@ -20,17 +21,9 @@ fn every_block_is_lint_clean() {
     for (name, v) in all_blocks() {
         let f = d.join(format!("{name}.v"));
         std::fs::write(&f, &v).unwrap();
-        let o = Command::new("verilator")
-            .args(["--lint-only", "-Wall", "--top-module", "top"])
-            .arg(&waivers)
-            .arg(&f)
-            .output()
-            .expect("verilator runs");
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(
-            o.status.success() && !err.contains("%Warning"),
-            "{name}: lint:\n{err}"
-        );
+        if let Err(err) = lint(&[&waivers, &f], "top") {
+            panic!("{name}: lint:\n{err}");
+        }
     }
 }
 
@@ -82,17 +75,9 @@ fn the_ring_top_is_lint_clean_and_checked_by_yosys() {
     let v = merkur_rtl::ring_top::ring_verilog(&kinds, cfg.slots);
     let f = d.join("ring8_ring.v");
     std::fs::write(&f, &v).unwrap();
-    let o = Command::new("verilator")
-        .args(["--lint-only", "-Wall", "--top-module", "merkur_ring"])
-        .arg(&waivers)
-        .arg(&f)
-        .output()
-        .expect("verilator runs");
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        o.status.success() && !err.contains("%Warning"),
-        "ring top lint:\n{err}"
-    );
+    if let Err(err) = lint(&[&waivers, &f], "merkur_ring") {
+        panic!("ring top lint:\n{err}");
+    }
     let o = Command::new("yosys")
         .arg("-p")
         .arg(format!(

@@ -32,6 +32,16 @@ impl Ctl {
         let p = self.m.port(name);
         self.m.get(p)
     }
+    /// Armed, wrapped up (WU) by a failure of INPUT, settled.
+    fn wrapped_up() -> Ctl {
+        let mut c = Ctl::new();
+        c.set("i_armed", 1);
+        c.set("i_cf_in", 1);
+        c.ticks(1);
+        c.set("i_cf_in", 0);
+        c.ticks(SETTLE_CLOCKS);
+        c
+    }
     fn ticks(&mut self, n: u64) {
         for _ in 0..n {
             self.m.tick(self.clk);
@@ -93,12 +103,7 @@ fn a_wrapped_node_reintegrates() {
     assert_eq!(c.get("o_grace_over"), 1, "half the CS timeout later");
 
     // WU: an ACK, then a DATA header on BSR; not in failsafe.
-    let mut c = Ctl::new();
-    c.set("i_armed", 1);
-    c.set("i_cf_in", 1);
-    c.ticks(1);
-    c.set("i_cf_in", 0);
-    c.ticks(SETTLE_CLOCKS);
+    let mut c = Ctl::wrapped_up();
     c.set("i_bsr_data", 1);
     c.ticks(3);
     assert_eq!(c.get("o_mode"), 1, "no ACK heard yet");
@@ -113,12 +118,7 @@ fn a_wrapped_node_reintegrates() {
     // WU while a packet is still arriving on INPUT (the frame that went the
     // long way round): the DATA header on BSR is remembered, and the node
     // unwraps when that packet has ended, not in the middle of it.
-    let mut c = Ctl::new();
-    c.set("i_armed", 1);
-    c.set("i_cf_in", 1);
-    c.ticks(1);
-    c.set("i_cf_in", 0);
-    c.ticks(SETTLE_CLOCKS);
+    let mut c = Ctl::wrapped_up();
     c.set("i_tst_ack", 1);
     c.ticks(2);
     c.set("i_in_pkt", 1);

@@ -257,28 +257,16 @@ endmodule
 
 fn lint(name: &str, top: &str, files: &[(&str, &str)]) {
     let d = scratch(&format!("lint-{name}"));
-    std::fs::write(d.join("waivers.vlt"), WAIVERS).unwrap();
-    let mut args = vec![
-        "--lint-only".to_string(),
-        "-Wall".to_string(),
-        "--top-module".to_string(),
-        top.to_string(),
-        "waivers.vlt".to_string(),
-    ];
+    let mut paths = vec![d.join("waivers.vlt")];
+    std::fs::write(&paths[0], WAIVERS).unwrap();
     for (f, text) in files {
         std::fs::write(d.join(f), text).unwrap();
-        args.push(f.to_string());
+        paths.push(d.join(f));
     }
-    let o = Command::new("verilator")
-        .args(&args)
-        .current_dir(&d)
-        .output()
-        .expect("verilator runs");
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        o.status.success() && !err.contains("%Warning"),
-        "{name}: lint:\n{err}"
-    );
+    let refs: Vec<&std::path::Path> = paths.iter().map(|p| p.as_path()).collect();
+    if let Err(err) = merkur_testbenches::verilator::lint(&refs, top) {
+        panic!("{name}: lint:\n{err}");
+    }
     let _ = std::fs::remove_dir_all(&d);
 }
 
