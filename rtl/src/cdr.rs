@@ -17,15 +17,15 @@
 //! every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
 //! fail. At most one bit is recovered per clock.
 //!
-//! A dead line: after [`MUTE_SAMPLES`] (5 bit times) without a transition no
-//! more bits are taken (legal streams toggle at least every 5 bit times), so
-//! a break passes on a cut-short packet, not a run of zeros. Known gap
-//! (issue 5): one line-bit error inverts two adjacent code bits and can
-//! leave up to 6 zero code bits inside a packet (7 next to K); a run of 5 or
-//! more mutes the receiver and the rest of the frame is lost, where
-//! protocol §5 says a single error costs one word. Loss of signal:
-//! no transition for [`LOS_SAMPLES`] = 128 samples (16 bit times) raises
-//! `o_los` until the next transition.
+//! A dead line: after [`MUTE_SAMPLES`] (8 bit times) without a transition no
+//! more bits are taken, so a break passes on a cut-short packet, not a run
+//! of zeros. Legal streams toggle at least every 4 bit times, but one
+//! line-bit error inverts two adjacent code bits and can leave up to 6 zero
+//! code bits inside a packet (an edge interval of 7 bit times; tested,
+//! `testbenches/tests/cdr.rs`): that must cost a word, not mute the receiver
+//! for the rest of the frame (protocol §5). An interval of up to 8 bit
+//! times is read whole. Loss of signal: no transition for [`LOS_SAMPLES`] =
+//! 192 samples (24 bit times) raises `o_los` until the next transition.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -33,7 +33,7 @@
 //! | `i_samples` | in | 4 | clock | line samples, bit 0 first in time |
 //! | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
 //! | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
-//! | `o_los` | out | 1 | clock | loss of signal (no edge for 16 bit times) |
+//! | `o_los` | out | 1 | clock | loss of signal (no edge for 24 bit times) |
 //! | `o_phase` | out | 2 | clock | which sample of its clock the bit was taken from (0 first) |
 //!
 //! Latency: `o_valid`/`o_bit`/`o_phase` are registered: a bit appears one
@@ -54,12 +54,15 @@ use rust_hdl::prelude::*;
 pub const SAMPLES_PER_BIT: usize = 8;
 /// Line samples per core clock (the width of `i_samples`).
 pub const SAMPLES_PER_CLOCK: usize = 4;
-/// Samples without a transition after which no more bits are taken (5 bit
-/// times: legal streams toggle at least every 4), so a line that went dark
-/// does not deliver a run of zeros.
-pub const MUTE_SAMPLES: u64 = 5 * SAMPLES_PER_BIT as u64;
-/// Samples without a transition before `o_los` rises (16 bit times).
-pub const LOS_SAMPLES: u64 = 16 * SAMPLES_PER_BIT as u64;
+/// Samples without a transition after which no more bits are taken (8 bit
+/// times: legal streams toggle at least every 4, a single line-bit error
+/// leaves an interval of at most 7), so a line that went dark does not
+/// deliver a long run of zeros.
+pub const MUTE_SAMPLES: u64 = 8 * SAMPLES_PER_BIT as u64;
+/// Samples without a transition before `o_los` rises (24 bit times: more
+/// than a switch's dark time plus a pass-through's, [`crate::sw_dark`],
+/// [`crate::retime::DARK_BITS`]).
+pub const LOS_SAMPLES: u64 = 24 * SAMPLES_PER_BIT as u64;
 
 /// Oversampling clock and data recovery.
 #[derive(LogicBlock)]
@@ -158,8 +161,9 @@ impl Logic for Cdr {
         // Take the sample at count 4 (the bit's centre); takes are at least
         // 5 samples apart, so at most one per clock.
         self.rx_valid.d.next = false;
-        // (A line without an edge for 5 bit times is dead, not a run of
-        // zeros: legal streams toggle at least every 4; no bits from it.)
+        // (A line without an edge for 8 bit times is dead, not a run of
+        // zeros: legal streams toggle at least every 4, one line-bit error
+        // leaves at most 7; no bits from it.)
         self.live.next = self.quiet.q.val() < self.mute_after.val();
         if (self.c0.val() == 4) & self.live.val() {
             self.rx_valid.d.next = true;

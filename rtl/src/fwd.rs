@@ -18,7 +18,8 @@
 //! Everything else, including J K, idles, bad groups and packets after a
 //! rejected header (`i_hdr_bad`), passes unchanged; three idle groups in a
 //! row end a packet that was cut short upstream (as [`crate::rx_word`]), and
-//! so does a dead INPUT (no bit for 6 bit times), which also refills the
+//! so does a dead INPUT (no bit for [`DEAD_CLOCKS`]: the clock recovery
+//! muted), which also refills the
 //! group delay with idles. A frame whose header was processed toggles the
 //! Alive flip-flop even when it was cut short. The Alive flip-flop
 //! toggles after each processed DATA packet. Alarms: `i_alarm_req` with
@@ -63,6 +64,12 @@
 
 use crate::retime::Retime;
 use rust_hdl::prelude::*;
+
+/// Clocks without a recovered bit after which INPUT counts as dead (3 bit
+/// times; a live line gives a bit every 2 clocks, 3 at most): shorter
+/// than the gap a switchbox change leaves after a receiver muted (12 dark
+/// bit times, [`crate::sw_dark`], less the 8 of the mute).
+pub const DEAD_CLOCKS: u64 = 6;
 
 // Word actions (register `action`, rust-hdl emits literals, not Rust consts):
 // 0 pass, 1 H0 (FS/RWC), 2 H1 (HOP + 1), 3 fresh word, 4 actuator ALIVE,
@@ -212,10 +219,7 @@ impl Fwd {
             o_toggle: Default::default(),
             o_line: Default::default(),
             jk: Constant::new(crate::rx_framer::JK_BITS.to_bits()),
-            // One bit time after the CDR stops taking bits from a dead line.
-            dead_after: Constant::new(
-                (crate::cdr::MUTE_SAMPLES / crate::cdr::SAMPLES_PER_CLOCK as u64 + 2).to_bits(),
-            ),
+            dead_after: Constant::new(DEAD_CLOCKS.to_bits()),
             prev: Default::default(),
             window: Default::default(),
             delay: Default::default(),
@@ -732,7 +736,7 @@ impl Logic for Fwd {
         self.out.i_valid.next = self.i_bvalid.val();
         self.out.i_code.next = self.out_bit.val();
         self.out.i_phase.next = self.i_phase.val();
-        // INPUT went dead (no bit for 6 bit times: the CDR takes none from
+        // INPUT went dead (no bit for DEAD_CLOCKS: the CDR takes none from
         // a line without edges): the packet is over, and the group delay
         // line is refilled with idles, so that no stale bits go out when
         // bits come again (from another port after a wrap).

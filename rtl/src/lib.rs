@@ -31,6 +31,7 @@
 //! - [`stream_ctrl`]: channel failure (pcf/scf) and test signal (ptst/stst)
 //! - [`port_rx`]: monitor + stream controller, one per logical input
 //! - [`switchbox`]: the paper's Table 1
+//! - [`sw_dark`]: both physical outputs dark for 12 bit times after a switchbox change
 //! - [`slave`]: the slave node top (Figure 6)
 //! - [`special_master`]: the clock base: frames every period, return store, SEC
 //! - [`tst_tx`]: link test packets of a wrapped node
@@ -61,6 +62,7 @@ pub mod rx_word;
 pub mod slave;
 pub mod special_master;
 pub mod stream_ctrl;
+pub mod sw_dark;
 pub mod switch_ctl;
 pub mod switchbox;
 pub mod synth_top;

@@ -30,11 +30,14 @@
 //! ones: the line toggles every bit) on its own bit grid; from the second
 //! bit on it sends the buffer, from the grid's next boundary. A send with an empty buffer
 //! (underflow: the input stopped) or a write into a full one (overflow)
-//! pulses `o_slip` and empties the buffer; after an underflow the line
-//! stays dark for [`DARK_BITS`] bit times (a downstream receiver mutes and
-//! drops the word the input stopped in, [`crate::monitor`]) and then sends
-//! idles, so it sees a live line again well before loss of signal; the
-//! next bits start again. A live stream within ±2000 ppm never slips.
+//! pulses `o_slip` and empties the buffer; an underflow sends no idle edge
+//! (the zeros the receiver read from a dying line before it muted would be
+//! confirmed by it): the line stays dark from its last edge through the
+//! underflow and [`DARK_BITS`] bit times more, so a downstream receiver
+//! mutes and drops the word the input stopped in ([`crate::monitor`]), and
+//! then sends idles, so it sees a live line again before loss of signal
+//! (dark ≤ 8 + 2.5 + 8 bit times < 24); the next bits start again. A live
+//! stream within ±2000 ppm never slips.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -60,9 +63,11 @@ use rust_hdl::prelude::*;
 
 /// Target wait of a bit in the buffer, receive samples (quarter clocks).
 pub const TARGET: u64 = 20;
-/// Bit times the line stays dark after an underflow: more than the 5 after
-/// which a receiver's clock recovery mutes ([`crate::cdr::MUTE_SAMPLES`]),
-/// well under the 16 of loss of signal.
+/// Bit times the line stays dark after an underflow (which itself sends no
+/// edge). The last edge was at least 8 bit times before (the input's CDR
+/// muted, [`crate::cdr::MUTE_SAMPLES`]), so a downstream receiver has muted
+/// and ended its packet before the idles come; the whole dark time stays
+/// under the 24 bit times of loss of signal.
 pub const DARK_BITS: u64 = 8;
 /// Dead band around [`TARGET`], receive samples.
 pub const BAND: u64 = 4;
@@ -194,8 +199,9 @@ impl Logic for Retime {
         self.under.next =
             (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0);
         self.new_lvl.next = self.lvl.q.val();
-        if (self.send0.val() | self.send1.val()) & (self.dark.q.val() == 0) {
-            // An idle bit (NRZI 1: the level toggles).
+        if (self.send0.val() | self.send1.val()) & (self.dark.q.val() == 0) & !self.under.val() {
+            // An idle bit (NRZI 1: the level toggles); not at an underflow,
+            // which starts the dark time.
             self.new_lvl.next = !self.lvl.q.val();
         }
         if (self.send0.val() | self.send1.val()) & (self.dark.q.val() != 0) {

@@ -6,7 +6,9 @@
 //! register) from INPUT to OUTPUT, the secondary pass-through (BSR → BSS in
 //! mode N, retimed; a TST from a neighbour is cut after its H0, protocol §9)
 //! or the link-test generator (BSS in modes WU, WD), the mode and
-//! failsafe logic (protocol §10, §12), the interrupt/alarm queue (§11), the
+//! failsafe logic (protocol §10, §12; after every switchbox change both
+//! outputs are dark for 12 bit times, [`crate::sw_dark`]), the
+//! interrupt/alarm queue (§11), the
 //! actuator's output register and the error counters. A [`crate::master`]
 //! is this block with `i_master` = 1 and a database beside it.
 //!
@@ -35,13 +37,14 @@
 //!
 //! ```text
 //! PI ─┐            ┌─ port_rx (INPUT) ── fwd ── OUTPUT ─┐            ┌─ PO
-//!     ├─ switchbox ┤                                     ├─ switchbox ┤
-//! SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ SO
+//!     ├─ switchbox ┤                                     ├─ switchbox ── sw_dark ┤
+//! SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘                └─ SO
 //! ```
 
 use crate::fwd::Fwd;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
+use crate::sw_dark::SwDark;
 use crate::switch_ctl::SwitchCtl;
 use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
@@ -121,6 +124,7 @@ pub struct Slave {
     /// Rejected headers at INPUT.
     pub o_ferr: Signal<Out, Bits<16>>,
     sbox: Switchbox,
+    dark: SwDark,
     swc: SwitchCtl,
     rx_in: PortRx,
     rx_bsr: PortRx,
@@ -196,6 +200,7 @@ impl Slave {
             o_perr: Default::default(),
             o_ferr: Default::default(),
             sbox: Default::default(),
+            dark: Default::default(),
             swc: Default::default(),
             rx_in: PortRx::new(false),
             rx_bsr: PortRx::new(false),
@@ -483,8 +488,14 @@ impl Logic for Slave {
         }
         self.sbox.i_output.next = self.out_pair.val();
         self.sbox.i_bss.next = self.bss_pair.val();
-        self.o_po.next = self.sbox.o_po.val();
-        self.o_so.next = self.sbox.o_so.val();
+        // After a switchbox change both outputs are dark for a while, so
+        // no downstream receiver splices the old source with the new.
+        self.dark.clock.next = self.clock.val();
+        self.dark.i_change.next = self.swc.o_change.val();
+        self.dark.i_po.next = self.sbox.o_po.val();
+        self.dark.i_so.next = self.sbox.o_so.val();
+        self.o_po.next = self.dark.o_po.val();
+        self.o_so.next = self.dark.o_so.val();
 
         self.o_act_data.next = self.act_data.q.val();
         self.o_mode.next = self.swc.o_mode.val();

@@ -29,7 +29,10 @@
 //! Switchbox: like every node ([`crate::slave`]; protocol §10) it wraps
 //! when its INPUT or BSR fails (frames then leave on OUTPUT and return on
 //! INPUT of its row of Table 1, headers carry RWC, no SEC is sent, BSS
-//! carries TST), reintegrates, and sends RECONFIG alarms in its home slot.
+//! carries TST), reintegrates ([`UNWRAP_LEAD_BITS`] before a period tick
+//! when it is the WD end), and sends RECONFIG alarms in its home slot; after
+//! every change both outputs are dark for 12 bit times ([`crate::sw_dark`]),
+//! and a packet the relay was holding from the old BSR line is dropped.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -64,6 +67,7 @@ use crate::mdb::Mdb;
 use crate::pkt_tx::PktTx;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
+use crate::sw_dark::SwDark;
 use crate::switch_ctl::SwitchCtl;
 use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
@@ -76,6 +80,11 @@ pub const RELAY_BITS: u64 = 76;
 // The delay line `rdl` is a `Bits<76>` read at bit 75 (rust-hdl widths are
 // literals): keep them in step with RELAY_BITS.
 const _: () = assert!(RELAY_BITS == 76);
+/// Bit times before its period tick at which a WD special master unwraps:
+/// the outputs are dark for 12 after the change ([`crate::sw_dark`]), and
+/// the previous frame and its idles have left (a period is at least the
+/// frame plus 20 bit times).
+pub const UNWRAP_LEAD_BITS: u64 = 16;
 
 /// Special master.
 #[derive(LogicBlock)]
@@ -148,6 +157,7 @@ pub struct SpecialMaster {
     stx: PktTx,
     rep: Retime,
     sbox: Switchbox,
+    dark: SwDark,
     tst: TstTx,
     swc: SwitchCtl,
     pend_rc: DFF<Bit>,
@@ -157,6 +167,8 @@ pub struct SpecialMaster {
     rw: Signal<Local, Bit>,
     bss_pair: Signal<Local, Bits<2>>,
     relay_len: Constant<Bits<7>>,
+    unwrap_lead: Constant<Bits<16>>,
+    unwrap_at: Signal<Local, Bit>,
     rdl: DFF<Bits<76>>,
     rcd: DFF<Bits<7>>,
     rcd_run: DFF<Bit>,
@@ -249,6 +261,7 @@ impl Default for SpecialMaster {
             stx: Default::default(),
             rep: Default::default(),
             sbox: Default::default(),
+            dark: Default::default(),
             tst: Default::default(),
             swc: Default::default(),
             pend_rc: Default::default(),
@@ -294,6 +307,8 @@ impl Default for SpecialMaster {
             pend_i2: Default::default(),
             prev_alarm: Default::default(),
             tick: Default::default(),
+            unwrap_lead: Constant::new(UNWRAP_LEAD_BITS.to_bits()),
+            unwrap_at: Default::default(),
             st: Default::default(),
             st_ok: Default::default(),
             prev_cyc: Default::default(),
@@ -355,7 +370,11 @@ impl Logic for SpecialMaster {
         // The period: one tick every i_period bit times once running.
         self.half.d.next = !self.half.q.val();
         self.tick.next = false;
+        self.unwrap_at.next = false;
         if self.mdb.o_running.val() & self.half.q.val() {
+            if (self.bcnt.q.val() + self.unwrap_lead.val()) == self.i_period.val() {
+                self.unwrap_at.next = true;
+            }
             self.bcnt.d.next = self.bcnt.q.val() + 1;
             if (self.bcnt.q.val() + 1) == self.i_period.val() {
                 self.bcnt.d.next = 0.into();
@@ -558,7 +577,9 @@ impl Logic for SpecialMaster {
             self.failsafe.d.next = true;
         }
         // Switchbox decisions, as every node's (crate::switch_ctl); a WD
-        // special master unwraps at its next period tick.
+        // special master unwraps UNWRAP_LEAD_BITS before its next period
+        // tick, so that the dark time after the change (crate::sw_dark) is
+        // over before the frame starts.
         self.swc.clock.next = self.clock.val();
         self.swc.i_armed.next = self.armed.q.val();
         self.swc.i_cf_in.next = self.rx_in.o_cf.val();
@@ -566,7 +587,7 @@ impl Logic for SpecialMaster {
         self.swc.i_rw.next = self.rw.val();
         self.swc.i_fs.next = self.failsafe.q.val();
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
-        self.swc.i_frame_start.next = self.tick.val();
+        self.swc.i_frame_start.next = self.unwrap_at.val();
         self.swc.i_in_pkt.next = self.rx_in.o_inpkt.val();
         self.swc.i_bsr_data.next = self.rx_bsr.o_wvalid.val()
             & (self.rx_bsr.o_kind.val() == 0)
@@ -689,6 +710,13 @@ impl Logic for SpecialMaster {
         if self.stx.i_start.val() {
             self.relay.d.next = false;
         }
+        if self.sw_flush.q.val() {
+            // BSR moved to another line (into or out of WU): a packet the
+            // old line was carrying is not relayed.
+            self.rcd_run.d.next = false;
+            self.rdata.d.next = false;
+            self.relay.d.next = false;
+        }
         // BSS: the SEC or the relayed frame in mode N, TST when wrapped.
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();
         // At a switch the TST generator starts with a dark lead-in, and
@@ -708,7 +736,13 @@ impl Logic for SpecialMaster {
         }
         self.sbox.i_output.next = self.ftx.o_line.val();
         self.sbox.i_bss.next = self.bss_pair.val();
-        self.o_po.next = self.sbox.o_po.val();
-        self.o_so.next = self.sbox.o_so.val();
+        // After a switchbox change both outputs are dark for a while, so
+        // no downstream receiver splices the old source with the new.
+        self.dark.clock.next = self.clock.val();
+        self.dark.i_change.next = self.swc.o_change.val();
+        self.dark.i_po.next = self.sbox.o_po.val();
+        self.dark.i_so.next = self.sbox.o_so.val();
+        self.o_po.next = self.dark.o_po.val();
+        self.o_so.next = self.dark.o_so.val();
     }
 }

@@ -5,7 +5,7 @@
 //! receive chain ([`crate::monitor`]) decodes.
 //!
 //! Channel failure `o_cf` is any of:
-//! - loss of signal (no line transition for 16 bit times, from the CDR);
+//! - loss of signal (no line transition for 24 bit times, from the CDR);
 //! - 8 consecutive bad words (parity or code errors; VOID words are not bad),
 //!   until the next good word;
 //! - a test signal while `i_tst_fail` (mode N on INPUT: a TST where DATA is

@@ -9,14 +9,15 @@
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_ack` | in | 1 | clock | ACK bit (partner's TST heard), taken at each packet start |
 //! | `i_address` | in | 12 | static | node address |
-//! | `i_restart` | in | 1 | clock | the output is switched to this generator: a dark lead-in of 8 bit times, an idle group, then TST |
+//! | `i_restart` | in | 1 | clock | the output is switched to this generator: a dark lead-in of 12 bit times, an idle group, then TST |
 //! | `o_line` | out | 2 | clock | line, DDR pair |
 //!
 //! Latency: free running; one bit every 2 clocks, a packet every 130 clocks.
-//! After `i_restart` the line holds its level for 8 bit times (a receiver
-//! that was inside a word of the stream this replaces mutes and drops it,
-//! [`crate::monitor`], rather than completing it with TST bits; under the 16
-//! of loss of signal), then one idle group and the next TST.
+//! After `i_restart` the line holds its level for 12 bit times, the dark
+//! time of every switchbox change ([`crate::sw_dark`]: a receiver that was
+//! inside a word of the stream this replaces mutes and drops it,
+//! [`crate::monitor`], rather than completing it with TST bits), then one
+//! idle group and the next TST.
 //!
 //! ```text
 //! o_line   | J K | H0 (25) | H1 = ~H0 (25) | I | J K | ...      65 bit times each
@@ -27,6 +28,9 @@ use crate::nrzi_tx::NrziTx;
 use rust_hdl::prelude::*;
 
 /// TST generator.
+// The lead-in is the switchbox's dark time (a literal in `update`).
+const _: () = assert!(crate::sw_dark::DARK_CLOCKS == 24);
+
 #[derive(LogicBlock, Default)]
 pub struct TstTx {
     /// Core clock.
@@ -144,7 +148,8 @@ impl Logic for TstTx {
             }
         }
         if self.i_restart.val() {
-            self.dark.d.next = 16.into();
+            // crate::sw_dark::DARK_CLOCKS (checked below).
+            self.dark.d.next = 24.into();
             self.gnum.d.next = 12.into();
         }
         self.o_line.next = 0.into();

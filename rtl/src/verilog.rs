@@ -48,6 +48,7 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ("rx_word_ext", block_verilog(rx_word::RxWord::new(true))),
         ("monitor", block_verilog(monitor::Monitor::new(false))),
         ("switchbox", block_verilog(switchbox::Switchbox::default())),
+        ("sw_dark", block_verilog(sw_dark::SwDark::default())),
         (
             "switch_ctl",
             block_verilog(switch_ctl::SwitchCtl::default()),

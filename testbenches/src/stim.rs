@@ -32,7 +32,7 @@ pub fn bad_word(lead: Lead, rng: &mut Rng) -> Vec<u8> {
     };
     if lead == Lead::Other {
         // An invalid group that still has an edge: no line-bit error
-        // silences a line for 5 bit times (a receiver takes that as dead).
+        // silences a line for 8 bit times (a receiver takes that as dead).
         c[..5].copy_from_slice(&[0, 0, 1, 0, 0]);
     }
     assert_eq!(lead_of(c[..5].iter().fold(0, |a, &b| a << 1 | b)), lead);

@@ -3,10 +3,16 @@
 //! node's own clock bit for bit (no slip), every edge interval of k bits
 //! lasts 4k ± 1 output half clocks (at most one correction per interval),
 //! and the number of corrections is what the clock offset needs (the buffer
-//! follows the rate, it does not hunt).
+//! follows the rate, it does not hunt); when the input stops the line sends
+//! no edge at the underflow and stays dark long enough for a downstream
+//! receiver to mute, but not for loss of signal.
 
 use merkur_model::line::{nrzi_encode, push_group, DATA_CODES};
-use merkur_rtl::{cdr::Cdr, retime::Retime, verilog::block_verilog};
+use merkur_rtl::{
+    cdr::{Cdr, LOS_SAMPLES, MUTE_SAMPLES},
+    retime::{Retime, DARK_BITS},
+    verilog::block_verilog,
+};
 use merkur_testbenches::{line_samples, sample_words, verilator::Model, Rng, SAMPLES_PER_BIT};
 
 /// What one run showed.
@@ -121,5 +127,55 @@ fn follows_2000_ppm_on_its_own_clock_without_slips() {
             (corrections as f64) >= need * 0.9 - 2.0 && (corrections as f64) <= need * 1.1 + 8.0,
             "seed {seed}: {delta_ppm} ppm: {corrections} corrections, the offset needs {need:.0}"
         );
+    }
+}
+
+#[test]
+fn a_stopped_input_leaves_the_line_dark_then_idles() {
+    let seed = Rng::seed(0x7e8);
+    let mut rng = Rng::new(seed);
+    let spb = SAMPLES_PER_BIT as u64;
+    let (mute, los) = (MUTE_SAMPLES / spb, LOS_SAMPLES / spb);
+    for round in 0..40 {
+        let delta_ppm = [-2000.0, 0.0, 2000.0][round % 3];
+        let mut code = vec![];
+        for _ in 0..40 + rng.below(40) {
+            push_group(&mut code, DATA_CODES[rng.below(16) as usize]);
+        }
+        let levels = nrzi_encode(&code, &mut 0);
+        let phase = rng.below(800) as f64 / 100.0;
+        let mut samples = line_samples(&levels, delta_ppm, phase, 1.0, &mut rng);
+        // The input dies: its last level for 60 bit times.
+        let last = *samples.last().unwrap();
+        samples.extend(std::iter::repeat(last).take(60 * SAMPLES_PER_BIT));
+        let mut cdr = Model::build(&block_verilog(Cdr::default())).unwrap();
+        let mut rt = Model::build(&block_verilog(Retime::default())).unwrap();
+        let out = run(&mut cdr, &mut rt, &samples);
+        let h = &out.halves;
+        let edges: Vec<usize> = (1..h.len()).filter(|&i| h[i] != h[i - 1]).collect();
+        // The longest edge-free stretch of the output, in bit times (4 half clocks).
+        let (at, gap) = edges
+            .windows(2)
+            .map(|w| (w[1] - w[0]) as u64)
+            .enumerate()
+            .max_by_key(|&(_, g)| g)
+            .unwrap();
+        let ctx = format!("seed {seed} (MERKUR_SEED), round {round}, {delta_ppm} ppm");
+        // Dark from the last data edge: the zeros read until the CDR muted,
+        // the underflow without an edge, DARK_BITS more.
+        assert!(
+            gap >= 4 * (mute + DARK_BITS) - 2,
+            "{ctx}: the output was dark for only {gap} half clocks"
+        );
+        assert!(
+            gap + 8 < 4 * los,
+            "{ctx}: the output was dark for {gap} half clocks, near loss of signal"
+        );
+        // Then idles: an edge every bit time to the end.
+        assert!(
+            edges.len() > at + 40 && edges[at + 1..].windows(2).all(|w| w[1] - w[0] <= 5),
+            "{ctx}: no idles after the dark time"
+        );
+        assert_eq!(out.slips, 1, "{ctx}: one underflow");
     }
 }
