@@ -36,9 +36,9 @@
 //! buffer, [`Fwd`]); BSR to BSS ≈ 3.5 bit times (CDR + [`Retime`]).
 //!
 //! ```text
-//! PI ─┐            ┌─ port_rx (INPUT) ── fwd ── OUTPUT ─┐            ┌─ PO
-//!     ├─ switchbox ┤                                     ├─ switchbox ── sw_dark ┤
-//! SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘                └─ SO
+//! PI ─┐            ┌─ port_rx (INPUT) ── fwd ── OUTPUT ─┐            ┌─ sw_dark ─ PO
+//!     ├─ switchbox ┤                                     ├─ switchbox ┤
+//! SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ sw_dark ─ SO
 //! ```
 
 use crate::fwd::Fwd;
