@@ -268,7 +268,7 @@ fn check(path: &Path, line_rate: Option<f64>) -> Result<(), String> {
     for (c, f) in &cfg.faults {
         println!("fault      cycle {c}: {f}");
     }
-    for (a, b, d) in ring::windows(&cfg) {
+    for (a, b, d) in ring::windows(&cfg, &ring::run(&cfg)) {
         println!("window     cycles {a}..={b}: {d}");
     }
     println!("ok");

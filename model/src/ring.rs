@@ -142,6 +142,10 @@ pub enum HeaderRx {
 pub struct Frame {
     /// Header.
     pub hdr: HeaderRx,
+    /// With a bad header: which of its words a receiver reads as bad
+    /// (H0, H1; a header whose words are good but whose fields are not is
+    /// rejected too). A stream controller counts them (§9).
+    pub hdr_bad: (bool, bool),
     /// One entry per slot.
     pub words: Vec<Slot>,
 }
@@ -268,7 +272,16 @@ pub enum EventKind {
     },
     /// The special master's secondary test frame did not return intact.
     SecFail,
+    /// A stream controller saw [`BAD_WORDS`] bad words in a row on this
+    /// receiver (PI or SI): channel failure (§9), at the event's slot.
+    BadWords {
+        /// The receiver.
+        port: Port,
+    },
 }
+
+/// Consecutive bad words that make a channel failure (protocol §9).
+pub const BAD_WORDS: u32 = 8;
 
 /// An event stamped with cycle, position and node.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -335,6 +348,10 @@ pub struct NodeState {
     act_alive: Vec<bool>,
     prev_home_alarm: bool,
     pending: BTreeSet<Pending>,
+    /// Consecutive bad words per receiver (PI, SI), across packets (§9).
+    bad_run: [u32; 2],
+    /// This cycle: a run of bad words reached [`BAD_WORDS`] on PI, SI.
+    cf_words: [bool; 2],
 }
 
 /// The ring.
@@ -439,6 +456,8 @@ impl Ring {
                 act_alive: vec![false; if nc.kind.is_master() { s } else { 0 }],
                 prev_home_alarm: false,
                 pending: BTreeSet::new(),
+                bad_run: [0; 2],
+                cf_words: [false; 2],
             })
             .collect();
         Ring {
@@ -536,6 +555,9 @@ impl Ring {
         let n = self.n();
         let s_count = self.cfg.slots;
         let mut ev = Vec::new();
+        for nd in &mut self.nodes {
+            nd.cf_words = [false; 2];
+        }
 
         // 1. Host writes and interrupt requests land before the cycle.
         for &(wc, node, slot, data) in &self.cfg.host_writes {
@@ -630,6 +652,7 @@ impl Ring {
             };
             let mut frame = Frame {
                 hdr: HeaderRx::Ok(hdr),
+                hdr_bad: (false, false),
                 words: self.store.clone(),
             };
             if !self.nodes[sm].failsafe {
@@ -656,8 +679,20 @@ impl Ring {
                     break;
                 }
                 let (inp, out, bsr, bss) = table1(self.nodes[k].mode);
+                // A run of bad words on the receiver: channel failure at
+                // that word (§9). In mode N the node wraps there (§10), so
+                // its outputs carry nothing of this frame from that word on.
+                let cf_at = if port == inp || (port == bsr && self.nodes[k].mode == Mode::N) {
+                    self.count_bad_words(k, port, &frame, &mut ev)
+                } else {
+                    None
+                };
+                let cut_at = cf_at.filter(|_| self.nodes[k].mode == Mode::N);
                 if port == inp {
                     if k == sm {
+                        if let Some(at) = cut_at {
+                            cut(&mut frame, at);
+                        }
                         returned = Some(frame.clone());
                         break;
                     }
@@ -666,10 +701,16 @@ impl Ring {
                     if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
                         truncate(&mut frame, s);
                     }
+                    if let Some(at) = cut_at {
+                        cut(&mut frame, at);
+                    }
                     fib = self.out_fibre(k, out);
                 } else if port == bsr && self.nodes[k].mode == Mode::N {
                     if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
                         truncate(&mut frame, s);
+                    }
+                    if let Some(at) = cut_at {
+                        cut(&mut frame, at);
                     }
                     fib = self.out_fibre(k, bss);
                 } else {
@@ -703,6 +744,11 @@ impl Ring {
                     break;
                 }
                 let fi = self.fibre_index(fib);
+                let (k, port) = self.dst(fib);
+                if ok && self.nodes[k].up {
+                    // Its good header words end a run of bad words (§9).
+                    self.nodes[k].bad_run[usize::from(port == Port::Si)] = 0;
+                }
                 // A fibre that also carries the (wrapped) DATA frame shows
                 // the frame; the SEC that went ahead of it is listed apart.
                 if matches!(fibres[fi], Carry::Data(_)) {
@@ -710,7 +756,6 @@ impl Ring {
                 } else {
                     fibres[fi] = Carry::Sec { ok };
                 }
-                let (k, port) = self.dst(fib);
                 if !self.nodes[k].up || cut_node.iter().any(|(nd, _)| *nd == k) {
                     break;
                 }
@@ -746,6 +791,8 @@ impl Ring {
                 let ack = self.carries_tst(self.in_fibre(k, bsr));
                 let fi = self.fibre_index(f);
                 fibres[fi] = Carry::Tst { ack };
+                let (r, port) = self.dst(f);
+                self.nodes[r].bad_run[usize::from(port == Port::Si)] = 0;
             }
         }
 
@@ -851,6 +898,10 @@ impl Ring {
                             (FlipTarget::H1, Rx::Ok(b), _) => (other, b),
                             _ => {
                                 frame.hdr = HeaderRx::Bad;
+                                // H0 bad (the receiver stops there), or H0
+                                // good and H1 bad.
+                                frame.hdr_bad =
+                                    (t == FlipTarget::H0 && !matches!(r, Rx::Ok(_)), true);
                                 continue;
                             }
                         };
@@ -912,6 +963,63 @@ impl Ring {
             }
         }
         true
+    }
+
+    /// A stream controller's run of bad words (§9) on node `k`'s receiver
+    /// `port` over the words of `frame`: a good word ends it, VOID and
+    /// missing words leave it, a rejected header ends the packet. Returns
+    /// where the node's outputs lose the frame when the run reaches
+    /// [`BAD_WORDS`] in an armed node (a header word, or a slot), which then
+    /// reports channel failure at the end of the cycle.
+    fn count_bad_words(
+        &mut self,
+        k: usize,
+        port: Port,
+        frame: &Frame,
+        ev: &mut Vec<Event>,
+    ) -> Option<At> {
+        let p = usize::from(port == Port::Si);
+        let mut run = self.nodes[k].bad_run[p];
+        let mut hit = None;
+        let mut bump = |run: &mut u32, at: At| {
+            if *run < BAD_WORDS {
+                *run += 1;
+                if *run == BAD_WORDS && hit.is_none() {
+                    hit = Some(at);
+                }
+            }
+        };
+        match frame.hdr {
+            HeaderRx::NoCs => return None,
+            HeaderRx::Bad => match frame.hdr_bad {
+                (true, _) => bump(&mut run, At::Hdr),
+                (false, h1) => {
+                    run = 0;
+                    if h1 {
+                        bump(&mut run, At::Hdr);
+                    }
+                }
+            },
+            HeaderRx::Ok(_) => {
+                run = 0;
+                for (s, w) in frame.words.iter().enumerate() {
+                    match w {
+                        Slot::Data(_) => run = 0,
+                        Slot::Bad(_) => bump(&mut run, At::Slot(s)),
+                        Slot::Void | Slot::Missing => {}
+                    }
+                }
+            }
+        }
+        self.nodes[k].bad_run[p] = run;
+        let at = hit?;
+        if !self.nodes[k].armed {
+            return None;
+        }
+        self.nodes[k].cf_words[p] = true;
+        let c = self.cycle;
+        self.event(ev, c, at, k, EventKind::BadWords { port });
+        Some(at)
     }
 
     fn count_errors(&mut self, k: usize, frame: &Frame) {
@@ -1183,8 +1291,11 @@ impl Ring {
                 let (inp, _, bsr, _) = table1(mode);
                 let fi = self.in_fibre(k, inp);
                 let fb = self.in_fibre(k, bsr);
-                let in_fail = !self.lit(fi) || (mode == Mode::N && self.carries_tst(fi));
-                let bsr_fail = !self.lit(fb) || (mode == Mode::N && self.carries_tst(fb));
+                let words = |p: Port| self.nodes[k].cf_words[usize::from(p == Port::Si)];
+                let in_fail =
+                    !self.lit(fi) || (mode == Mode::N && self.carries_tst(fi)) || words(inp);
+                let bsr_fail =
+                    !self.lit(fb) || (mode == Mode::N && self.carries_tst(fb)) || words(bsr);
                 let new = match mode {
                     Mode::N if in_fail => Some(Mode::Wu),
                     Mode::N if bsr_fail => Some(Mode::Wd),
@@ -1201,6 +1312,16 @@ impl Ring {
                     self.nodes[k].mode = m;
                     changed = true;
                 }
+            }
+        }
+        // A wrap that a run of bad words caused is on a link that still
+        // carries light: the two nodes hear each other's TST and reintegrate
+        // as after a repair (§12).
+        for (k, &from) in start.iter().enumerate() {
+            let to = self.nodes[k].mode;
+            if from == Mode::N && to != Mode::N && self.nodes[k].cf_words.contains(&true) {
+                let link = if to == Mode::Wu { (k + n - 1) % n } else { k };
+                self.repaired[link].get_or_insert(c);
             }
         }
         // Reintegration of links repaired before this cycle.
@@ -1232,6 +1353,11 @@ impl Ring {
             if from != to {
                 self.event(ev, c, At::End, k, EventKind::Mode { from, to });
                 let nd = &mut self.nodes[k];
+                if (from == Mode::Wu) != (to == Mode::Wu) {
+                    // INPUT and BSR move to other lines: a run of bad
+                    // words belongs to the old ones (§9).
+                    nd.bad_run = [0; 2];
+                }
                 nd.pending
                     .retain(|p| prio(p.reason) != prio(reason::RECONFIG_N));
                 let r = reason::reconfig(to);
@@ -1240,6 +1366,18 @@ impl Ring {
                     reason: r,
                 });
             }
+        }
+    }
+}
+
+/// A node wraps at `at` inside `frame` (§10): from there its output carries
+/// nothing of it; at a header word, not even the start delimiter.
+fn cut(frame: &mut Frame, at: At) {
+    match at {
+        At::Slot(s) => truncate(frame, s),
+        _ => {
+            frame.hdr = HeaderRx::NoCs;
+            truncate(frame, 0);
         }
     }
 }
@@ -1260,22 +1398,58 @@ fn rx_slot(r: Rx) -> Slot {
 
 /// Recovery windows the spec promises (docs/protocol.md §13): for each
 /// structural fault at cycle c, cycles c..=c+3 (break, kill) or c..=c+4
-/// (repair). Bit flips have none. Returned as (first, last, description),
-/// clipped to the run.
-pub fn windows(cfg: &Config) -> Vec<(u32, u32, String)> {
+/// (repair); c..=c+5 for a channel failure that a run of bad words caused
+/// (`records`: the run's cycles; it wraps the link and, the fibres being
+/// lit, reintegrates it). Bit flips have none. Returned as
+/// (first, last, description), clipped to the run, in cycle order.
+pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)> {
     let last = cfg.cycles.saturating_sub(1);
-    cfg.faults
+    let n = cfg.nodes.len();
+    let mut v: Vec<(u32, u32, String)> = cfg
+        .faults
         .iter()
         .filter_map(|(c, f)| {
             let len = match f {
                 Fault::Break { .. } | Fault::Kill { .. } => 3,
-                Fault::Repair { .. } => 4,
+                Fault::Repair { .. } => REPAIR_WINDOW,
                 Fault::Flip { .. } => return None,
             };
             Some((*c, (*c + len).min(last), f.to_string()))
         })
-        .collect()
+        .collect();
+    for e in records.iter().flat_map(|r| &r.events) {
+        if let EventKind::BadWords { port } = e.kind {
+            let fibre = match port {
+                Port::Pi => Fibre::P((e.node + n - 1) % n),
+                _ => Fibre::S(e.node),
+            };
+            v.push((
+                e.cycle,
+                (e.cycle + BAD_WORDS_WINDOW).min(last),
+                format!(
+                    "bad words on {fibre} (node {} {})",
+                    e.node,
+                    if port == Port::Pi { "PI" } else { "SI" }
+                ),
+            ));
+        }
+    }
+    v.sort_by_key(|w| w.0);
+    v
 }
+
+/// Cycles after a repair's first cycle that its recovery window covers
+/// (protocol §13).
+pub const REPAIR_WINDOW: u32 = 4;
+
+/// Cycles after a bad-word channel failure's cycle that its recovery window
+/// covers (protocol §13): one more than a repair's, as the wrap happens
+/// inside that cycle's frame (a repaired fibre is lit at the end of its
+/// cycle) and the reintegration behind it — the frame the WU end loses
+/// while the frame that went the long way round still arrives, and the
+/// RECONFIG(N) alarm the alternation rule then holds back a cycle — ends a
+/// cycle later than the model's.
+pub const BAD_WORDS_WINDOW: u32 = 5;
 
 /// Runs a whole scenario.
 pub fn run(cfg: &Config) -> Vec<CycleRecord> {

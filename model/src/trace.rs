@@ -2,7 +2,7 @@
 //! scenario, one block per cycle, diff-able line by line.
 
 use crate::config::Config;
-use crate::ring::{self, At, Carry, CycleRecord, EventKind, HeaderRx, Slot};
+use crate::ring::{self, At, Carry, CycleRecord, EventKind, HeaderRx, Port, Slot};
 use crate::scenario::Kind;
 use sha2::{Digest, Sha256};
 use std::fmt::Write;
@@ -59,6 +59,9 @@ fn event_text(k: &EventKind) -> String {
         EventKind::AliveLost { slot } => format!("alive-lost s{slot}"),
         EventKind::AliveRestored { slot } => format!("alive-ok s{slot}"),
         EventKind::SecFail => "sec-fail".to_string(),
+        EventKind::BadWords { port } => {
+            format!("bad-words {}", if *port == Port::Pi { "pi" } else { "si" })
+        }
     }
 }
 
@@ -87,7 +90,7 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
     let _ = writeln!(o, "# kinds {}", kinds.join(","));
     let writers: Vec<String> = cfg.writer.iter().map(|w| w.to_string()).collect();
     let _ = writeln!(o, "# writers {}", writers.join(","));
-    for (a, b, d) in ring::windows(cfg) {
+    for (a, b, d) in ring::windows(cfg, records) {
         let _ = writeln!(o, "window {a} {b} {d}");
     }
     for r in records {

@@ -9,7 +9,7 @@
 //! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::rx_word::RxWord`] |
 //! | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
-//! | `i_flush` | in | 1 | clock | as [`Monitor`] |
+//! | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 //! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
 //! | `o_los`, `o_cf`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
 //! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
@@ -141,6 +141,7 @@ impl Logic for PortRx {
         self.ctrl.i_data.next = self.mon.o_data.val();
         self.ctrl.i_ptype.next = self.mon.o_ptype.val();
         self.ctrl.i_tst_fail.next = self.i_tst_fail.val();
+        self.ctrl.i_flush.next = self.i_flush.val();
         self.o_start.next = self.mon.o_start.val();
         self.o_inpkt.next = self.mon.o_inpkt.val();
         self.o_wvalid.next = self.mon.o_wvalid.val();

@@ -35,9 +35,12 @@
 //! boundary every 4 DDR halves between them — so the receiver sees exactly
 //! the single line-bit error the model applies) and a **monitor** (clock recovery,
 //! framer, word decoder at the nominal rate) whose DATA words are captured
-//! per cycle: entry `(cyc & 3) · CAP + slot` holds `{CYC[2:0], status[1:0],
-//! ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3 VOID; a slot
-//! whose entry has another CYC was missing in that cycle; entries
+//! per cycle: entry `(cyc & 3) · CAP + slot` holds `{EPOCH[7:0], CYC[2:0],
+//! status[1:0], ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3
+//! VOID and EPOCH the special master's frame count (low 8 bits) when it was
+//! written; a slot whose entry has another CYC, or an EPOCH that is not
+//! 0…4 frames after the cycle's (left from 8 cycles before), was missing
+//! in that cycle; entries
 //! `4 · CAP + 2 (cyc & 3) + {0, 1}` hold the frame's H0 and H1.
 //!
 //! **Ports.**
@@ -387,6 +390,14 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             ),
         );
     }
+    // Capture entries carry the special master's frame count when written
+    // (its low 8 bits), so that an entry left from 8 cycles before (CYC has
+    // 3 bits) is not read as this cycle's.
+    let sm = kinds
+        .iter()
+        .position(|&k| k == Kind::SpecialMaster)
+        .expect("a ring has a special master");
+    w(&mut v, &format!("    wire [7:0] epoch = cycles_{sm}[7:0];"));
     // Fibres: line levels, fault points, monitors, capture.
     for f in 0..nf {
         let (src, port, name) = if f < n {
@@ -431,18 +442,18 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
                  \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
                  \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_void(m_void_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
-                 \x20   reg [22:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 23'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
+                 \x20   reg [30:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 31'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
                  \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
                  \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
                  \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            lslot_{f} <= 12'hfff;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
-                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
-                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
+                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
+                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
-                 \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{hdr_cyc_{f}, mstat_{f}, m_alarm_{f}, m_alive_{f}, m_data_{f}}};\n\
+                 \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{epoch, hdr_cyc_{f}, mstat_{f}, m_alarm_{f}, m_alive_{f}, m_data_{f}}};\n\
                  \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
                 c_brk = cfg::BREAK,
                 c_flip = cfg::FLIP,
@@ -506,7 +517,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     for f in 0..nf {
         w(
             &mut v,
-            &format!("            16'd{f}: o_cap = {{9'd0, cap_{f}[i_cap_idx]}};"),
+            &format!("            16'd{f}: o_cap = {{1'b0, cap_{f}[i_cap_idx]}};"),
         );
     }
     w(

@@ -22,9 +22,12 @@
 //!
 //! Secondary relay: a DATA frame arriving on SI (the ring is wrapped) is
 //! passed on to SO like in every node in mode N, held back [`RELAY_BITS`]
-//! bits until its H1 shows it is DATA (so the SM's own SEC coming back is
-//! not sent round again); a SEC is sent at the cycle's start only when the
-//! last returned frame had RWC = 0 (protocol §8).
+//! bits until its H1 shows it is DATA; every other packet is dropped there
+//! (the SM's own SEC coming back, the remains of a TST that a node in mode
+//! N cut, a fragment), so nothing but frames circulates on the secondary
+//! ring, a closed loop through the pass-throughs; a SEC is sent at the
+//! cycle's start only when the last returned frame had RWC = 0 (protocol
+//! §8).
 //!
 //! Switchbox: like every node ([`crate::slave`]; protocol §10) it wraps
 //! when its INPUT or BSR fails (frames then leave on OUTPUT and return on
@@ -686,10 +689,12 @@ impl Logic for SpecialMaster {
             if self.rcd_run.q.val() {
                 self.rcd.d.next = self.rcd.q.val() - 1;
                 if self.rcd.q.val() == 1 {
+                    // Relayed only when its H1 showed DATA: anything else
+                    // (the SM's own SEC, a TST's remains, a fragment)
+                    // would otherwise go round the secondary ring, which
+                    // is a closed loop in a healthy ring, for ever.
                     self.rcd_run.d.next = false;
-                    if self.rdata.q.val() {
-                        self.relay.d.next = true;
-                    }
+                    self.relay.d.next = self.rdata.q.val();
                 }
             }
         }

@@ -7,7 +7,10 @@
 //! Channel failure `o_cf` is any of:
 //! - loss of signal (no line transition for 24 bit times, from the CDR);
 //! - 8 consecutive bad words (parity or code errors; VOID words are not bad),
-//!   until the next good word;
+//!   until the next good word, or until the switchbox moves the input to
+//!   another line (`i_flush`: a run is a property of one channel; carried
+//!   over, it would make a node that wrapped because of it fail safe as soon
+//!   as the settling time after the change is over);
 //! - a test signal while `i_tst_fail` (mode N on INPUT: a TST where DATA is
 //!   expected means the upstream neighbour has wrapped).
 //!
@@ -21,6 +24,7 @@
 //! | `i_los` | in | 1 | clock | loss of signal |
 //! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_data`, `i_ptype` | in | | clock | word outputs of the receive chain |
 //! | `i_tst_fail` | in | 1 | static | a test signal counts as channel failure |
+//! | `i_flush` | in | 1 | clock | the input moved to another line: the run of bad words restarts |
 //! | `o_cf` | out | 1 | clock | channel failure |
 //! | `o_tst` | out | 1 | clock | test signal |
 //! | `o_ack` | out | 1 | clock | ACK of the last TST |
@@ -61,6 +65,8 @@ pub struct StreamCtrl {
     pub i_ptype: Signal<In, Bits<2>>,
     /// A test signal counts as channel failure.
     pub i_tst_fail: Signal<In, Bit>,
+    /// The input moved to another line.
+    pub i_flush: Signal<In, Bit>,
     /// Channel failure.
     pub o_cf: Signal<Out, Bit>,
     /// Test signal.
@@ -89,6 +95,7 @@ impl Default for StreamCtrl {
             i_data: Default::default(),
             i_ptype: Default::default(),
             i_tst_fail: Default::default(),
+            i_flush: Default::default(),
             o_cf: Default::default(),
             o_tst: Default::default(),
             o_ack: Default::default(),
@@ -118,6 +125,9 @@ impl Logic for StreamCtrl {
                 self.h0.d.next = self.i_data.val();
             }
         }
+        if self.i_flush.val() {
+            self.bad.d.next = 0.into();
+        }
         // A good TST packet: H1 completes good, type 10, H1 = NOT H0.
         if self.hold.q.val() != 0 {
             self.hold.d.next = self.hold.q.val() - 1;
@@ -135,7 +145,7 @@ impl Logic for StreamCtrl {
             self.hold.d.next = self.hold_start.val();
         }
         self.cf.d.next = self.i_los.val()
-            | (self.bad.q.val() == self.bad_max.val())
+            | ((self.bad.q.val() == self.bad_max.val()) & !self.i_flush.val())
             | (self.tst.q.val() & self.i_tst_fail.val());
         self.o_cf.next = self.cf.q.val();
         self.o_tst.next = self.tst.q.val();

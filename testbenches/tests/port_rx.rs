@@ -3,7 +3,8 @@
 //! ±1500 ppm; channel failure within 24 bit times of a dark line; TST packets
 //! give the test signal (and channel failure only where TST means failure),
 //! which ends 130 bit times after the last; 8 consecutive bad words are a
-//! channel failure, 7 are not.
+//! channel failure, 7 are not, and the failure lasts until a good word or
+//! until the input moves to another line.
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::Header;
@@ -48,6 +49,7 @@ struct Probe {
     m: Model,
     clk: usize,
     smp: usize,
+    flush: usize,
     cf: usize,
     tst: usize,
     ack: usize,
@@ -58,9 +60,10 @@ impl Probe {
         let mut m = Model::build(&block_verilog(PortRx::new(false))).unwrap();
         m.set(m.port("i_slots_m1"), SLOTS as u64 - 1);
         m.set(m.port("i_tst_fail"), tst_fail as u64);
-        let (clk, smp, cf, tst, ack) = (
+        let (clk, smp, flush, cf, tst, ack) = (
             m.port("clock"),
             m.port("i_samples"),
+            m.port("i_flush"),
             m.port("o_cf"),
             m.port("o_tst"),
             m.port("o_ack"),
@@ -69,6 +72,7 @@ impl Probe {
             m,
             clk,
             smp,
+            flush,
             cf,
             tst,
             ack,
@@ -205,5 +209,42 @@ fn eight_bad_words_are_a_channel_failure_seven_are_not() {
             "seed {seed}: {n} bad words"
         );
         assert!(!out.last().unwrap().0, "the next good word ends it");
+    }
+}
+
+/// A run of bad words belongs to one line: when the switchbox moves the
+/// input to another (`i_flush`), the failure it caused ends and the count
+/// restarts; without the move it lasts until the next good word.
+#[test]
+fn a_move_to_another_line_ends_a_bad_word_failure() {
+    let seed = Rng::seed(0xf105);
+    let mut rng = Rng::new(seed);
+    for moved in [false, true] {
+        let mut code = vec![];
+        idles(&mut code, 8);
+        data_frame(&mut code, &mut rng, 0, 0);
+        idles(&mut code, 6);
+        // The frame ends in 8 bad words; idles follow.
+        let flips = data_frame(&mut code, &mut rng, SLOTS - 8, 8);
+        idles(&mut code, 40);
+        let pairs = to_pairs(&code, &flips, 400.0, &mut rng);
+        let mut p = Probe::new(false);
+        let out = p.run(&pairs[..pairs.len() - 120]);
+        assert!(
+            out.last().unwrap().0,
+            "seed {seed}: 8 bad words fail the channel"
+        );
+        if moved {
+            p.m.set(p.flush, 1);
+            p.run(&pairs[pairs.len() - 120..pairs.len() - 119]);
+            p.m.set(p.flush, 0);
+        }
+        let rest = p.run(&pairs[pairs.len() - 119..]);
+        let failed = rest.iter().skip(2).filter(|&&(cf, _, _)| cf).count();
+        assert_eq!(
+            failed,
+            if moved { 0 } else { rest.len() - 2 },
+            "seed {seed}, moved {moved}: clocks of channel failure after the run"
+        );
     }
 }

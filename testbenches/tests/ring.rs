@@ -9,7 +9,7 @@ use merkur_model::ring::{self, Slot};
 use merkur_rtl::master::Master;
 use merkur_rtl::mdb::{ST_RUN, WB_CFG, WB_STATUS};
 use merkur_rtl::verilog::block_verilog;
-use merkur_testbenches::ring_sim::{run, Options};
+use merkur_testbenches::ring_sim::{run, Options, Report};
 use merkur_testbenches::wishbone::Wishbone;
 use merkur_testbenches::{repo_root, verilator::Model, Rng};
 
@@ -18,15 +18,13 @@ fn load(name: &str) -> config::Config {
     config::load(name, &text).unwrap()
 }
 
-fn passes(name: &str) {
-    let seed = Rng::seed(0x7105);
-    let cfg = load(name);
-    let recs = ring::run(&cfg);
+/// Runs `cfg` in RTL against its model records; panics on any mismatch.
+fn agrees(name: &str, cfg: &config::Config, recs: &[ring::CycleRecord], seed: u64) -> Report {
     let opts = Options {
         seed,
         ..Default::default()
     };
-    let rep = run(&cfg, &recs, &opts).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let rep = run(cfg, recs, &opts).unwrap_or_else(|e| panic!("{name}: {e}"));
     let first: Vec<String> = rep
         .mismatches
         .iter()
@@ -38,6 +36,14 @@ fn passes(name: &str) {
         "{name}, seed {seed} (MERKUR_SEED): {} mismatches: {first:#?}",
         rep.mismatches.len()
     );
+    rep
+}
+
+fn passes(name: &str) {
+    let seed = Rng::seed(0x7105);
+    let cfg = load(name);
+    let recs = ring::run(&cfg);
+    let rep = agrees(name, &cfg, &recs, seed);
     let words = (cfg.nodes.len() * 2) as u64; // at least the headers of P fibres
     assert!(
         rep.words > words * cfg.cycles as u64,
@@ -131,9 +137,9 @@ fn ring8_failsafe_request_agrees_with_the_model() {
 #[test]
 fn after_a_window_the_comparison_is_exact() {
     let cfg = load("ring8_break_primary.toml");
-    let (_, z, _) = ring::windows(&cfg)[0].clone();
-    let c = z as usize + 2;
     let mut recs = ring::run(&cfg);
+    let (_, z, _) = ring::windows(&cfg, &recs)[0].clone();
+    let c = z as usize + 2;
     for rec in &mut recs[c..] {
         rec.nodes[4].perr += 1;
     }
@@ -165,6 +171,91 @@ fn after_a_window_the_comparison_is_exact() {
 #[test]
 fn ring100_agrees_with_the_model() {
     passes("ring100.toml");
+}
+
+/// A run of bad words in a healthy ring (protocol §9),
+/// `tb-data/ring32_bad_words.toml`: eight single-bit errors on the first
+/// eight fibres of the 32-node ring, each in another of the slots 20…27
+/// (slots that nobody upstream of node 8 rewrites), make node 8's primary
+/// stream controller fail at slot 27 of that frame. Node 8 wraps (WU), node
+/// 7 follows on its TST (WD), and as the fibres carry light the two
+/// reintegrate; model and RTL agree through the window, and the RTL does
+/// not take the old line's run for a second fault once wrapped.
+#[test]
+fn a_run_of_bad_words_wraps_a_link_that_then_reintegrates() {
+    use merkur_model::config::{Fault, Fibre, FlipTarget};
+    use merkur_model::line::word_code_bits;
+    use merkur_model::ring::{Carry, EventKind, Mode, Port};
+    let name = "ring32_bad_words.toml";
+    let cfg = load(name);
+    let c = 2u32;
+    // Every flip is on a line bit that starts with an edge and is followed
+    // by one, which the harness places exactly (docs/architecture.md).
+    let mut clean = cfg.clone();
+    clean.faults.clear();
+    let clean = ring::run(&clean);
+    for (fc, f) in &cfg.faults {
+        let &Fault::Flip {
+            fibre: Fibre::P(j),
+            target: FlipTarget::Slot(s),
+            bit,
+        } = f
+        else {
+            panic!("{name}: only slot flips on primary fibres")
+        };
+        let Carry::Data(fr) = &clean[*fc as usize].fibres[j] else {
+            panic!("P{j} carries the frame")
+        };
+        let Slot::Data(w) = &fr.words[s] else {
+            panic!("slot {s} is good on P{j}")
+        };
+        let code = word_code_bits(w, cfg.ext);
+        let b = bit as usize;
+        assert!(code[b] == 1 && code[b + 1] == 1, "{name}: P{j} bit {b}");
+    }
+    let recs = ring::run(&cfg);
+    let events: Vec<(u32, usize, EventKind)> = recs
+        .iter()
+        .flat_map(|r| &r.events)
+        .filter(|e| matches!(e.kind, EventKind::BadWords { .. } | EventKind::Mode { .. }))
+        .map(|e| (e.cycle, e.node, e.kind.clone()))
+        .collect();
+    let (n, wu, wd) = (Mode::N, Mode::Wu, Mode::Wd);
+    assert_eq!(
+        events,
+        [
+            (c, 8, EventKind::BadWords { port: Port::Pi }),
+            (c, 7, EventKind::Mode { from: n, to: wd }),
+            (c, 8, EventKind::Mode { from: n, to: wu }),
+            (c + 1, 7, EventKind::Mode { from: wd, to: n }),
+            (c + 1, 8, EventKind::Mode { from: wu, to: n }),
+        ],
+        "the model's channel failure, wrap and reintegration"
+    );
+    assert!(recs.last().unwrap().nodes.iter().all(|x| !x.failsafe));
+    let wins: Vec<(u32, u32)> = ring::windows(&cfg, &recs)
+        .iter()
+        .map(|w| (w.0, w.1))
+        .collect();
+    assert_eq!(wins, [(c, c + ring::BAD_WORDS_WINDOW)]);
+    assert!(
+        c + ring::BAD_WORDS_WINDOW + 2 < cfg.cycles,
+        "exact cycles after the window"
+    );
+    let rep = agrees(name, &cfg, &recs, Rng::seed(0xbad9));
+    // The RTL wrapped the link and reintegrated it: node 8 WU then N, node
+    // 7 WD then N, nobody else changed, nobody failed safe.
+    let modes = |k: usize| -> Vec<u64> {
+        rep.mode_ticks
+            .iter()
+            .filter(|m| m.0 == k)
+            .map(|m| m.2)
+            .collect()
+    };
+    assert_eq!(modes(8), [1, 0], "node 8: {:?}", rep.mode_ticks);
+    assert_eq!(modes(7), [2, 0], "node 7: {:?}", rep.mode_ticks);
+    assert_eq!(rep.mode_ticks.len(), 4, "{:?}", rep.mode_ticks);
+    assert!(rep.rows.iter().all(|r| !r.failsafe), "no failsafe in RTL");
 }
 
 /// The checker can fail: one slot of one fibre changed in the expectation

@@ -36,6 +36,7 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
                     hop: 1,
                     ..Header::default()
                 }),
+                hdr_bad: (false, false),
                 words: (0..SLOTS)
                     .map(|s| {
                         Slot::Data(Word {

@@ -1,0 +1,154 @@
+//! The special master's secondary relay in Verilator (protocol §8): in mode
+//! N it passes a DATA frame that arrives on SI (a ring wrapped elsewhere)
+//! on to SO, and nothing else — not its own SEC coming back, not a TST, not
+//! the remains of a TST that a node in mode N cut after its H0. In a
+//! healthy ring the secondary fibres form a closed loop through the
+//! pass-throughs; a packet the relay let through after a frame went round
+//! it for ever (found by the campaign: a repair on a 100-node ring, where
+//! such remains made the last node fail safe three laps later).
+
+use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
+use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
+use merkur_rtl::{monitor::Monitor, special_master::SpecialMaster, verilog::block_verilog};
+use merkur_testbenches::stim::{frame_code, tst_code, PacketReader, Seen};
+use merkur_testbenches::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};
+
+const SLOTS: usize = 4;
+
+fn idle(code: &mut Vec<u8>, groups: usize) {
+    (0..groups).for_each(|_| push_group(code, CODE_I));
+}
+
+/// J K and two header words, then idles.
+fn header_only(code: &mut Vec<u8>, h0: u16, h1: Option<u16>) {
+    push_group(code, CODE_J);
+    push_group(code, CODE_K);
+    for d in std::iter::once(h0).chain(h1) {
+        code.extend(word_code_bits(
+            &Word {
+                data: d,
+                ..Word::default()
+            },
+            false,
+        ));
+    }
+    idle(code, 8);
+}
+
+fn data_frame(code: &mut Vec<u8>, cyc: u8, rng: &mut Rng) -> (u16, Vec<Seen>) {
+    let f = Frame {
+        hdr: HeaderRx::Ok(Header {
+            rwc: true,
+            cyc,
+            hop: 40,
+            ..Header::default()
+        }),
+        hdr_bad: (false, false),
+        words: (0..SLOTS)
+            .map(|s| {
+                Slot::Data(Word {
+                    data: 0x1111 * (s as u16 + 1) + cyc as u16,
+                    alive: s % 2 == 0,
+                    ..Word::default()
+                })
+            })
+            .collect(),
+    };
+    frame_code(code, &f, SLOTS, rng);
+    idle(code, 8);
+    let HeaderRx::Ok(h) = f.hdr else {
+        unreachable!()
+    };
+    let words = f
+        .words
+        .iter()
+        .map(|w| match w {
+            Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm),
+            _ => unreachable!(),
+        })
+        .collect();
+    (h.h1().data, words)
+}
+
+#[test]
+fn the_secondary_relay_passes_frames_only() {
+    let seed = Rng::seed(0x5e1a);
+    let mut rng = Rng::new(seed);
+    // SI: frame, SEC, TST, the remains of a cut TST, frame, the remains
+    // again; every packet well apart.
+    let mut si = vec![];
+    idle(&mut si, 40);
+    let mut sent = vec![data_frame(&mut si, 3, &mut rng)];
+    header_only(&mut si, 0x4003, Some(!0x4003)); // SEC, CYC 3
+    tst_code(&mut si, false, 85);
+    idle(&mut si, 8);
+    header_only(&mut si, 0x9055, None); // TST of node 85 cut after H0
+    sent.push(data_frame(&mut si, 4, &mut rng));
+    header_only(&mut si, 0x8055, None);
+    header_only(&mut si, 0x4004, Some(!0x4004));
+    idle(&mut si, 60);
+    let si = sample_words(&line_samples(
+        &nrzi_encode(&si, &mut 0),
+        300.0,
+        0.7,
+        0.4,
+        &mut rng,
+    ));
+    let pi = sample_words(&line_samples(
+        &nrzi_encode(&vec![1; si.len() / 2 + 8], &mut 0),
+        0.0,
+        0.3,
+        0.4,
+        &mut rng,
+    ));
+
+    let mut m = Model::build(&block_verilog(SpecialMaster::default())).unwrap();
+    let mut mon = Model::build(&block_verilog(Monitor::new(false))).unwrap();
+    for (name, v) in [
+        ("i_address", 0),
+        ("i_slots_m1", SLOTS as u64 - 1),
+        ("i_period", 400),
+        ("i_cs_timeout", 1600),
+    ] {
+        let i = m.port(name);
+        m.set(i, v);
+    }
+    let i = mon.port("i_slots_m1");
+    mon.set(i, SLOTS as u64 - 1);
+    let (clk, ipi, isi, oso, omode) = (
+        m.port("clock"),
+        m.port("i_pi"),
+        m.port("i_si"),
+        m.port("o_so"),
+        m.port("o_mode"),
+    );
+    let (mclk, msmp) = (mon.port("clock"), mon.port("i_samples"));
+    let mut so = PacketReader::new(&mon);
+    for t in 0..si.len().min(pi.len()) {
+        m.set(ipi, pi[t]);
+        m.set(isi, si[t]);
+        m.tick(clk);
+        assert_eq!(
+            m.get(omode),
+            0,
+            "seed {seed}: the special master left mode N"
+        );
+        mon.set(msmp, pair_to_samples(m.get(oso)));
+        mon.tick(mclk);
+        so.sample(&mon);
+    }
+    let ctx = format!("seed {seed} (MERKUR_SEED)");
+    // Nothing but the two frames on SO, whole (its own SEC generator is
+    // off: the ring is not running).
+    let got: Vec<(u16, Vec<Seen>)> = so
+        .packets
+        .iter()
+        .map(|(h, w)| (h.get(1).copied().unwrap_or(0xdead), w.clone()))
+        .collect();
+    assert_eq!(
+        got,
+        sent,
+        "{ctx}: SO carried {:x?}",
+        so.packets.iter().map(|p| &p.0).collect::<Vec<_>>()
+    );
+}
