@@ -4,7 +4,7 @@
 //! clock), compared word for word with the model, with a waveform.
 
 use merkur_model::config::{self, Config};
-use merkur_model::ring::{self, CycleRecord, EventKind, Port};
+use merkur_model::ring::{self, CycleRecord, EventKind};
 use merkur_model::scenario::Kind;
 
 /// The embedded scenario (also in tb-data/, where its golden trace lives).
@@ -100,7 +100,7 @@ pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
                 EventKind::BadWords { port } => format!(
                     "{} bad words in a row on {}: channel failure",
                     merkur_model::ring::BAD_WORDS,
-                    if *port == Port::Pi { "PI" } else { "SI" }
+                    port.name()
                 ),
             };
             println!("            node {} at {}: {what}", e.node, e.at);

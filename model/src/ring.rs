@@ -56,6 +56,27 @@ pub enum Port {
     So,
 }
 
+impl Port {
+    /// Name as in the paper: PI, PO, SI, SO.
+    pub fn name(self) -> &'static str {
+        match self {
+            Port::Pi => "PI",
+            Port::Po => "PO",
+            Port::Si => "SI",
+            Port::So => "SO",
+        }
+    }
+}
+
+/// Fibre entering node `k` of an `n`-node ring at port `p` (PI or SI).
+fn fibre_into(n: usize, k: usize, p: Port) -> Fibre {
+    match p {
+        Port::Pi => Fibre::P((k + n - 1) % n),
+        Port::Si => Fibre::S(k),
+        _ => unreachable!("outputs have no incoming fibre"),
+    }
+}
+
 /// Table 1: (INPUT, OUTPUT, BSR, BSS) of a mode.
 pub fn table1(m: Mode) -> (Port, Port, Port, Port) {
     match m {
@@ -488,12 +509,7 @@ impl Ring {
 
     /// Fibre entering node `k` at port `p` (PI or SI).
     pub fn in_fibre(&self, k: usize, p: Port) -> Fibre {
-        let n = self.n();
-        match p {
-            Port::Pi => Fibre::P((k + n - 1) % n),
-            Port::Si => Fibre::S(k),
-            _ => unreachable!("outputs have no incoming fibre"),
-        }
+        fibre_into(self.n(), k, p)
     }
 
     /// Sender node and port of a fibre.
@@ -1419,17 +1435,14 @@ pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)>
         .collect();
     for e in records.iter().flat_map(|r| &r.events) {
         if let EventKind::BadWords { port } = e.kind {
-            let fibre = match port {
-                Port::Pi => Fibre::P((e.node + n - 1) % n),
-                _ => Fibre::S(e.node),
-            };
             v.push((
                 e.cycle,
                 (e.cycle + BAD_WORDS_WINDOW).min(last),
                 format!(
-                    "bad words on {fibre} (node {} {})",
+                    "bad words on {} (node {} {})",
+                    fibre_into(n, e.node, port),
                     e.node,
-                    if port == Port::Pi { "PI" } else { "SI" }
+                    port.name()
                 ),
             ));
         }

@@ -2,7 +2,7 @@
 //! scenario, one block per cycle, diff-able line by line.
 
 use crate::config::Config;
-use crate::ring::{self, At, Carry, CycleRecord, EventKind, HeaderRx, Port, Slot};
+use crate::ring::{self, At, Carry, CycleRecord, EventKind, HeaderRx, Slot};
 use crate::scenario::Kind;
 use sha2::{Digest, Sha256};
 use std::fmt::Write;
@@ -59,9 +59,7 @@ fn event_text(k: &EventKind) -> String {
         EventKind::AliveLost { slot } => format!("alive-lost s{slot}"),
         EventKind::AliveRestored { slot } => format!("alive-ok s{slot}"),
         EventKind::SecFail => "sec-fail".to_string(),
-        EventKind::BadWords { port } => {
-            format!("bad-words {}", if *port == Port::Pi { "pi" } else { "si" })
-        }
+        EventKind::BadWords { port } => format!("bad-words {}", port.name().to_lowercase()),
     }
 }
 

@@ -27,10 +27,10 @@ use crate::enc4b5b::Enc4b5b;
 use crate::nrzi_tx::NrziTx;
 use rust_hdl::prelude::*;
 
-/// TST generator.
 // The lead-in is the switchbox's dark time (a literal in `update`).
 const _: () = assert!(crate::sw_dark::DARK_CLOCKS == 24);
 
+/// TST generator.
 #[derive(LogicBlock, Default)]
 pub struct TstTx {
     /// Core clock.
@@ -148,7 +148,7 @@ impl Logic for TstTx {
             }
         }
         if self.i_restart.val() {
-            // crate::sw_dark::DARK_CLOCKS (checked below).
+            // crate::sw_dark::DARK_CLOCKS (checked at the top of the file).
             self.dark.d.next = 24.into();
             self.gnum.d.next = 12.into();
         }

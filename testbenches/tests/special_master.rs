@@ -10,7 +10,7 @@
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
 use merkur_rtl::{monitor::Monitor, special_master::SpecialMaster, verilog::block_verilog};
-use merkur_testbenches::stim::{frame_code, tst_code, PacketReader, Seen};
+use merkur_testbenches::stim::{frame_code, seen, tst_code, PacketReader, Seen};
 use merkur_testbenches::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};
 
 const SLOTS: usize = 4;
@@ -59,15 +59,7 @@ fn data_frame(code: &mut Vec<u8>, cyc: u8, rng: &mut Rng) -> (u16, Vec<Seen>) {
     let HeaderRx::Ok(h) = f.hdr else {
         unreachable!()
     };
-    let words = f
-        .words
-        .iter()
-        .map(|w| match w {
-            Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm),
-            _ => unreachable!(),
-        })
-        .collect();
-    (h.h1().data, words)
+    (h.h1().data, f.words.iter().map(seen).collect())
 }
 
 #[test]
