@@ -8,16 +8,21 @@
 //! did not darken), all or a seeded sample; repairs of every fibre;
 //! bit-error runs at given bit error rates (line bits of every packet on
 //! every fibre, at most one per packet and fibre, which is what the harness
-//! can place); clock-offset runs (every node at a seeded offset within
-//! ±ppm, one fault-free and one with a break). Everything is derived from
-//! `--seed`, so a case list is the same on every machine and `--shard K/N`
-//! splits it; `--merge` joins shard reports.
+//! can place); faults on the special master's own four fibres with and
+//! without host writes in flight; clock-offset runs (fault-free, a break,
+//! every node at an extreme alternating round the ring). Every case runs
+//! its nodes at clock offsets drawn from its own seed within ±`--ppm`
+//! (three neighbours at alternating extremes among them), printed with a
+//! failing case. Everything is derived from `--seed`, so a case list is
+//! the same on every machine, `--case NAME` reruns one case exactly, and
+//! `--shard K/N` splits it; `--merge` joins shard reports.
 
 use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::ring::{self, splitmix, table1, Carry, CycleRecord, Mode, Port, Slot};
 use merkur_model::scenario::Kind;
 use merkur_rtl::ring_top::TICKS_PER_BIT;
 use merkur_testbenches::ring_sim::{self, Options};
+use merkur_testbenches::Rng;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -44,8 +49,8 @@ pub struct Plan {
     pub ber: Vec<f64>,
     /// Runs per bit error rate.
     pub ber_runs: usize,
-    /// Clock-offset points, ppm.
-    pub ppm: Vec<f64>,
+    /// Every case's nodes run at offsets drawn within ±this many ppm.
+    pub ppm: f64,
     /// Repair cases.
     pub repairs: bool,
     /// Campaign seed.
@@ -58,6 +63,8 @@ pub struct Plan {
     pub case: Option<String>,
     /// Waveform of the one case `case` names.
     pub wave: Option<PathBuf>,
+    /// Write the one case `case` names as a scenario file here.
+    pub export: Option<PathBuf>,
 }
 
 /// One case's result (a row of the JSON report).
@@ -75,6 +82,9 @@ pub struct CaseResult {
     pub faults: Vec<String>,
     /// RTL phase seed.
     pub seed: u64,
+    /// Every node's clock offset, ppm (drawn from the case's seed).
+    #[serde(default)]
+    pub ppm: Vec<f64>,
     /// Mismatches against the model (after the window rules).
     pub mismatches: usize,
     /// The first few, or the error that stopped the run.
@@ -138,21 +148,6 @@ fn hash_name(seed: u64, name: &str) -> u64 {
         .fold(splitmix(seed), |h, b| splitmix(h ^ b as u64))
 }
 
-/// A small seeded generator (the case's own stream).
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = splitmix(self.0);
-        self.0
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n.max(1)
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// The single structural faults of a ring: (label, fault, links it darkens).
 fn singles(base: &Config) -> Vec<(String, Fault, Vec<usize>)> {
     let n = base.nodes.len();
@@ -204,44 +199,103 @@ fn slot_label(s: Option<usize>) -> String {
     s.map(|s| format!(".s{s}")).unwrap_or_default()
 }
 
-/// Builds the case list of one base ring.
-fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
-    let mut out = vec![];
-    let seed = plan.seed;
-    let mut push = |name: String, class: &'static str, cfg: Config| {
-        let s = hash_name(seed, &name);
-        out.push(Case {
+/// The cases of one base ring as they are planned: each gets its RTL phase
+/// seed and its nodes' clock offsets from its name.
+struct Planner<'a> {
+    ring: &'a str,
+    plan: &'a Plan,
+    clean: Config,
+    out: Vec<Case>,
+}
+
+impl Planner<'_> {
+    /// Adds a case; every node's clock offset is drawn from the case's seed
+    /// ([`draw_offsets`]).
+    fn push(&mut self, name: String, class: &'static str, mut cfg: Config) {
+        let seed = hash_name(self.plan.seed, &name);
+        draw_offsets(&mut cfg, self.plan.ppm, seed);
+        self.out.push(Case {
             name,
-            ring: ring_name.to_string(),
+            ring: self.ring.to_string(),
             class,
             cfg,
-            seed: s,
+            seed,
         });
-    };
+    }
+    /// A seeded stream for a choice named `what`.
+    fn rng(&self, what: &str) -> Rng {
+        Rng::new(hash_name(self.plan.seed, &format!("{}/{what}", self.ring)))
+    }
+    /// Before the delimiter one time in four, else before a seeded slot.
+    fn slot_of(&self, name: &str) -> Option<usize> {
+        let h = hash_name(self.plan.seed ^ 0x51, name);
+        (h % 4 != 0).then(|| (h >> 8) as usize % self.clean.slots)
+    }
+}
+
+/// Every node's clock offset for a case: uniform in ±`bound` ppm (whole
+/// ppm), and among them three neighbours at alternating extremes (+, −, +
+/// or −, +, −, at a seeded place): a node at +bound feeding one at −bound,
+/// and one at −bound feeding one at +bound, the largest difference a link
+/// can see, both ways.
+fn draw_offsets(cfg: &mut Config, bound: f64, seed: u64) {
+    let n = cfg.nodes.len();
+    let mut r = Rng::new(seed ^ 0x0ff5_e75e);
+    for nd in cfg.nodes.iter_mut() {
+        nd.ppm = ((r.unit() * 2.0 - 1.0) * bound).round();
+    }
+    let i = r.below(n as u64) as usize;
+    let sign = if r.below(2) == 0 { 1.0 } else { -1.0 };
+    for (k, s) in [sign, -sign, sign].into_iter().enumerate() {
+        cfg.nodes[(i + k) % n].ppm = s * bound;
+    }
+}
+
+/// The first k of a seeded shuffle of `v` (all of it when k ≥ its length).
+fn sample<T>(v: &mut Vec<T>, k: usize, r: &mut Rng) {
+    for i in 0..v.len().min(k) {
+        let j = i + r.below((v.len() - i) as u64) as usize;
+        v.swap(i, j);
+    }
+    v.truncate(k);
+}
+
+/// Builds the case list of one base ring.
+fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
     let mut clean = base.clone();
     clean.faults.clear();
-    let slot_of = |name: &str| -> Option<usize> {
-        // Before the delimiter one time in four, else before a seeded slot.
-        let h = hash_name(seed ^ 0x51, name);
-        (h % 4 != 0).then(|| (h >> 8) as usize % base.slots)
+    let mut p = Planner {
+        ring: ring_name,
+        plan,
+        clean,
+        out: vec![],
     };
-    let ones = singles(base);
+    single_cases(&mut p);
+    sm_fibre_cases(&mut p);
+    double_cases(&mut p);
+    if plan.repairs {
+        repair_cases(&mut p);
+    }
+    ber_cases(&mut p);
+    offset_cases(&mut p);
+    p.out
+}
+
+/// Every single fibre break and node death (30 sampled on rings of more
+/// than 32 nodes with `--full`), each before a seeded slot of cycle 3.
+fn single_cases(p: &mut Planner) {
+    let ones = singles(&p.clean);
+    let n = p.clean.nodes.len();
     let mut picked: Vec<usize> = (0..ones.len()).collect();
-    let n = base.nodes.len();
-    let single_sample = match plan.singles {
-        None if plan.full && n > 32 => Some(30),
+    let k = match p.plan.singles {
+        None if p.plan.full && n > 32 => Some(30),
         d => d,
     };
-    if let Some(k) = single_sample {
-        let mut r = Rng(hash_name(seed, &format!("{ring_name}/singles")));
-        for i in 0..picked.len().min(k) {
-            let j = i + r.below((picked.len() - i) as u64) as usize;
-            picked.swap(i, j);
-        }
-        picked.truncate(k);
+    if let Some(k) = k {
+        sample(&mut picked, k, &mut p.rng("singles"));
         picked.sort_unstable();
     }
-    for (label, f, _) in picked.iter().map(|&i| &ones[i]) {
+    for (label, f, _) in picked.iter().map(|&i| ones[i].clone()) {
         let class = match f {
             Fault::Break {
                 fibre: Fibre::P(_), ..
@@ -249,14 +303,72 @@ fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
             Fault::Break { .. } => "break-secondary",
             _ => "node-death",
         };
-        let key = format!("{ring_name}/{class}/{label}");
-        let s = slot_of(&key);
-        let mut cfg = clean.clone();
+        let key = format!("{}/{class}/{label}", p.ring);
+        let s = p.slot_of(&key);
+        let mut cfg = p.clean.clone();
         cfg.cycles = FAULT_CYCLE + 7;
-        cfg.faults = vec![(FAULT_CYCLE, with_slot(*f, s))];
-        push(format!("{key}@{FAULT_CYCLE}{}", slot_label(s)), class, cfg);
+        cfg.faults = vec![(FAULT_CYCLE, with_slot(f, s))];
+        p.push(format!("{key}@{FAULT_CYCLE}{}", slot_label(s)), class, cfg);
     }
-    // Double faults: the second on a link the first did not darken.
+}
+
+/// The special master's own four fibres (into its PI and SI, out of its PO
+/// and SO: issue 19, a break of its SO took the ring into failsafe under
+/// some clock offsets), each before the delimiter and before two seeded
+/// slots of cycle 3, with and without host writes in flight (every master
+/// writes every slot it owns in cycles 3 and 4).
+fn sm_fibre_cases(p: &mut Planner) {
+    let n = p.clean.nodes.len();
+    let sm = p.clean.sm;
+    let fibres = [
+        Fibre::P((sm + n - 1) % n),
+        Fibre::P(sm),
+        Fibre::S(sm),
+        Fibre::S((sm + n - 1) % n),
+    ];
+    let mut r = p.rng("sm-fibres");
+    for fibre in fibres {
+        let slots = [
+            None,
+            Some(r.below(p.clean.slots as u64) as usize),
+            Some(r.below(p.clean.slots as u64) as usize),
+        ];
+        for s in slots {
+            for writes in [false, true] {
+                let mut cfg = p.clean.clone();
+                cfg.cycles = FAULT_CYCLE + 7;
+                cfg.faults = vec![(FAULT_CYCLE, Fault::Break { fibre, slot: s })];
+                let tag = if writes {
+                    for c in [FAULT_CYCLE, FAULT_CYCLE + 1] {
+                        for (k, nd) in p.clean.nodes.iter().enumerate() {
+                            for &slot in nd.slots.iter().chain(&nd.serves) {
+                                cfg.host_writes.push((c, k, slot, r.next_u64() as u16));
+                            }
+                        }
+                    }
+                    "+writes"
+                } else {
+                    ""
+                };
+                p.push(
+                    format!(
+                        "{}/sm-fibres/{fibre}@{FAULT_CYCLE}{}{tag}",
+                        p.ring,
+                        slot_label(s)
+                    ),
+                    "sm-fibres",
+                    cfg,
+                );
+            }
+        }
+    }
+}
+
+/// Double faults: the second, 4 cycles after the first, on a link the
+/// first did not darken; all or a seeded sample.
+fn double_cases(p: &mut Planner) {
+    let ones = singles(&p.clean);
+    let n = p.clean.nodes.len();
     let second = FAULT_CYCLE + 4;
     let mut pairs = vec![];
     for (a, (la, fa, da)) in ones.iter().enumerate() {
@@ -273,100 +385,105 @@ fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
             pairs.push((la.clone(), *fa, lb.clone(), *fb));
         }
     }
-    let sample = match plan.doubles {
+    let k = match p.plan.doubles {
         None if n > 32 => Some(8),
         None if n > 16 => Some(32),
         d => d,
     };
-    if let Some(k) = sample {
-        let mut r = Rng(hash_name(seed, &format!("{ring_name}/doubles")));
-        // A seeded partial shuffle: the first k of a random order.
-        for i in 0..pairs.len().min(k) {
-            let j = i + r.below((pairs.len() - i) as u64) as usize;
-            pairs.swap(i, j);
-        }
-        pairs.truncate(k);
+    if let Some(k) = k {
+        sample(&mut pairs, k, &mut p.rng("doubles"));
     }
     for (la, fa, lb, fb) in pairs {
-        let mut cfg = clean.clone();
+        let mut cfg = p.clean.clone();
         cfg.cycles = second + 5;
         cfg.faults = vec![(FAULT_CYCLE, fa), (second, fb)];
-        push(
-            format!("{ring_name}/double/{la}@{FAULT_CYCLE}+{lb}@{second}"),
+        p.push(
+            format!("{}/double/{la}@{FAULT_CYCLE}+{lb}@{second}", p.ring),
             "double",
             cfg,
         );
     }
-    if plan.repairs {
-        // Every fibre on rings of up to 16 nodes, 8 sampled on bigger ones.
-        let mut fibres: Vec<Fibre> = (0..n).map(Fibre::P).chain((0..n).map(Fibre::S)).collect();
-        if n > 16 {
-            let mut r = Rng(hash_name(seed, &format!("{ring_name}/repairs")));
-            for i in 0..8.min(fibres.len()) {
-                let j = i + r.below((fibres.len() - i) as u64) as usize;
-                fibres.swap(i, j);
-            }
-            fibres.truncate(8);
-        }
-        for f in fibres {
-            let mut cfg = clean.clone();
-            let fix = FAULT_CYCLE + 3;
-            cfg.cycles = fix + 7;
-            cfg.faults = vec![
-                (
-                    FAULT_CYCLE,
-                    Fault::Break {
-                        fibre: f,
-                        slot: None,
-                    },
-                ),
-                (
-                    fix,
-                    Fault::Repair {
-                        fibre: f,
-                        slot: None,
-                    },
-                ),
-            ];
-            push(
-                format!("{ring_name}/repair/{f}@{FAULT_CYCLE}-{fix}"),
-                "repair",
-                cfg,
-            );
-        }
+}
+
+/// Repairs: every fibre on rings of up to 16 nodes, 8 sampled on bigger
+/// ones, broken in cycle 3 and repaired 3 cycles later.
+fn repair_cases(p: &mut Planner) {
+    let n = p.clean.nodes.len();
+    let mut fibres: Vec<Fibre> = (0..n).map(Fibre::P).chain((0..n).map(Fibre::S)).collect();
+    if n > 16 {
+        sample(&mut fibres, 8, &mut p.rng("repairs"));
     }
-    for &ber in &plan.ber {
-        for run in 0..plan.ber_runs {
-            let name = format!("{ring_name}/ber/{ber:e}#{run}");
-            let mut cfg = clean.clone();
+    for f in fibres {
+        let mut cfg = p.clean.clone();
+        let fix = FAULT_CYCLE + 3;
+        cfg.cycles = fix + 7;
+        let brk = Fault::Break {
+            fibre: f,
+            slot: None,
+        };
+        let rep = Fault::Repair {
+            fibre: f,
+            slot: None,
+        };
+        cfg.faults = vec![(FAULT_CYCLE, brk), (fix, rep)];
+        p.push(
+            format!("{}/repair/{f}@{FAULT_CYCLE}-{fix}", p.ring),
+            "repair",
+            cfg,
+        );
+    }
+}
+
+/// Bit-error runs: per rate, `ber_runs` runs of 10 cycles.
+fn ber_cases(p: &mut Planner) {
+    for &ber in &p.plan.ber {
+        for run in 0..p.plan.ber_runs {
+            let name = format!("{}/ber/{ber:e}#{run}", p.ring);
+            let mut cfg = p.clean.clone();
             cfg.cycles = 10;
-            cfg.faults = ber_flips(&cfg, ber, hash_name(seed, &name));
-            push(name, "bit-errors", cfg);
+            cfg.faults = ber_flips(&cfg, ber, hash_name(p.plan.seed, &name));
+            p.push(name, "bit-errors", cfg);
         }
     }
-    for &ppm in &plan.ppm {
-        for run in 0..2 {
-            let name = format!("{ring_name}/clock-offset/{ppm}ppm#{run}");
-            let mut r = Rng(hash_name(seed, &name));
-            let mut cfg = clean.clone();
-            cfg.cycles = 10;
-            for nd in cfg.nodes.iter_mut() {
-                nd.ppm = ((r.unit() * 2.0 - 1.0) * ppm).round();
-            }
-            if run == 1 {
-                let k = r.below(cfg.nodes.len() as u64) as usize;
-                cfg.faults = vec![(
-                    FAULT_CYCLE,
-                    Fault::Break {
-                        fibre: Fibre::P(k),
-                        slot: None,
-                    },
-                )];
-            }
-            push(name, "clock-offset", cfg);
+}
+
+/// Clock offsets on their own: a fault-free run and one with a break of a
+/// seeded primary fibre, at the drawn offsets like every case, and a
+/// fault-free run with every node at an extreme, alternating round the ring
+/// (every link between opposite extremes).
+fn offset_cases(p: &mut Planner) {
+    if p.plan.ppm == 0.0 {
+        return;
+    }
+    let n = p.clean.nodes.len();
+    let mut r = p.rng("clock-offset");
+    for run in 0..2 {
+        let mut cfg = p.clean.clone();
+        cfg.cycles = 10;
+        if run == 1 {
+            let k = r.below(n as u64) as usize;
+            let brk = Fault::Break {
+                fibre: Fibre::P(k),
+                slot: None,
+            };
+            cfg.faults = vec![(FAULT_CYCLE, brk)];
+        }
+        p.push(
+            format!("{}/clock-offset/drawn#{run}", p.ring),
+            "clock-offset",
+            cfg,
+        );
+    }
+    let mut cfg = p.clean.clone();
+    cfg.cycles = 10;
+    let name = format!("{}/clock-offset/alternating", p.ring);
+    p.push(name, "clock-offset", cfg);
+    let bound = p.plan.ppm;
+    if let Some(c) = p.out.last_mut() {
+        for (k, nd) in c.cfg.nodes.iter_mut().enumerate() {
+            nd.ppm = if k % 2 == 0 { bound } else { -bound };
         }
     }
-    out
 }
 
 /// Seeded line-bit errors at rate `ber` on every packet of every fibre of
@@ -374,7 +491,7 @@ fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
 fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
     let recs = ring::run(cfg);
     let n = cfg.nodes.len();
-    let mut r = Rng(seed);
+    let mut r = Rng::new(seed);
     let mut v = vec![];
     for rec in recs.iter().skip(1).take(cfg.cycles as usize - 2) {
         // Words already hit in this cycle (on any fibre): a second flip in
@@ -593,6 +710,7 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
             .map(|(c, f)| format!("cycle {c}: {f}"))
             .collect(),
         seed: case.seed,
+        ppm: cfg.nodes.iter().map(|x| x.ppm).collect(),
         mismatches: 0,
         first: vec![],
         words: 0,
@@ -741,8 +859,19 @@ pub fn parse_list(flag: &str, s: &str, max: f64) -> Result<Vec<f64>, String> {
         .collect()
 }
 
-/// Runs the campaign; returns the report.
-pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
+/// Checks a bound given to `flag` (0 ..= max; protocol §8 allows ±1000 ppm).
+pub fn parse_bound(flag: &str, v: f64, max: f64) -> Result<f64, String> {
+    if v.is_finite() && (0.0..=max).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!(
+            "error: {flag} {v}: outside 0 ..= {max} (protocol §8: oscillators within ±{max} ppm)"
+        ))
+    }
+}
+
+/// Every case of the plan, in order.
+fn all_cases(plan: &Plan) -> Result<Vec<Case>, String> {
     let mut cases = vec![];
     for path in &plan.rings {
         let (_, base) = crate::read_scenario(path)?;
@@ -758,15 +887,45 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
         }
         cases.extend(cases_of(&ring_name, &base, plan));
     }
-    if plan.wave.is_some() && plan.case.is_none() {
-        return Err("error: --wave needs --case: a waveform is written for one case".into());
-    }
     if let Some(want) = &plan.case {
         cases.retain(|c| &c.name == want);
         if cases.is_empty() {
             return Err(format!("error: --case {want}: no such case in this campaign (names are listed in the report)"));
         }
     }
+    Ok(cases)
+}
+
+/// Writes the case `--case` names as a scenario file (`--export`) and
+/// prints the command that runs it as the campaign does.
+pub fn export(plan: &Plan) -> Result<(), String> {
+    let (Some(name), Some(file)) = (&plan.case, &plan.export) else {
+        return Err("error: --export needs --case: one case is written as a scenario".into());
+    };
+    let cases = all_cases(plan)?;
+    let case = &cases[0];
+    let text = format!(
+        "# merkur campaign case {name} (campaign seed {}); its RTL run: merkur sim FILE --seed {}\n{}",
+        plan.seed,
+        case.seed,
+        case.cfg.to_scenario(&format!("campaign case {name}"))
+    );
+    crate::write_atomic(file, &text)?;
+    eprintln!(
+        "wrote {}; run it as the campaign does: merkur sim {} --seed {}",
+        file.display(),
+        file.display(),
+        case.seed
+    );
+    Ok(())
+}
+
+/// Runs the campaign; returns the report.
+pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
+    if plan.wave.is_some() && plan.case.is_none() {
+        return Err("error: --wave needs --case: a waveform is written for one case".into());
+    }
+    let cases = all_cases(plan)?;
     let total = cases.len();
     let (k, n) = plan.shard;
     let mine: Vec<Case> = cases
@@ -816,9 +975,10 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
                 progress(d, mine.len(), failed, t0.elapsed().as_secs_f64());
                 if bad {
                     eprintln!(
-                        "\nMISMATCH {} (seed {}): {}",
+                        "\nMISMATCH {} (seed {}, offsets ppm {}): {}",
                         case.name,
                         case.seed,
+                        offsets(&case.cfg),
                         all.last().map(|x| x.first.join("; ")).unwrap_or_default()
                     );
                 }
@@ -832,6 +992,18 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
         commands: vec![command],
         cases,
     })
+}
+
+/// The nodes' clock offsets, `+310,-640,…` in node order.
+fn offsets(cfg: &Config) -> String {
+    ppm_list(&cfg.nodes.iter().map(|x| x.ppm).collect::<Vec<_>>())
+}
+
+fn ppm_list(v: &[f64]) -> String {
+    v.iter()
+        .map(|p| format!("{p:+}"))
+        .collect::<Vec<_>>()
+        .join(",")
 }
 
 fn progress(done: usize, total: usize, failed: usize, secs: f64) {
@@ -959,9 +1131,10 @@ pub fn markdown(r: &Report) -> String {
         o += "\n## Cases with mismatches\n\n";
         for c in bad {
             o += &format!(
-                "- `{}` (seed {}, {} mismatches; rerun: the command above with `--case '{}'`, and `--wave FILE` for its waveform): {}\n",
+                "- `{}` (seed {}, node offsets {} ppm, {} mismatches; rerun: the command above with `--case '{}'`, and `--wave FILE` for its waveform): {}\n",
                 c.name,
                 c.seed,
+                ppm_list(&c.ppm),
                 c.mismatches,
                 c.name,
                 c.first.join("; ")

@@ -151,6 +151,7 @@ fn rtl(cfg: &Config, recs: &[CycleRecord], wave: &std::path::Path) -> Result<(),
         seed: 1,
         progress: true,
         record: false,
+        dump: false,
     };
     let rep = ring_sim::run(cfg, recs, &opts).map_err(|e| format!("error: RTL run: {e}"))?;
     println!(

@@ -67,6 +67,11 @@ enum Cmd {
         /// How many mismatches to list on a failure.
         #[arg(long, value_name = "N", default_value_t = 10)]
         show: usize,
+        /// Ring scenarios: print every word the RTL carried on every fibre, cycle by cycle (the
+        /// model's in brackets where it differs), and every fault and switchbox change with its
+        /// simulation tick, to stderr.
+        #[arg(long)]
+        dump: bool,
     },
     /// Run a fault-injection campaign through the RTL (Verilator) and the model and compare
     /// them: every single fibre break and node death, double faults, repairs, bit-error and
@@ -80,7 +85,7 @@ enum Cmd {
         /// The full campaign: rings of 8, 32 and 100 nodes; on 8 and 32 nodes every single
         /// fault, on 100 nodes 30 sampled (`--singles`); every double fault on rings up to 16
         /// nodes, 32 sampled on bigger ones (8 on 100 nodes); repairs (every fibre up to 16
-        /// nodes, 8 sampled on bigger rings); BER 1e-3 … 1e-7; ±250 … ±1000 ppm.
+        /// nodes, 8 sampled on bigger rings); BER 1e-3 … 1e-7.
         #[arg(long)]
         full: bool,
         /// Single faults per ring: a number (seeded sample) or `all` (default: all).
@@ -95,9 +100,10 @@ enum Cmd {
         /// Runs per bit error rate.
         #[arg(long, value_name = "N", default_value_t = 2)]
         ber_runs: usize,
-        /// Clock-offset points in ppm, comma-separated (`none` for none). Default 1000.
-        #[arg(long, value_name = "LIST")]
-        ppm: Option<String>,
+        /// Every case runs its nodes at clock offsets drawn from the case's seed, uniform within
+        /// ±PPM, with three neighbours at alternating extremes among them (0: every node at 0 ppm).
+        #[arg(long, value_name = "PPM", default_value_t = 1000.0)]
+        ppm: f64,
         /// Repair (reintegration) cases: every fibre breaks and is repaired (8 sampled fibres on
         /// rings of more than 16 nodes).
         #[arg(long)]
@@ -117,6 +123,10 @@ enum Cmd {
         /// With --case: write the case's RTL run as an FST waveform (GTKWave save file beside it).
         #[arg(long, value_name = "FILE")]
         wave: Option<PathBuf>,
+        /// With --case: write the case as a scenario file instead of running it; `merkur sim FILE
+        /// --seed SEED` (the command is printed) then runs it as the campaign does.
+        #[arg(long, value_name = "FILE")]
+        export: Option<PathBuf>,
         /// Write campaign.md and campaign.json into this directory (else the Markdown goes to stdout).
         #[arg(short, long, value_name = "DIR")]
         output: Option<PathBuf>,
@@ -314,6 +324,7 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
         shard,
         case,
         wave,
+        export,
         output,
         merge,
     } = cmd
@@ -350,7 +361,6 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
         } else {
             "1e-4"
         };
-        let default_ppm = if *full { "250,500,1000" } else { "1000" };
         let jobs = match jobs {
             Some(0) => return Err("error: --jobs 0: at least one simulation must run".into()),
             Some(j) => *j,
@@ -367,7 +377,7 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
             doubles,
             ber: campaign::parse_list("--ber", ber.as_deref().unwrap_or(default_ber), 0.5)?,
             ber_runs: *ber_runs,
-            ppm: campaign::parse_list("--ppm", ppm.as_deref().unwrap_or(default_ppm), 5000.0)?,
+            ppm: campaign::parse_bound("--ppm", *ppm, 1000.0)?,
             repairs: *repairs || *full,
             seed: *seed,
             jobs,
@@ -377,7 +387,11 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
             },
             case: case.clone(),
             wave: wave.clone(),
+            export: export.clone(),
         };
+        if plan.export.is_some() {
+            return campaign::export(&plan).map(|()| true);
+        }
         campaign::run(&plan, command)?
     };
     match output {
@@ -435,11 +449,12 @@ fn main() -> ExitCode {
             wave,
             seed,
             show,
+            dump,
         } => {
             let r = match token_bus(scenario) {
                 Err(e) => Err(e),
                 Ok(Some(text)) => dcm::sim(scenario, &text, wave.as_deref(), *show),
-                Ok(None) => sim::sim(scenario, wave.as_deref(), *seed, *show),
+                Ok(None) => sim::sim(scenario, wave.as_deref(), *seed, *show, *dump),
             };
             match r {
                 Ok(true) => Ok(()),

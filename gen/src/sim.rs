@@ -54,7 +54,13 @@ pub(crate) fn write_gtkw(cfg: &merkur_model::config::Config, w: &Path) -> Result
 }
 
 /// Runs the ring in Verilator; `Ok(false)` when it differs from the model.
-pub fn sim(path: &Path, wave: Option<&Path>, seed: u64, show: usize) -> Result<bool, String> {
+pub fn sim(
+    path: &Path,
+    wave: Option<&Path>,
+    seed: u64,
+    show: usize,
+    dump: bool,
+) -> Result<bool, String> {
     let (_, cfg) = read_scenario(path)?;
     if let Some(why) = ring_sim::unsupported(&cfg) {
         return Err(format!(
@@ -74,8 +80,9 @@ pub fn sim(path: &Path, wave: Option<&Path>, seed: u64, show: usize) -> Result<b
     let opts = Options {
         wave: wave.map(Path::to_path_buf),
         seed,
-        progress: true,
+        progress: !dump,
         record: false,
+        dump,
     };
     let rep = ring_sim::run(&cfg, &recs, &opts).map_err(|e| format!("error: {e}"))?;
     println!(

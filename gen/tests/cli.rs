@@ -238,10 +238,12 @@ fn verilog_writes_the_ring_and_the_waivers() {
 }
 
 /// The bounded fault-injection campaign (issue 5, README): every single
-/// fibre break and node death of the 8-node ring, a seeded sample of double
-/// faults, one bit error rate and one clock-offset point, through RTL and
-/// model; any mismatch or accepted bit error fails. Shards merge to the
-/// same report.
+/// fibre break and node death of the 8-node ring, the special master's own
+/// four fibres (issue 19), a seeded sample of double faults, one bit error
+/// rate and clock-offset runs, through RTL and model, every case at its own
+/// drawn clock offsets; any mismatch or accepted bit error fails. Shards
+/// merge to the same report; a case exported as a scenario runs as the
+/// campaign ran it.
 #[test]
 fn bounded_campaign_agrees_with_the_model() {
     let dir = scratch("campaign");
@@ -257,6 +259,7 @@ fn bounded_campaign_agrees_with_the_model() {
         "double",
         "bit-errors",
         "clock-offset",
+        "sm-fibres",
     ] {
         assert!(
             md.contains(&format!("| ring8 | {class} |")),
@@ -271,6 +274,57 @@ fn bounded_campaign_agrees_with_the_model() {
         .map(|c| json.matches(&format!("\"class\": \"{c}\"")).count())
         .sum::<usize>();
     assert_eq!(singles, 23, "{json}");
+    // The special master's four fibres, three points each, with and
+    // without host writes.
+    assert_eq!(json.matches("\"class\": \"sm-fibres\"").count(), 24);
+    // Every case at its own offsets within ±1000 ppm, both extremes on
+    // neighbours in each; not two cases alike.
+    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let cases = report["cases"].as_array().unwrap();
+    let mut seen = std::collections::BTreeSet::new();
+    for c in cases {
+        let ppm: Vec<f64> = c["ppm"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect();
+        assert_eq!(ppm.len(), 8, "{c}");
+        assert!(ppm.iter().all(|p| p.abs() <= 1000.0), "{c}");
+        let n = ppm.len();
+        let opposite = |a: f64, b: f64| (0..n).any(|i| ppm[i] == a && ppm[(i + 1) % n] == b);
+        assert!(
+            opposite(1000.0, -1000.0) && opposite(-1000.0, 1000.0),
+            "{c}"
+        );
+        seen.insert(format!("{ppm:?}"));
+    }
+    assert!(seen.len() > cases.len() * 9 / 10, "offsets repeat");
+    // One case as a scenario file: it checks, and runs as the campaign ran it.
+    let case = "ring8/sm-fibres/S7@3+writes";
+    let file = dir.join("case.toml");
+    let o = merkur(&[
+        "campaign",
+        "--case",
+        case,
+        "--export",
+        file.to_str().unwrap(),
+    ]);
+    let err = text(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    let seed = err
+        .split("--seed ")
+        .nth(1)
+        .and_then(|x| x.split_whitespace().next())
+        .unwrap_or_else(|| panic!("no seed printed: {err}"))
+        .to_string();
+    let o = merkur(&["sim", file.to_str().unwrap(), "--seed", &seed]);
+    assert!(o.status.success(), "{}", text(&o.stdout));
+    let want = cases
+        .iter()
+        .find(|c| c["name"] == case)
+        .unwrap_or_else(|| panic!("{case} in the report"));
+    assert_eq!(want["seed"].to_string(), seed);
     // Two shards merged give the same cases.
     let mut parts = vec![];
     for k in 1..=2 {
@@ -317,6 +371,11 @@ fn campaign_refuses_bad_arguments() {
             &["campaign", "--wave", "/tmp/x.fst"][..],
             "--wave needs --case",
         ),
+        (
+            &["campaign", "--export", "/tmp/x.toml"][..],
+            "--export needs --case",
+        ),
+        (&["campaign", "--ppm", "1500"][..], "--ppm 1500"),
     ] {
         refused(args, want);
     }

@@ -243,6 +243,104 @@ impl Config {
         b
     }
 
+    /// The configuration as a scenario file (docs/scenarios.md) that
+    /// [`load`] reads back to the same configuration: how a generated case
+    /// (a campaign's) becomes a file a user can check, trace and simulate.
+    pub fn to_scenario(&self, description: &str) -> String {
+        use std::fmt::Write;
+        let q = |s: &str| format!("{s:?}");
+        let mut o = String::new();
+        let _ = writeln!(o, "name = {}", q(&self.name));
+        let _ = writeln!(o, "description = {}", q(description));
+        let _ = writeln!(o, "seed = {}\ncycles = {}\n", self.seed, self.cycles);
+        let _ = writeln!(
+            o,
+            "[frame]\nalarm_bits = {}\nperiod_bits = {}\nline_rate_mbps = {:?}\n",
+            self.ext, self.period, self.line_rate_mbps
+        );
+        let generator = match self.generator {
+            Generator::Counter => "counter",
+            Generator::Random => "random",
+            Generator::Explicit => "explicit",
+        };
+        let _ = writeln!(o, "[stimulus]\ngenerator = {}\n", q(generator));
+        for (slot, by_cycle) in &self.values {
+            for (cycle, data) in by_cycle {
+                let _ = writeln!(
+                    o,
+                    "[[stimulus.value]]\ncycle = {cycle}\nslot = {slot}\ndata = 0x{data:04x}\n"
+                );
+            }
+        }
+        let list = |v: &[usize]| {
+            let items: Vec<String> = v.iter().map(|x| x.to_string()).collect();
+            format!("[{}]", items.join(", "))
+        };
+        for nd in &self.nodes {
+            let _ = writeln!(o, "[[node]]\nkind = {}", q(nd.kind.name()));
+            let _ = writeln!(o, "address = {}", nd.address);
+            if nd.kind.is_master() {
+                let _ = writeln!(o, "slots = {}", list(&nd.slots));
+                let _ = writeln!(o, "serves = {}", list(&nd.serves));
+                let _ = writeln!(o, "alive_check = {}", nd.alive_check);
+            }
+            let _ = writeln!(o, "ppm = {:?}\n", nd.ppm);
+        }
+        for (cycle, node, slot, data) in &self.host_writes {
+            let _ = writeln!(
+                o,
+                "[[host_write]]\ncycle = {cycle}\nnode = {node}\nslot = {slot}\ndata = 0x{data:04x}\n"
+            );
+        }
+        for (cycle, node, line) in &self.irqs {
+            let line = match line {
+                IrqLine::Irq1 => "irq1",
+                IrqLine::Irq2 => "irq2",
+                IrqLine::Failsafe => "failsafe",
+            };
+            let _ = writeln!(
+                o,
+                "[[irq]]\ncycle = {cycle}\nnode = {node}\nline = {}\n",
+                q(line)
+            );
+        }
+        for (cycle, f) in &self.faults {
+            let _ = writeln!(o, "[[fault]]\ncycle = {cycle}");
+            let slot = |o: &mut String, s: &Option<usize>| {
+                if let Some(s) = s {
+                    let _ = writeln!(o, "slot = {s}");
+                }
+            };
+            match f {
+                Fault::Break { fibre, slot: s } => {
+                    let _ = writeln!(o, "kind = \"break\"\nfibre = \"{fibre}\"");
+                    slot(&mut o, s);
+                }
+                Fault::Repair { fibre, slot: s } => {
+                    let _ = writeln!(o, "kind = \"repair\"\nfibre = \"{fibre}\"");
+                    slot(&mut o, s);
+                }
+                Fault::Kill { node, slot: s } => {
+                    let _ = writeln!(o, "kind = \"kill\"\nnode = {node}");
+                    slot(&mut o, s);
+                }
+                Fault::Flip { fibre, target, bit } => {
+                    let _ = writeln!(o, "kind = \"flip\"\nfibre = \"{fibre}\"\nbit = {bit}");
+                    match target {
+                        FlipTarget::Slot(s) => {
+                            let _ = writeln!(o, "slot = {s}");
+                        }
+                        other => {
+                            let _ = writeln!(o, "word = \"{other}\"");
+                        }
+                    }
+                }
+            }
+            o.push('\n');
+        }
+        o
+    }
+
     /// Line bits of one word.
     pub fn word_bits(&self) -> u32 {
         word_bits(self.ext)

@@ -67,3 +67,37 @@ fn trace_header_names_version_hash_and_seed() {
         "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
     );
 }
+
+/// `Config::to_scenario` writes a file that reads back to the same
+/// configuration, for every ring scenario of tb-data/ (breaks, repairs,
+/// deaths, flips, interrupts and host writes among them, and ring8 with
+/// explicit sensor values added).
+#[test]
+fn a_configuration_written_as_a_scenario_reads_back_the_same() {
+    let mut n = 0;
+    for e in std::fs::read_dir(tb_data()).expect("tb-data exists") {
+        let p = e.expect("dir entry").path();
+        if p.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let mut text = std::fs::read_to_string(&p).unwrap();
+        if tbconfig::is_token_bus(&text) {
+            continue;
+        }
+        let name = p.file_name().unwrap().to_string_lossy().to_string();
+        if name == "ring8.toml" {
+            text += "\n[[stimulus.value]]\ncycle = 2\nslot = 1\ndata = 0x1234\n";
+        }
+        let cfg = config::load(&name, &text).unwrap_or_else(|e| panic!("{e}"));
+        let written = cfg.to_scenario("written back");
+        let again = config::load(&name, &written)
+            .unwrap_or_else(|e| panic!("{name} written back does not load:\n{e}\n{written}"));
+        assert_eq!(
+            format!("{cfg:?}"),
+            format!("{again:?}"),
+            "{name}: written back as\n{written}"
+        );
+        n += 1;
+    }
+    assert!(n >= 15, "only {n} ring scenarios");
+}

@@ -25,7 +25,7 @@
 //! `testbenches/tests/cdr.rs`): that must cost a word, not mute the receiver
 //! for the rest of the frame (protocol §5). An interval of up to 8 bit
 //! times is read whole. Loss of signal: no transition for [`LOS_SAMPLES`] =
-//! 192 samples (24 bit times) raises `o_los` until the next transition.
+//! 256 samples (32 bit times) raises `o_los` until the next transition.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -33,7 +33,7 @@
 //! | `i_samples` | in | 4 | clock | line samples, bit 0 first in time |
 //! | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
 //! | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
-//! | `o_los` | out | 1 | clock | loss of signal (no edge for 24 bit times) |
+//! | `o_los` | out | 1 | clock | loss of signal (no edge for 32 bit times) |
 //! | `o_phase` | out | 2 | clock | which sample of its clock the bit was taken from (0 first) |
 //!
 //! Latency: `o_valid`/`o_bit`/`o_phase` are registered: a bit appears one
@@ -59,10 +59,11 @@ pub const SAMPLES_PER_CLOCK: usize = 4;
 /// leaves an interval of at most 7), so a line that went dark does not
 /// deliver a long run of zeros.
 pub const MUTE_SAMPLES: u64 = 8 * SAMPLES_PER_BIT as u64;
-/// Samples without a transition before `o_los` rises (24 bit times: more
-/// than a switch's dark time plus a pass-through's, [`crate::sw_dark`],
-/// [`crate::retime::DARK_BITS`]).
-pub const LOS_SAMPLES: u64 = 24 * SAMPLES_PER_BIT as u64;
+/// Samples without a transition before `o_los` rises (32 bit times: more
+/// than the longest dark time of a live line, a switch's dark time right
+/// after a stopped input's, [`crate::sw_dark`], [`crate::retime::QUIET_BITS`];
+/// protocol §9).
+pub const LOS_SAMPLES: u64 = 32 * SAMPLES_PER_BIT as u64;
 
 /// Oversampling clock and data recovery.
 #[derive(LogicBlock)]

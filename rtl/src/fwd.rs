@@ -68,7 +68,9 @@ use rust_hdl::prelude::*;
 /// Clocks without a recovered bit after which INPUT counts as dead (3 bit
 /// times; a live line gives a bit every 2 clocks, 3 at most): shorter
 /// than the gap a switchbox change leaves after a receiver muted (12 dark
-/// bit times, [`crate::sw_dark`], less the 8 of the mute).
+/// bit times, [`crate::sw_dark`], less the 8 of the mute), and than the one
+/// an upstream node whose input stopped leaves ([`crate::retime::QUIET_BITS`]
+/// less the 8 of the mute).
 pub const DEAD_CLOCKS: u64 = 6;
 
 // Word actions (register `action`, rust-hdl emits literals, not Rust consts):

@@ -27,7 +27,7 @@
 //! line before it mutes, and could pass both parities with a foreign
 //! value; with no recovered bit for [`DROP_CLOCKS`] clocks the held word is dropped
 //! (not received, as the model's "missing") and the packet ends there. Upstream nodes keep their line
-//! dark after such a stop ([`crate::retime::DARK_BITS`]), so no idle can
+//! dark after such a stop ([`crate::retime::QUIET_BITS`]), so no idle can
 //! confirm it either.
 //!
 //! Latency from a word's last line bit to `o_wvalid`: CDR 2–3 clocks +

@@ -32,12 +32,17 @@
 //! (underflow: the input stopped) or a write into a full one (overflow)
 //! pulses `o_slip` and empties the buffer; an underflow sends no idle edge
 //! (the zeros the receiver read from a dying line before it muted would be
-//! confirmed by it): the line stays dark from its last edge through the
-//! underflow and [`DARK_BITS`] bit times more, so a downstream receiver
-//! mutes and drops the word the input stopped in ([`crate::monitor`]), and
-//! then sends idles, so it sees a live line again before loss of signal
-//! (dark ≤ 8 + 2.5 + 8 bit times < 24); the next bits start again. A live
-//! stream within ±2000 ppm never slips.
+//! confirmed by it): the line stays dark until [`QUIET_BITS`] bit times
+//! after the last edge it sent, so a downstream receiver mutes and drops the
+//! word the input stopped in ([`crate::monitor`]) and a downstream
+//! forwarder sees its input dead ([`crate::fwd::DEAD_CLOCKS`]); then it
+//! sends idles, so the next node sees a live line again long before loss
+//! of signal (32 bit times); the next bits start again. Counted from the
+//! last edge *sent*, the gap is the same on every hop whatever the
+//! pipeline in front of the buffer held back (a forwarder keeps a group of
+//! the zeros read from a dying line in its delay line: counted from the
+//! underflow, the gap shrank by that much per hop until a node no longer
+//! saw it, issue 19). A live stream within ±2000 ppm never slips.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -63,12 +68,15 @@ use rust_hdl::prelude::*;
 
 /// Target wait of a bit in the buffer, receive samples (quarter clocks).
 pub const TARGET: u64 = 20;
-/// Bit times the line stays dark after an underflow (which itself sends no
-/// edge). The last edge was at least 8 bit times before (the input's CDR
-/// muted, [`crate::cdr::MUTE_SAMPLES`]), so a downstream receiver has muted
-/// and ended its packet before the idles come; the whole dark time stays
-/// under the 24 bit times of loss of signal.
-pub const DARK_BITS: u64 = 8;
+/// After an underflow (which itself sends no edge) the line carries no
+/// edge until this many bit times after the last edge sent: more than a
+/// downstream receiver needs to mute (8, [`crate::cdr::MUTE_SAMPLES`]) and
+/// then end its packet (2 more; a forwarder 3, [`crate::fwd::DEAD_CLOCKS`]),
+/// with 5 bit times of margin. It ends early enough that a forwarder whose
+/// input died (its output's last edge ≤ 10 bit times after its input's)
+/// sends idles before its own loss of signal wraps it (32 bit times after
+/// its input's last edge, [`crate::cdr::LOS_SAMPLES`]; protocol §9).
+pub const QUIET_BITS: u64 = 16;
 /// Dead band around [`TARGET`], receive samples.
 pub const BAND: u64 = 4;
 /// Writes in a row outside the band before a correction.
@@ -93,7 +101,7 @@ pub struct Retime {
     pub o_line: Signal<Out, Bits<2>>,
     /// The buffer under- or overflowed.
     pub o_slip: Signal<Out, Bit>,
-    dark_bits: Constant<Bits<4>>,
+    quiet_bits: Constant<Bits<5>>,
     hi_limit: Constant<Bits<8>>,
     lo_limit: Constant<Bits<8>>,
     votes: Constant<Bits<3>>,
@@ -104,7 +112,8 @@ pub struct Retime {
     rem: DFF<Bits<3>>,
     lvl: DFF<Bit>,
     run: DFF<Bit>,
-    dark: DFF<Bits<4>>,
+    dark: DFF<Bit>,
+    since: DFF<Bits<5>>,
     hi: DFF<Bits<3>>,
     lo: DFF<Bits<3>>,
     gap: DFF<Bits<4>>,
@@ -131,7 +140,7 @@ impl Default for Retime {
             i_phase: Default::default(),
             o_line: Default::default(),
             o_slip: Default::default(),
-            dark_bits: Constant::new(DARK_BITS.to_bits()),
+            quiet_bits: Constant::new((QUIET_BITS - 2).to_bits()),
             hi_limit: Constant::new((TARGET + BAND).to_bits()),
             lo_limit: Constant::new((TARGET - BAND).to_bits()),
             votes: Constant::new(VOTES.to_bits()),
@@ -143,6 +152,7 @@ impl Default for Retime {
             lvl: Default::default(),
             run: Default::default(),
             dark: Default::default(),
+            since: Default::default(),
             hi: Default::default(),
             lo: Default::default(),
             gap: Default::default(),
@@ -165,7 +175,7 @@ impl Default for Retime {
 impl Logic for Retime {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, sr, cnt, rem, lvl, run, dark, hi, lo, gap, pair, slip);
+        dff_setup!(self, clock, sr, cnt, rem, lvl, run, dark, since, hi, lo, gap, pair, slip);
         // A bit boundary in the first or the second half of this clock (the
         // bit grid runs always; without buffered bits it sends idles).
         self.send0.next = self.rem.q.val() == 0;
@@ -199,13 +209,18 @@ impl Logic for Retime {
         self.under.next =
             (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0);
         self.new_lvl.next = self.lvl.q.val();
-        if (self.send0.val() | self.send1.val()) & (self.dark.q.val() == 0) & !self.under.val() {
+        if (self.send0.val() | self.send1.val()) & !self.dark.q.val() & !self.under.val() {
             // An idle bit (NRZI 1: the level toggles); not at an underflow,
             // which starts the dark time.
             self.new_lvl.next = !self.lvl.q.val();
         }
-        if (self.send0.val() | self.send1.val()) & (self.dark.q.val() != 0) {
-            self.dark.d.next = self.dark.q.val() - 1;
+        if (self.send0.val() | self.send1.val())
+            & self.dark.q.val()
+            & (self.since.q.val() >= self.quiet_bits.val())
+        {
+            // The bit starting at the next boundary is QUIET_BITS after the
+            // last edge: the dark time is over.
+            self.dark.d.next = false;
         }
         if self.take.val() {
             // Code bits, not levels, are buffered, so the line stays
@@ -231,6 +246,14 @@ impl Logic for Retime {
             }
         }
         self.lvl.d.next = self.new_lvl.val();
+        // Bit boundaries since the last edge sent (saturating).
+        if self.send0.val() | self.send1.val() {
+            if self.new_lvl.val() != self.lvl.q.val() {
+                self.since.d.next = 0.into();
+            } else if self.since.q.val() != 31 {
+                self.since.d.next = self.since.q.val() + 1;
+            }
+        }
         // The length of the bit starting now: 4 half clocks, or a correction.
         self.len.next = 4.into();
         if self.run.q.val() & (self.gap.q.val() >= self.gap_min.val()) {
@@ -296,7 +319,7 @@ impl Logic for Retime {
         self.rem.d.next = self.rem_next.val();
         self.cnt.d.next = self.cnt_next.val();
         self.slip.d.next = false;
-        if self.dark.q.val() != 0 {
+        if self.dark.q.val() {
             // Dark after an underflow: what arrives is not sent.
             self.cnt_next.next = 0.into();
         }
@@ -316,11 +339,12 @@ impl Logic for Retime {
             self.cnt.d.next = 0.into();
         }
         if self.under.val() {
-            // Underflow (the input stopped): the line stays dark for
-            // DARK_BITS, so that downstream receivers mute and drop a word
-            // that was cut short (its last bits would otherwise be
-            // completed by idles), then idles again.
-            self.dark.d.next = self.dark_bits.val();
+            // Underflow (the input stopped): the line stays dark until
+            // QUIET_BITS after its last edge, so that downstream receivers
+            // mute and drop a word that was cut short (its last bits would
+            // otherwise be completed by idles) and downstream forwarders
+            // end the packet, then idles again.
+            self.dark.d.next = true;
         }
         self.o_line.next = self.pair.q.val();
         self.o_slip.next = self.slip.q.val();

@@ -492,6 +492,7 @@ impl Logic for Slave {
         // no downstream receiver splices the old source with the new.
         self.dark.clock.next = self.clock.val();
         self.dark.i_change.next = self.swc.o_change.val();
+        self.dark.i_keep_po.next = false;
         self.dark.i_po.next = self.sbox.o_po.val();
         self.dark.i_so.next = self.sbox.o_so.val();
         self.o_po.next = self.dark.o_po.val();

@@ -34,8 +34,11 @@
 //! INPUT of its row of Table 1, headers carry RWC, no SEC is sent, BSS
 //! carries TST), reintegrates ([`UNWRAP_LEAD_BITS`] before a period tick
 //! when it is the WD end), and sends RECONFIG alarms in its home slot; after
-//! every change both outputs are dark for 12 bit times ([`crate::sw_dark`]),
-//! and a packet the relay was holding from the old BSR line is dropped.
+//! every change its outputs are dark for 12 bit times ([`crate::sw_dark`]) —
+//! but for PO between N and WU, where PO carries its own frame generator
+//! before and after, so a wrap never cuts the frame it is sending (issue
+//! 19) — and a packet the relay was holding from the old BSR line is
+//! dropped.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -745,6 +748,9 @@ impl Logic for SpecialMaster {
         // no downstream receiver splices the old source with the new.
         self.dark.clock.next = self.clock.val();
         self.dark.i_change.next = self.swc.o_change.val();
+        // PO carries the frame generator in N and in WU: a change between
+        // the two (into or out of WU) does not cut the SM's own frame.
+        self.dark.i_keep_po.next = self.swc.o_relink.val();
         self.dark.i_po.next = self.sbox.o_po.val();
         self.dark.i_so.next = self.sbox.o_so.val();
         self.o_po.next = self.dark.o_po.val();

@@ -5,7 +5,7 @@
 //! receive chain ([`crate::monitor`]) decodes.
 //!
 //! Channel failure `o_cf` is any of:
-//! - loss of signal (no line transition for 24 bit times, from the CDR);
+//! - loss of signal (no line transition for 32 bit times, from the CDR);
 //! - 8 consecutive bad words (parity or code errors; VOID words are not bad),
 //!   until the next good word, or until the switchbox moves the input to
 //!   another line (`i_flush`: a run is a property of one channel; carried

@@ -117,6 +117,12 @@ pub struct Options {
     /// Record every tick's ports for a replay in another simulator
     /// ([`Report::recording`]).
     pub record: bool,
+    /// Print to stderr, per cycle and DATA-carrying fibre, every word the
+    /// RTL's monitor decoded (the model's beside it in brackets where they
+    /// differ, before the window rules), and every fault injection and
+    /// switchbox change with its tick: the run as a table to read next to
+    /// the golden trace.
+    pub dump: bool,
 }
 
 /// What the RTL ring does not model yet, as a message naming the field.
@@ -220,6 +226,8 @@ struct Ring {
     /// Per slot, whether its Alive bit runs inverted against the model's
     /// since the last recovery window (None: not yet seen after it).
     alive_inv: Vec<Option<bool>>,
+    /// [`Options::dump`].
+    dump: bool,
 }
 
 impl Ring {
@@ -338,6 +346,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         capn,
         whole: vec![false; cfg.cycles as usize],
         alive_inv: vec![Some(false); s],
+        dump: opts.dump,
     };
     let t1 = Instant::now();
     let mut rng = Rng::new(opts.seed ^ cfg.seed);
@@ -638,6 +647,12 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             };
             if due {
                 fault_ticks[idx] = Some(r.ticks);
+                if r.dump {
+                    eprintln!(
+                        "tick {}: fault {idx} injected (frames sent {sent})",
+                        r.ticks
+                    );
+                }
                 r.cfg(sel, fd, val);
                 faults.remove(i);
             } else {
@@ -652,6 +667,13 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                     if m != modes[k] {
                         modes[k] = m;
                         mode_ticks.push((k, r.ticks, m));
+                        if r.dump {
+                            let name = ["N", "WU", "WD"].get(m as usize).unwrap_or(&"?");
+                            eprintln!(
+                                "tick {}: node {k} switchbox -> {name} (frames sent {sent})",
+                                r.ticks
+                            );
+                        }
                     }
                     if fs_ticks[k].is_none() && r.rd(k, st::FS) == 1 {
                         fs_ticks[k] = Some(r.ticks);
@@ -1040,6 +1062,30 @@ fn stranded(cfg: &Config, rec: &CycleRecord) -> bool {
     cfg.writer.iter().any(|w| !rec.path.contains(w))
 }
 
+/// [`Options::dump`]: one fibre's capture of cycle `c`, the model's word
+/// in brackets where it differs; `?` marks a header not written this cycle.
+fn dump_fibre(r: &mut Ring, f: usize, c: u32, frame: &ring::Frame) {
+    let b = (c & 3) as usize;
+    let capn = r.capn;
+    let mut line = format!("cycle {c} {}:", fibre_name(f, r.h1_seen.len() / 2));
+    for i in 0..2 {
+        let e = r.cap(f, 4 * capn + 2 * b + i);
+        let stale = if fresh(e, c) { "" } else { "?" };
+        line += &format!(" H{i} {:04x}{stale}", e & 0xffff);
+    }
+    line += " |";
+    for (slot, w) in frame.words.iter().enumerate() {
+        let g = cap_slot(r.cap(f, b * capn + slot), c);
+        let (want, got) = (slot_token(w), slot_token(&g));
+        if want == got {
+            line += &format!(" {got}");
+        } else {
+            line += &format!(" {got}[{want}]");
+        }
+    }
+    eprintln!("{line}");
+}
+
 /// Compares every fibre's capture of cycle `c` with the model.
 fn compare_cycle(
     r: &mut Ring,
@@ -1146,6 +1192,9 @@ fn compare_cycle(
                         };
                         push(format!("H{i}"), format!("{want:04x}"), g);
                     }
+                }
+                if r.dump {
+                    dump_fibre(r, f, c, frame);
                 }
                 for (slot, w) in frame.words.iter().enumerate() {
                     let e = r.cap(f, b * capn + slot);

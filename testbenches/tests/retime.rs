@@ -10,7 +10,8 @@
 use merkur_model::line::{nrzi_encode, push_group, DATA_CODES};
 use merkur_rtl::{
     cdr::{Cdr, LOS_SAMPLES, MUTE_SAMPLES},
-    retime::{Retime, DARK_BITS},
+    fwd::DEAD_CLOCKS,
+    retime::Retime,
     verilog::block_verilog,
 };
 use merkur_testbenches::{line_samples, sample_words, verilator::Model, Rng, SAMPLES_PER_BIT};
@@ -161,10 +162,12 @@ fn a_stopped_input_leaves_the_line_dark_then_idles() {
             .max_by_key(|&(_, g)| g)
             .unwrap();
         let ctx = format!("seed {seed} (MERKUR_SEED), round {round}, {delta_ppm} ppm");
-        // Dark from the last data edge: the zeros read until the CDR muted,
-        // the underflow without an edge, DARK_BITS more.
+        // Dark from the last data edge long enough for the next node's
+        // receiver to mute and its forwarder to see a dead input (plus 2
+        // bit times of margin): it ends the packet the input stopped in.
+        let dead = DEAD_CLOCKS / 2;
         assert!(
-            gap >= 4 * (mute + DARK_BITS) - 2,
+            gap >= 4 * (mute + dead + 2),
             "{ctx}: the output was dark for only {gap} half clocks"
         );
         assert!(

@@ -126,6 +126,53 @@ fn ring8_bit_errors_agree_with_the_model() {
     passes("ring8_parity.toml");
 }
 
+/// Issue 19 (`tb-data/ring8_sm_so_break.toml`): a break of the special
+/// master's own SO wraps node 7 (WD) and the special master (WU, in the
+/// middle of its own frame) and nothing else — with the scenario's clock
+/// offsets, with a host write to the special master's slot 8 in flight, and
+/// with three sets of offsets drawn within ±1000 ppm (both extremes on
+/// neighbours among them). The RTL took this ring into failsafe.
+#[test]
+fn a_break_of_the_special_masters_own_so_wraps_two_nodes_only() {
+    let seed = Rng::seed(0x5150);
+    let name = "ring8_sm_so_break.toml";
+    let base = load(name);
+    let mut variants = vec![("as written".to_string(), base.clone())];
+    let mut with_write = base.clone();
+    with_write.host_writes.push((4, 0, 8, 0x4242));
+    variants.push(("a host write to slot 8 in cycle 4".into(), with_write));
+    let mut rng = Rng::new(seed);
+    for k in 0..3 {
+        let mut cfg = base.clone();
+        for nd in cfg.nodes.iter_mut() {
+            nd.ppm = (rng.below(2001) as f64 - 1000.0).round();
+        }
+        let i = rng.below(8) as usize;
+        cfg.nodes[i].ppm = 1000.0;
+        cfg.nodes[(i + 1) % 8].ppm = -1000.0;
+        let ppm: Vec<f64> = cfg.nodes.iter().map(|x| x.ppm).collect();
+        variants.push((format!("offsets #{k} {ppm:?}"), cfg));
+    }
+    for (what, cfg) in &variants {
+        let recs = ring::run(cfg);
+        let last = recs.last().unwrap();
+        // The model: exactly the two ends of the link wrap, no failsafe.
+        let modes: Vec<String> = last.nodes.iter().map(|x| format!("{:?}", x.mode)).collect();
+        assert_eq!(
+            modes,
+            ["Wu", "N", "N", "N", "N", "N", "N", "Wd"],
+            "{what}: the model's final modes"
+        );
+        assert!(
+            last.nodes.iter().all(|x| !x.failsafe),
+            "{what}: model failsafe"
+        );
+        // The RTL agrees through the window and exactly after it (final
+        // modes and failsafe included).
+        agrees(&format!("{name}, {what}"), cfg, &recs, seed);
+    }
+}
+
 #[test]
 fn ring8_failsafe_request_agrees_with_the_model() {
     passes("ring8_failsafe_request.toml");
