@@ -6,9 +6,10 @@
 //! (primary and secondary) and every node death but the special master's;
 //! double faults (the second 4 cycles after the first, on a link the first
 //! did not darken), all or a seeded sample; repairs of every fibre;
-//! bit-error runs at given bit error rates (line bits of every packet on
-//! every fibre, at most one per packet and fibre, which is what the harness
-//! can place); faults on the special master's own four fibres with and
+//! double breaks, both repaired (out of failsafe); bit-error runs at given
+//! bit error rates (line bits of every packet on every fibre, at most one
+//! per packet and fibre, which is what the harness can place) and bursts
+//! of garbage; faults on the special master's own four fibres with and
 //! without host writes in flight; clock-offset runs (fault-free, a break,
 //! every node at an extreme alternating round the ring). Every case runs
 //! its nodes at clock offsets drawn from its own seed within ±`--ppm`
@@ -32,6 +33,11 @@ use std::time::Instant;
 
 /// Cycle of the (first) fault in generated cases.
 const FAULT_CYCLE: u32 = 3;
+/// Bit-error runs: cycles with errors (1 ..= this), then
+/// [`CLEAN_CYCLES`] without, to see the ring heal.
+const BER_CYCLES: u32 = 8;
+/// Bit-error runs: clean cycles after the errors.
+const CLEAN_CYCLES: u32 = 5;
 
 /// What to run.
 pub struct Plan {
@@ -49,6 +55,8 @@ pub struct Plan {
     pub ber: Vec<f64>,
     /// Runs per bit error rate.
     pub ber_runs: usize,
+    /// Burst runs per ring (and one long burst).
+    pub bursts: usize,
     /// Every case's nodes run at offsets drawn within ±this many ppm.
     pub ppm: f64,
     /// Repair cases.
@@ -65,6 +73,11 @@ pub struct Plan {
     pub wave: Option<PathBuf>,
     /// Write the one case `case` names as a scenario file here.
     pub export: Option<PathBuf>,
+    /// Run the model only (the protocol's behaviour, many runs cheaply):
+    /// no RTL, no comparison.
+    pub model_only: bool,
+    /// Only cases of these classes (empty: all).
+    pub only: Vec<String>,
 }
 
 /// One case's result (a row of the JSON report).
@@ -107,6 +120,17 @@ pub struct CaseResult {
     /// Model: cycles from the first fault until every live node's memory
     /// equals the fault-free ring's for good (None: never in the run).
     pub cycles_to_recover: Option<u32>,
+    /// Model: cycles after the cycle of the last fault (for bit errors: the
+    /// last cycle with errors) until every live node's memory equals the
+    /// fault-free ring's for good (None: never in the run).
+    #[serde(default)]
+    pub cycles_after_last: Option<u32>,
+    /// Bit-error cases: the bit error rate.
+    #[serde(default)]
+    pub ber: Option<f64>,
+    /// Whether the RTL ran (false: `--model-only`).
+    #[serde(default = "yes")]
+    pub rtl: bool,
     /// RTL: bit times from the first fault to the first switchbox change.
     pub detect_bits: Option<f64>,
     /// RTL: bit times from the first fault to the last switchbox change it
@@ -141,6 +165,12 @@ struct Case {
     class: &'static str,
     cfg: Config,
     seed: u64,
+    /// Bit-error cases: the rate.
+    ber: Option<f64>,
+}
+
+fn yes() -> bool {
+    true
 }
 
 fn hash_name(seed: u64, name: &str) -> u64 {
@@ -220,6 +250,7 @@ impl Planner<'_> {
             class,
             cfg,
             seed,
+            ber: None,
         });
     }
     /// A seeded stream for a choice named `what`.
@@ -276,7 +307,9 @@ fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
     if plan.repairs {
         repair_cases(&mut p);
     }
+    double_repair_cases(&mut p);
     ber_cases(&mut p);
+    burst_cases(&mut p);
     offset_cases(&mut p);
     p.out
 }
@@ -434,15 +467,131 @@ fn repair_cases(p: &mut Planner) {
     }
 }
 
-/// Bit-error runs: per rate, `ber_runs` runs of 10 cycles.
+/// Double breaks, both repaired (protocol §12, issue 28): two fibres of
+/// different links break in cycles 3 and 7 (the second takes the ring into
+/// failsafe) and are repaired in cycles 9 and 10; the case runs 14 cycles
+/// past the last repair (reintegration in failsafe, link by link where a
+/// node was cut off, two frames back whole, the CLR frames). 8 seeded
+/// pairs per ring; with `--full` every ordered pair on rings of up to 16
+/// nodes, 8 on bigger ones, 4 on 100 nodes.
+fn double_repair_cases(p: &mut Planner) {
+    let n = p.clean.nodes.len();
+    let second = FAULT_CYCLE + 4;
+    let mut pairs = vec![];
+    for a in 0..2 * n {
+        for b in 0..2 * n {
+            // Fibre k < n is P(k), else S(k − n); both on link k mod n.
+            if a % n != b % n {
+                pairs.push((a, b));
+            }
+        }
+    }
+    let k = match (p.plan.full, n) {
+        (true, 0..=16) => None,
+        (true, 17..=32) | (false, _) => Some(8),
+        (true, _) => Some(4),
+    };
+    if let Some(k) = k {
+        sample(&mut pairs, k, &mut p.rng("double-repairs"));
+    }
+    let fibre = |x: usize| if x < n { Fibre::P(x) } else { Fibre::S(x - n) };
+    for (a, b) in pairs {
+        let (fa, fb) = (fibre(a), fibre(b));
+        let (ra, rb) = (second + 2, second + 3);
+        let mut cfg = p.clean.clone();
+        cfg.cycles = rb + 14;
+        let brk = |fibre| Fault::Break { fibre, slot: None };
+        let rep = |fibre| Fault::Repair { fibre, slot: None };
+        cfg.faults = vec![
+            (FAULT_CYCLE, brk(fa)),
+            (second, brk(fb)),
+            (ra, rep(fb)),
+            (rb, rep(fa)),
+        ];
+        p.push(
+            format!(
+                "{}/double-repair/{fa}@{FAULT_CYCLE}+{fb}@{second}-{ra}-{rb}",
+                p.ring
+            ),
+            "double-repair",
+            cfg,
+        );
+    }
+}
+
+/// Bit-error runs: per rate, `ber_runs` runs: errors in cycles 1 …
+/// [`BER_CYCLES`], then [`CLEAN_CYCLES`] clean ones.
 fn ber_cases(p: &mut Planner) {
     for &ber in &p.plan.ber {
         for run in 0..p.plan.ber_runs {
             let name = format!("{}/ber/{ber:e}#{run}", p.ring);
             let mut cfg = p.clean.clone();
-            cfg.cycles = 10;
+            cfg.cycles = 1 + BER_CYCLES + CLEAN_CYCLES;
             cfg.faults = ber_flips(&cfg, ber, hash_name(p.plan.seed, &name));
             p.push(name, "bit-errors", cfg);
+            if let Some(c) = p.out.last_mut() {
+                c.ber = Some(ber);
+            }
+        }
+    }
+}
+
+/// Bursts of garbage (protocol §4, scenario `kind = "burst"`): `bursts`
+/// runs per ring, one burst each in cycle 3 on a seeded primary fibre, from
+/// a seeded line bit of the frame that starts with an edge (which the RTL
+/// harness places exactly), 1 … 100 bit times long, then clean; and one of
+/// 250 bit times (ten words: a run of bad words on that fibre, a soft wrap
+/// that reintegrates, §9).
+fn burst_cases(p: &mut Planner) {
+    let n = p.clean.nodes.len();
+    let recs = ring::run(&p.clean);
+    let c = FAULT_CYCLE;
+    let w = p.clean.word_bits() as usize;
+    let room = (2 + p.clean.slots) * w;
+    for run in 0..p.plan.bursts + 1 {
+        let name = format!("{}/burst/#{run}", p.ring);
+        let mut r = Rng::new(hash_name(p.plan.seed, &name));
+        let long = run == p.plan.bursts;
+        let len = if long { 250 } else { 1 + r.below(100) as usize };
+        let k = r.below(n as u64) as usize;
+        let Carry::Data(fr) = &recs[c as usize].fibres[k] else {
+            continue;
+        };
+        // Line bits from H0's first on whose code bit is 1, with room for
+        // the burst before the frame ends.
+        let ones: Vec<usize> = code_ones(&p.clean, fr)
+            .into_iter()
+            .filter(|&b| b >= 10 && b - 10 + len <= room)
+            .map(|b| b - 10)
+            .collect();
+        if ones.is_empty() {
+            continue;
+        }
+        // (A few tries: garbage that makes H1 another good header word
+        // cannot be placed by the RTL harness, ring_sim::flip_unsupported.)
+        for _ in 0..8 {
+            let at = ones[r.below(ones.len() as u64) as usize];
+            let target = match at / w {
+                0 => FlipTarget::H0,
+                1 => FlipTarget::H1,
+                s => FlipTarget::Slot(s - 2),
+            };
+            let mut cfg = p.clean.clone();
+            cfg.cycles = c + 1 + CLEAN_CYCLES + 2;
+            cfg.faults = vec![(
+                c,
+                Fault::Burst {
+                    fibre: Fibre::P(k),
+                    target,
+                    bit: (at % w) as u32,
+                    len: len as u32,
+                    pattern: r.below(256) as u8,
+                },
+            )];
+            if ring_sim::unsupported(&cfg).is_none() {
+                p.push(name, "burst", cfg);
+                break;
+            }
         }
     }
 }
@@ -487,13 +636,14 @@ fn offset_cases(p: &mut Planner) {
 }
 
 /// Seeded line-bit errors at rate `ber` on every packet of every fibre of
-/// the fault-free run (cycles 1 …), at most one per packet and fibre.
+/// the fault-free run in cycles 1 ..= [`BER_CYCLES`], at most one per
+/// packet and fibre.
 fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
     let recs = ring::run(cfg);
     let n = cfg.nodes.len();
     let mut r = Rng::new(seed);
     let mut v = vec![];
-    for rec in recs.iter().skip(1).take(cfg.cycles as usize - 2) {
+    for rec in recs.iter().skip(1).take(BER_CYCLES as usize) {
         // Words already hit in this cycle (on any fibre): a second flip in
         // a word that travels on damaged is a double error, which these
         // runs do not inject (the report says so).
@@ -612,6 +762,19 @@ fn sm_input(cfg: &Config, recs: &[CycleRecord], c: usize) -> usize {
     }
 }
 
+/// Whether cycle c's frame came back whole to the special master: its
+/// header good (a damaged one hides the frame from every node after the
+/// damage) and every word there.
+fn returned_whole(cfg: &Config, recs: &[CycleRecord], c: usize) -> bool {
+    match &recs[c].fibres[sm_input(cfg, recs, c)] {
+        Carry::Data(fr) => {
+            matches!(fr.hdr, merkur_model::ring::HeaderRx::Ok(_))
+                && !fr.words.iter().any(|w| matches!(w, Slot::Missing))
+        }
+        _ => false,
+    }
+}
+
 /// Per slot, whether it came back good to the special master in cycle c.
 fn returned(cfg: &Config, recs: &[CycleRecord], c: usize) -> Vec<bool> {
     match &recs[c].fibres[sm_input(cfg, recs, c)] {
@@ -648,7 +811,7 @@ fn delivered(cfg: &Config, rec: &CycleRecord) -> Vec<u16> {
     v
 }
 
-fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
+fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     let cfg = &case.cfg;
     let recs = ring::run(cfg);
     let mut clean_cfg = cfg.clone();
@@ -658,7 +821,7 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
         .faults
         .iter()
         .copied()
-        .filter(|(_, f)| !matches!(f, Fault::Flip { .. }))
+        .filter(|(_, f)| !matches!(f, Fault::Flip { .. } | Fault::Burst { .. }))
         .collect();
     let dead = cfg.killed();
     let last = recs.last().expect("cycles > 0");
@@ -672,11 +835,7 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
     for c in 0..recs.len() {
         let (a, b) = (returned(cfg, &recs, c), returned(cfg, &clean, c));
         words_lost += a.iter().zip(&b).filter(|(x, y)| **y && !**x).count() as u64;
-        let whole = |rs: &[CycleRecord]| match &rs[c].fibres[sm_input(cfg, rs, c)] {
-            Carry::Data(fr) => !fr.words.iter().any(|w| matches!(w, Slot::Missing)),
-            _ => false,
-        };
-        if whole(&clean) && !whole(&recs) {
+        if returned_whole(cfg, &clean, c) && !returned_whole(cfg, &recs, c) {
             cycles_lost += 1;
         }
     }
@@ -691,6 +850,12 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
     }
     let cycles_to_recover = match (first_fault, from) {
         (Some(c), Some(f)) => Some(f.saturating_sub(c)),
+        (None, _) => Some(0),
+        _ => None,
+    };
+    let last_fault = cfg.faults.iter().map(|&(c, _)| c).max();
+    let cycles_after_last = match (last_fault, from) {
+        (Some(c), Some(f)) => Some(f.saturating_sub(c + 1)),
         (None, _) => Some(0),
         _ => None,
     };
@@ -720,6 +885,9 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
         cycles_lost,
         rtl_cycles_lost: 0,
         cycles_to_recover,
+        cycles_after_last,
+        ber: case.ber,
+        rtl: !model_only,
         detect_bits: None,
         switchover_bits: None,
         failsafe_bits: None,
@@ -728,6 +896,9 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
         accepted: 0,
         wall_s: 0.0,
     };
+    if model_only {
+        return res;
+    }
     if let Some(why) = ring_sim::unsupported(cfg) {
         res.mismatches = 1;
         res.first = vec![format!("not simulated in RTL: {why}")];
@@ -748,13 +919,7 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
     };
     res.wall_s = rep.wall.as_secs_f64();
     res.rtl_cycles_lost = (0..recs.len())
-        .filter(|&c| {
-            let whole_clean = match &clean[c].fibres[sm_input(cfg, &clean, c)] {
-                Carry::Data(fr) => !fr.words.iter().any(|w| matches!(w, Slot::Missing)),
-                _ => false,
-            };
-            whole_clean && !rep.returned_whole[c]
-        })
+        .filter(|&c| returned_whole(cfg, &clean, c) && !rep.returned_whole[c])
         .count() as u32;
     res.words = rep.words;
     res.mismatches = rep.mismatches.len();
@@ -807,7 +972,7 @@ fn run_case(case: &Case, wave: Option<&Path>) -> CaseResult {
         if let Some(Some(tl)) = cfg
             .faults
             .iter()
-            .rposition(|(_, f)| !matches!(f, Fault::Flip { .. }))
+            .rposition(|(_, f)| !matches!(f, Fault::Flip { .. } | Fault::Burst { .. }))
             .map(|i| rep.fault_ticks[i])
         {
             let live: Vec<Option<u64>> = rep
@@ -887,6 +1052,27 @@ fn all_cases(plan: &Plan) -> Result<Vec<Case>, String> {
         }
         cases.extend(cases_of(&ring_name, &base, plan));
     }
+    if !plan.only.is_empty() {
+        let known = [
+            "break-primary",
+            "break-secondary",
+            "node-death",
+            "sm-fibres",
+            "double",
+            "repair",
+            "double-repair",
+            "bit-errors",
+            "burst",
+            "clock-offset",
+        ];
+        if let Some(bad) = plan.only.iter().find(|c| !known.contains(&c.as_str())) {
+            return Err(format!(
+                "error: --only {bad}: not a class; the classes are {}",
+                known.join(", ")
+            ));
+        }
+        cases.retain(|c| plan.only.iter().any(|o| o == c.class));
+    }
     if let Some(want) = &plan.case {
         cases.retain(|c| &c.name == want);
         if cases.is_empty() {
@@ -941,6 +1127,9 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
     );
     // Build (or find) each ring's Verilator model once, before the workers.
     let mut built = std::collections::BTreeSet::new();
+    if plan.model_only {
+        built.extend(mine.iter().map(|c| c.ring.clone()));
+    }
     for c in &mine {
         if built.insert(c.ring.clone()) {
             let kinds: Vec<Kind> = c.cfg.nodes.iter().map(|x| x.kind).collect();
@@ -966,7 +1155,7 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
             s.spawn(|| loop {
                 let i = next.fetch_add(1, Ordering::SeqCst);
                 let Some(case) = mine.get(i) else { break };
-                let r = run_case(case, plan.wave.as_deref());
+                let r = run_case(case, plan.wave.as_deref(), plan.model_only);
                 let bad = r.mismatches > 0;
                 let d = done.fetch_add(1, Ordering::SeqCst) + 1;
                 let mut all = results.lock().unwrap_or_else(|e| e.into_inner());
@@ -1066,7 +1255,11 @@ pub fn markdown(r: &Report) -> String {
     for c in &r.commands {
         o += &format!("    {c}\n");
     }
-    o += "\nEvery case runs the ring through the reference model and through the RTL (Verilator) and compares them under the recovery-window rules of docs/protocol.md §13. *Model* columns are the protocol's behaviour (the RTL agreed wherever mismatches are 0); *RTL* columns are measured in the Verilator run (switchbox and failsafe states polled every 2 bit times). Times in µs are at the ring's line rate.\n\n";
+    if r.cases.iter().all(|c| !c.rtl) {
+        o += "\n**Model only** (`--model-only`): every case ran through the reference model, none through the RTL, so nothing was compared and the *RTL* columns are empty; the *model* columns are the protocol's behaviour.\n\n";
+    } else {
+        o += "\nEvery case runs the ring through the reference model and through the RTL (Verilator) and compares them under the recovery-window rules of docs/protocol.md §13. *Model* columns are the protocol's behaviour (the RTL agreed wherever mismatches are 0); *RTL* columns are measured in the Verilator run (switchbox and failsafe states polled every 2 bit times). Times in µs are at the ring's line rate.\n\n";
+    }
     let mism: usize = r.cases.iter().filter(|c| c.mismatches > 0).count();
     let accepted: u32 = r.cases.iter().map(|c| c.accepted).sum();
     let flips: u32 = r.cases.iter().map(|c| c.flips).sum();
@@ -1126,6 +1319,7 @@ pub fn markdown(r: &Report) -> String {
             cs.iter().map(|c| c.accepted).sum::<u32>(),
         );
     }
+    o += &ber_table(r);
     let bad: Vec<&CaseResult> = r.cases.iter().filter(|c| c.mismatches > 0).collect();
     if !bad.is_empty() {
         o += "\n## Cases with mismatches\n\n";
@@ -1142,6 +1336,46 @@ pub fn markdown(r: &Report) -> String {
         }
     }
     o += "\nColumns: *healed* — after a structural fault every live node is out of failsafe at the end (model); *words lost* — slot words that came back to the special master good in the fault-free ring but not in this one (the cut frame's rest and the RECONFIG alarms' home slots); *frames lost* — frames that did not come back whole to the special master where the fault-free ring's did (model / RTL monitors: a break in the last ~100 bit times of a frame also costs the next frame's head in RTL, protocol §13); *cycles to recover* — from the first fault until every live node holds what the fault-free ring's nodes hold, for good; *detection* — from the fault to the first switchbox change (RTL); *switchover* — to the last one it caused, the ring wrapped at both ends (RTL); *failsafe latency* — from the second fault until every live node is in failsafe (RTL); *accepted* — flipped words a receiver took as good.\n";
+    o
+}
+
+/// The bit-error runs by ring and rate: what a rate costs (model).
+fn ber_table(r: &Report) -> String {
+    let mut by: BTreeMap<(usize, String, u64), Vec<&CaseResult>> = BTreeMap::new();
+    for c in r.cases.iter().filter(|c| c.class == "bit-errors") {
+        let rate = c.ber.unwrap_or(0.0);
+        // Keyed by the rate's bits, highest rate first.
+        by.entry((c.nodes, c.ring.clone(), u64::MAX - rate.to_bits()))
+            .or_default()
+            .push(c);
+    }
+    if by.is_empty() {
+        return String::new();
+    }
+    let mut o = format!("\n## Bit errors by rate\n\nErrors in cycles 1 … {BER_CYCLES} (at most one per packet and fibre), then {CLEAN_CYCLES} clean cycles. *Healthy after* — cycles after the last cycle with errors until every live node's memory equals the fault-free ring's for good (model).\n\n");
+    o += "| ring | BER | runs | runs in failsafe at the end | flips (mean) | words lost (mean / max) | frames lost (mean / max) | healthy after, cycles (max) |\n";
+    o += "|---|---|---|---|---|---|---|---|\n";
+    for ((_, ring, _), cs) in &by {
+        let n = cs.len() as f64;
+        let mean = |f: &dyn Fn(&CaseResult) -> f64| cs.iter().map(|c| f(c)).sum::<f64>() / n;
+        let never = cs.iter().filter(|c| c.cycles_after_last.is_none()).count();
+        let after = match cs.iter().filter_map(|c| c.cycles_after_last).max() {
+            Some(m) if never == 0 => m.to_string(),
+            Some(m) => format!("{m}; never in {never}"),
+            None => format!("never in {never}"),
+        };
+        o += &format!(
+            "| {ring} | {:e} | {} | {} | {:.1} | {:.1} / {} | {:.2} / {} | {after} |\n",
+            cs[0].ber.unwrap_or(0.0),
+            cs.len(),
+            cs.iter().filter(|c| c.failsafe).count(),
+            mean(&|c| c.flips as f64),
+            mean(&|c| c.words_lost as f64),
+            cs.iter().map(|c| c.words_lost).max().unwrap_or(0),
+            mean(&|c| c.cycles_lost as f64),
+            cs.iter().map(|c| c.cycles_lost).max().unwrap_or(0),
+        );
+    }
     o
 }
 

@@ -94,6 +94,8 @@ pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
                     )
                 }
                 EventKind::Failsafe(c) => format!("enters FAILSAFE ({c})"),
+                EventKind::FailsafeExit => "leaves FAILSAFE (the ring is whole again)".to_string(),
+                EventKind::FsClear => "its host allows the ring out of failsafe".to_string(),
                 EventKind::AliveLost { slot } => format!("alive lost in slot {slot}"),
                 EventKind::AliveRestored { slot } => format!("alive back in slot {slot}"),
                 EventKind::SecFail => "secondary test frame did not return".to_string(),

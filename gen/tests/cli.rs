@@ -239,8 +239,9 @@ fn verilog_writes_the_ring_and_the_waivers() {
 
 /// The bounded fault-injection campaign (issue 5, README): every single
 /// fibre break and node death of the 8-node ring, the special master's own
-/// four fibres (issue 19), a seeded sample of double faults, one bit error
-/// rate and clock-offset runs, through RTL and model, every case at its own
+/// four fibres (issue 19), a seeded sample of double faults and of repaired
+/// double breaks (issue 28), one bit error rate, bursts and clock-offset
+/// runs, through RTL and model, every case at its own
 /// drawn clock offsets; any mismatch or accepted bit error fails. Shards
 /// merge to the same report; a case exported as a scenario runs as the
 /// campaign ran it.
@@ -260,6 +261,8 @@ fn bounded_campaign_agrees_with_the_model() {
         "bit-errors",
         "clock-offset",
         "sm-fibres",
+        "double-repair",
+        "burst",
     ] {
         assert!(
             md.contains(&format!("| ring8 | {class} |")),
@@ -277,10 +280,20 @@ fn bounded_campaign_agrees_with_the_model() {
     // The special master's four fibres, three points each, with and
     // without host writes.
     assert_eq!(json.matches("\"class\": \"sm-fibres\"").count(), 24);
-    // Every case at its own offsets within ±1000 ppm, both extremes on
-    // neighbours in each; not two cases alike.
+    // Repaired double breaks: every one leaves failsafe (model; the RTL
+    // agreed: no mismatches above).
     let report: serde_json::Value = serde_json::from_str(&json).unwrap();
     let cases = report["cases"].as_array().unwrap();
+    let repaired: Vec<_> = cases
+        .iter()
+        .filter(|c| c["class"] == "double-repair")
+        .collect();
+    assert_eq!(repaired.len(), 8);
+    for c in repaired {
+        assert!(c["healed"] == true && c["failsafe"] == false, "{c}");
+    }
+    // Every case at its own offsets within ±1000 ppm, both extremes on
+    // neighbours in each; not two cases alike.
     let mut seen = std::collections::BTreeSet::new();
     for c in cases {
         let ppm: Vec<f64> = c["ppm"]

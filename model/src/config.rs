@@ -116,6 +116,21 @@ pub enum Fault {
         /// Line bit within that word.
         bit: u32,
     },
+    /// Garbage on the line for `len` bits of a DATA frame, from line bit
+    /// `bit` of `target` (a header word or a slot) on
+    /// ([`crate::line::garbage`] of `pattern`).
+    Burst {
+        /// The fibre.
+        fibre: Fibre,
+        /// The word it starts in (H0, H1 or a slot).
+        target: FlipTarget,
+        /// Line bit within that word where it starts.
+        bit: u32,
+        /// Line bits of garbage.
+        len: u32,
+        /// Seed of the garbage.
+        pattern: u8,
+    },
 }
 
 impl fmt::Display for Fault {
@@ -126,6 +141,16 @@ impl fmt::Display for Fault {
             Fault::Repair { fibre, slot } => write!(f, "repair {fibre} at {}", at(slot)),
             Fault::Kill { node, slot } => write!(f, "kill node{node} at {}", at(slot)),
             Fault::Flip { fibre, target, bit } => write!(f, "flip {fibre} {target} bit {bit}"),
+            Fault::Burst {
+                fibre,
+                target,
+                bit,
+                len,
+                pattern,
+            } => write!(
+                f,
+                "burst {fibre} {target} bit {bit} for {len} bits (pattern {pattern})"
+            ),
         }
     }
 }
@@ -159,6 +184,9 @@ pub struct NodeCfg {
     pub ppm: f64,
     /// Masters: Alive check enabled on foreign slots.
     pub alive_check: bool,
+    /// Special master: leaves failsafe only after its host's clear command
+    /// too (`fs_exit = "host"`, protocol §12).
+    pub fs_exit_host: bool,
 }
 
 /// A validated scenario.
@@ -194,6 +222,9 @@ pub struct Config {
     pub host_writes: Vec<(u32, usize, usize, u16)>,
     /// Interrupt requests: (cycle, node, line).
     pub irqs: Vec<(u32, usize, IrqLine)>,
+    /// Cycles before which the special master's host writes the failsafe
+    /// clear command (protocol §12).
+    pub fs_clears: Vec<u32>,
     /// Faults: (cycle, fault), in file order.
     pub faults: Vec<(u32, Fault)>,
 }
@@ -284,6 +315,9 @@ impl Config {
                 let _ = writeln!(o, "serves = {}", list(&nd.serves));
                 let _ = writeln!(o, "alive_check = {}", nd.alive_check);
             }
+            if nd.fs_exit_host {
+                let _ = writeln!(o, "fs_exit = \"host\"");
+            }
             let _ = writeln!(o, "ppm = {:?}\n", nd.ppm);
         }
         for (cycle, node, slot, data) in &self.host_writes {
@@ -304,6 +338,9 @@ impl Config {
                 q(line)
             );
         }
+        for cycle in &self.fs_clears {
+            let _ = writeln!(o, "[[fs_clear]]\ncycle = {cycle}\n");
+        }
         for (cycle, f) in &self.faults {
             let _ = writeln!(o, "[[fault]]\ncycle = {cycle}");
             let slot = |o: &mut String, s: &Option<usize>| {
@@ -323,6 +360,26 @@ impl Config {
                 Fault::Kill { node, slot: s } => {
                     let _ = writeln!(o, "kind = \"kill\"\nnode = {node}");
                     slot(&mut o, s);
+                }
+                Fault::Burst {
+                    fibre,
+                    target,
+                    bit,
+                    len,
+                    pattern,
+                } => {
+                    let _ = writeln!(
+                        o,
+                        "kind = \"burst\"\nfibre = \"{fibre}\"\nbit = {bit}\nlength = {len}\npattern = {pattern}"
+                    );
+                    match target {
+                        FlipTarget::Slot(s) => {
+                            let _ = writeln!(o, "slot = {s}");
+                        }
+                        other => {
+                            let _ = writeln!(o, "word = \"{other}\"");
+                        }
+                    }
                 }
                 Fault::Flip { fibre, target, bit } => {
                     let _ = writeln!(o, "kind = \"flip\"\nfibre = \"{fibre}\"\nbit = {bit}");
@@ -367,6 +424,97 @@ pub fn min_period(slots: usize, nodes: usize, ext: bool) -> u32 {
     let f = frame_bits(slots, ext) + MIN_GAP_BITS;
     let latency = nodes as u32 * (NODE_DELAY_BITS + PASS_DELAY_BITS) + word_bits(ext);
     f.max(latency).max(MIN_PERIOD_BITS)
+}
+
+/// A `kind = "burst"` fault (its fibre already read): where it starts
+/// (a header word or a slot, not the start delimiter: garbage there would
+/// move the packet's start), its length, inside the frame, and its pattern.
+fn burst(
+    m: &SourceMap,
+    f: &RawFault,
+    j: usize,
+    fibre: Fibre,
+    slots: usize,
+    ext: bool,
+    seed: u64,
+) -> Result<Fault, ScenarioError> {
+    let w = word_bits(ext);
+    let target = match (&f.word, &f.slot) {
+        (Some(x), None) => match x.get_ref().as_str() {
+            "h0" => FlipTarget::H0,
+            "h1" => FlipTarget::H1,
+            other => {
+                return Err(m.at(
+                    x,
+                    format!("fault[{j}].word = \"{other}\": a burst starts in \"h0\", \"h1\" or a `slot` (not in the start delimiter)"),
+                ))
+            }
+        },
+        (None, Some(sl)) => {
+            let v = *sl.get_ref() as usize;
+            if v >= slots {
+                return Err(m.at(
+                    sl,
+                    format!("fault[{j}].slot = {v}: the frame has slots 0..{}", slots - 1),
+                ));
+            }
+            FlipTarget::Slot(v)
+        }
+        (Some(x), Some(_)) => {
+            return Err(m.at(x, format!("fault[{j}]: give either `word` or `slot`, not both")))
+        }
+        (None, None) => {
+            return Err(m.at(
+                &f.kind,
+                format!("fault[{j}]: kind = \"burst\" needs `slot` or `word` (\"h0\", \"h1\")"),
+            ))
+        }
+    };
+    let b = f.bit.as_ref().expect("checked");
+    if *b.get_ref() >= w {
+        return Err(m.at(
+            b,
+            format!(
+                "fault[{j}].bit = {}: a word has line bits 0..{}",
+                b.get_ref(),
+                w - 1
+            ),
+        ));
+    }
+    let l = f.length.as_ref().expect("checked");
+    let start = match target {
+        FlipTarget::H0 => 0,
+        FlipTarget::H1 => w,
+        FlipTarget::Slot(s) => (2 + s as u32) * w,
+        FlipTarget::Cs => unreachable!("refused above"),
+    } + b.get_ref();
+    let room = (2 + slots as u32) * w - start;
+    if *l.get_ref() == 0 || *l.get_ref() > room {
+        return Err(m.at(
+            l,
+            format!(
+                "fault[{j}].length = {}: a burst from there has 1..={room} line bits before the frame ends",
+                l.get_ref()
+            ),
+        ));
+    }
+    let pattern = match &f.pattern {
+        Some(p) if *p.get_ref() > 255 => {
+            return Err(m.at(
+                p,
+                format!("fault[{j}].pattern = {}: use 0..=255", p.get_ref()),
+            ))
+        }
+        Some(p) => *p.get_ref() as u8,
+        None => (crate::ring::splitmix(seed ^ (j as u64) << 32) & 0xff) as u8,
+    };
+    Ok(Fault::Burst {
+        fibre,
+        target,
+        bit: *b.get_ref(),
+        len: *l.get_ref(),
+        pattern,
+    })
 }
 
 fn slot_list(v: &Option<Spanned<Vec<Spanned<u32>>>>) -> Vec<&Spanned<u32>> {
@@ -492,6 +640,17 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 ));
             }
         }
+        if let Some(x) = &rn.fs_exit {
+            if kind != Kind::SpecialMaster {
+                return Err(m.at(
+                    x,
+                    format!(
+                        "node[{i}].fs_exit: a {} does not decide when the ring leaves failsafe; only the special master does",
+                        kind.name()
+                    ),
+                ));
+            }
+        }
         let mut cfg = NodeCfg {
             kind,
             address,
@@ -499,6 +658,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             serves: vec![],
             ppm,
             alive_check: rn.alive_check.unwrap_or(true),
+            fs_exit_host: rn.fs_exit.as_ref().map(|x| *x.get_ref()) == Some(FsExit::Host),
         };
         match kind {
             Kind::Sensor => {
@@ -680,6 +840,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         let nd = check_node(&q.node, format!("irq[{j}].node"))?;
         irqs.push((c, nd, *q.line.get_ref()));
     }
+    let mut fs_clears = vec![];
+    for (j, q) in raw.fs_clear.iter().enumerate() {
+        fs_clears.push(check_cycle(&q.cycle, format!("fs_clear[{j}].cycle"))?);
+    }
     let mut faults = vec![];
     for (j, f) in raw.fault.iter().enumerate() {
         let c = check_cycle(&f.cycle, format!("fault[{j}].cycle"))?;
@@ -689,6 +853,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             FaultKind::Repair => "repair",
             FaultKind::Kill => "kill",
             FaultKind::Flip => "flip",
+            FaultKind::Burst => "burst",
         };
         let need = |present: bool, field: &str| -> Result<(), ScenarioError> {
             if present {
@@ -740,6 +905,8 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 forbid(spanu(&f.node), "node")?;
                 forbid(span(&f.word), "word")?;
                 forbid(spanu(&f.bit), "bit")?;
+                forbid(spanu(&f.length), "length")?;
+                forbid(spanu(&f.pattern), "pattern")?;
                 let fibre = fibre(j)?;
                 let slot = slot_at(&f.slot)?;
                 if kind == FaultKind::Break {
@@ -753,6 +920,8 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 forbid(span(&f.fibre), "fibre")?;
                 forbid(span(&f.word), "word")?;
                 forbid(spanu(&f.bit), "bit")?;
+                forbid(spanu(&f.length), "length")?;
+                forbid(spanu(&f.pattern), "pattern")?;
                 let ns = f.node.as_ref().expect("checked");
                 let node = check_node(ns, format!("fault[{j}].node"))?;
                 if node == sm {
@@ -766,10 +935,20 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                     slot: slot_at(&f.slot)?,
                 }
             }
+            FaultKind::Burst => {
+                need(f.fibre.is_some(), "fibre")?;
+                need(f.bit.is_some(), "bit")?;
+                need(f.length.is_some(), "length")?;
+                forbid(spanu(&f.node), "node")?;
+                let fibre = fibre(j)?;
+                burst(&m, f, j, fibre, slots, ext, raw.seed)?
+            }
             FaultKind::Flip => {
                 need(f.fibre.is_some(), "fibre")?;
                 need(f.bit.is_some(), "bit")?;
                 forbid(spanu(&f.node), "node")?;
+                forbid(spanu(&f.length), "length")?;
+                forbid(spanu(&f.pattern), "pattern")?;
                 let fibre = fibre(j)?;
                 let target = match (&f.word, &f.slot) {
                     (Some(w), None) => match w.get_ref().as_str() {
@@ -840,6 +1019,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         values,
         host_writes,
         irqs,
+        fs_clears,
         faults,
     })
 }

@@ -19,6 +19,11 @@ pub const CODE_K: u8 = 0b10001;
 pub const CODE_I: u8 = 0b11111;
 /// Set: five of them form the VOID word.
 pub const CODE_S: u8 = 0b11001;
+/// Mark: a forwarder sends it as the last group of a word that arrived bad
+/// (protocol §4), so the next receivers can tell it from a word damaged on
+/// their own fibre. Not a data group, J K cannot be imitated with it, and it
+/// keeps runs of 0 code bits at 3 (`model/tests/line.rs`).
+pub const CODE_T: u8 = 0b01101;
 /// Line bits per code group.
 pub const GROUP_BITS: u32 = 5;
 
@@ -204,6 +209,9 @@ pub enum Rx {
     /// Anything else: parity error or invalid/control group; what its first
     /// group showed.
     Bad(Lead),
+    /// Bad with a T as its last group: a forwarder marked it, it was damaged
+    /// before the fibre it was read on (protocol §4).
+    Marked(Lead),
 }
 
 /// Code bits of a VOID word.
@@ -223,6 +231,12 @@ pub fn decode_word(code_bits: &[u8], ext: bool) -> Rx {
     }
     let first = code_bits[..5].iter().fold(0u8, |a, &b| (a << 1) | (b & 1));
     let lead = lead_of(first);
+    let last = code_bits[code_bits.len() - 5..]
+        .iter()
+        .fold(0u8, |a, &b| (a << 1) | (b & 1));
+    if last == CODE_T {
+        return Rx::Marked(lead);
+    }
     let mut nibs = Vec::with_capacity(groups);
     let mut all_s = true;
     for g in code_bits.chunks(GROUP_BITS as usize) {
@@ -274,6 +288,55 @@ pub fn flip_code_and_decode(
     let first = decode_word(&back[..code.len()], ext);
     let second = next.map(|_| decode_word(&back[code.len()..], ext));
     (first, second)
+}
+
+/// The code bits a forwarder sends for a word that arrived bad (protocol
+/// §4): its first groups as they came (`code`, the word's code bits as
+/// received), the last group replaced by [`CODE_T`].
+pub fn mark_code_bits(code: &[u8]) -> Vec<u8> {
+    let mut v = code[..code.len() - 5].to_vec();
+    push_group(&mut v, CODE_T);
+    v
+}
+
+/// The code bits a fibre carries instead of `len` bits during a burst of
+/// garbage (a scenario's `kind = "burst"`, protocol §4): pseudo-random from
+/// `pattern` (a 16-bit Galois LFSR, taps 0xB400, from `pattern << 8 | 0xA5`,
+/// one step per bit), but the line toggles at least every 3 bit times (no
+/// more than two 0s in a row: the receivers keep their bit lock, nobody
+/// mutes) and never 10 times in a row (no three idle groups: no receiver
+/// ends the packet), and on the first and the last bit. The RTL harness
+/// (`merkur_rtl::ring_top`) makes the same sequence.
+pub fn garbage(pattern: u8, len: usize) -> Vec<u8> {
+    let mut s: u16 = (pattern as u16) << 8 | 0xA5;
+    let (mut zeros, mut ones) = (0, 0);
+    (0..len)
+        .map(|i| {
+            let r = (s & 1) as u8;
+            s >>= 1;
+            if r == 1 {
+                s ^= 0xB400;
+            }
+            let mut g = r;
+            if zeros >= 2 {
+                g = 1;
+            }
+            if ones >= 9 {
+                g = 0;
+            }
+            if i == 0 || i + 1 == len {
+                g = 1;
+            }
+            if g == 1 {
+                ones += 1;
+                zeros = 0;
+            } else {
+                zeros += 1;
+                ones = 0;
+            }
+            g
+        })
+        .collect()
 }
 
 /// Line bits of one word.

@@ -96,8 +96,18 @@ pub enum Slot {
     /// A word that failed parity or held a non-data group; what its first
     /// group showed (cut-through nodes decide from it).
     Bad(Lead),
+    /// A bad word that a forwarder marked (its last group T, protocol §4):
+    /// damaged before the fibre it is read on.
+    Marked(Lead),
     /// Nothing: the line went dark before this slot.
     Missing,
+}
+
+impl Slot {
+    /// Bad, marked or not.
+    pub fn is_bad(&self) -> bool {
+        matches!(self, Slot::Bad(_) | Slot::Marked(_))
+    }
 }
 
 /// Decoded header fields (docs/protocol.md §5).
@@ -113,6 +123,8 @@ pub struct Header {
     pub cyc: u8,
     /// Processing nodes passed so far.
     pub hop: u16,
+    /// CLR, H0's ALIVE bit: leave failsafe (protocol §12).
+    pub clr: bool,
 }
 
 impl Header {
@@ -122,6 +134,7 @@ impl Header {
             data: ((self.fs as u16) << 13)
                 | ((self.rwc as u16) << 12)
                 | ((slots as u16 - 1) & 0xfff),
+            alive: self.clr,
             ..Word::default()
         }
     }
@@ -143,6 +156,7 @@ impl Header {
             rwp: h1.data & (1 << 15) != 0,
             cyc: ((h1.data >> 12) & 7) as u8,
             hop: h1.data & 0xfff,
+            clr: h0.alive,
         })
     }
 }
@@ -167,6 +181,9 @@ pub struct Frame {
     /// (H0, H1; a header whose words are good but whose fields are not is
     /// rejected too). A stream controller counts them (§9).
     pub hdr_bad: (bool, bool),
+    /// The bad header words were marked by a forwarder (§4): damaged
+    /// before this fibre, not counted in its receiver's run.
+    pub hdr_marked: bool,
     /// One entry per slot.
     pub words: Vec<Slot>,
 }
@@ -199,11 +216,23 @@ pub enum FsCause {
     SecondFault,
     /// A header with FS=1 arrived.
     Header,
-    /// No valid frame for two cycles.
+    /// No start delimiter at INPUT for [`CS_TIMEOUT_CYCLES`] cycles.
     Timeout,
     /// A FAILSAFE alarm (user request) was sent or received.
     Request,
+    /// The special master's 4th CLR frame came back with FS = 1.
+    ClearFailed,
 }
+
+/// Cycles without a start delimiter at INPUT that put a node into
+/// failsafe (protocol §12, rule 4).
+pub const CS_TIMEOUT_CYCLES: u32 = 3;
+/// Frames back whole in a row after which the special master leaves
+/// failsafe (protocol §12).
+pub const WHOLE_RETURNS: u32 = 2;
+/// CLR frames the special master sends before it gives up and fails safe
+/// again (protocol §12).
+pub const CLR_TRIES: u32 = 4;
 
 impl fmt::Display for FsCause {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -212,6 +241,7 @@ impl fmt::Display for FsCause {
             FsCause::Header => "header",
             FsCause::Timeout => "timeout",
             FsCause::Request => "request",
+            FsCause::ClearFailed => "clear-failed",
         })
     }
 }
@@ -269,6 +299,11 @@ pub enum EventKind {
     },
     /// Failsafe entered.
     Failsafe(FsCause),
+    /// Failsafe left (the special master at its frame start, every other
+    /// node at a CLR header; protocol §12).
+    FailsafeExit,
+    /// The special master's host gave the failsafe clear command.
+    FsClear,
     /// The node put an alarm word in its home slot.
     AlarmTx {
         /// Reason code.
@@ -294,14 +329,15 @@ pub enum EventKind {
     /// The special master's secondary test frame did not return intact.
     SecFail,
     /// A stream controller saw [`BAD_WORDS`] bad words in a row on this
-    /// receiver (PI or SI): channel failure (§9), at the event's slot.
+    /// receiver (PI or SI), at the event's slot: a run (§9), a transient
+    /// that wraps a node in a ring not known to be wrapped (soft wrap).
     BadWords {
         /// The receiver.
         port: Port,
     },
 }
 
-/// Consecutive bad words that make a channel failure (protocol §9).
+/// Consecutive bad words that make a run (protocol §9).
 pub const BAD_WORDS: u32 = 8;
 
 /// An event stamped with cycle, position and node.
@@ -340,14 +376,16 @@ pub struct NodeState {
     pub mode: Mode,
     /// Not killed.
     pub up: bool,
-    /// In failsafe (terminal).
+    /// In failsafe (until the special master brings the ring out, §12).
     pub failsafe: bool,
     /// The node knows the ring is wrapped (last valid header, or itself).
     pub rw: bool,
     /// Armed: has seen its first valid frame.
     pub armed: bool,
-    /// Consecutive cycles without a valid frame at INPUT.
-    pub no_frame: u32,
+    /// Cycles in a row without a good frame at INPUT (for `ferr`).
+    missed: u32,
+    /// Consecutive cycles without a start delimiter at INPUT (rule 4).
+    pub no_cs: u32,
     /// Words with a parity/code error seen at INPUT (cumulative).
     pub perr: u32,
     /// Cycles without a valid frame at INPUT, after arming (cumulative).
@@ -386,14 +424,45 @@ pub struct Ring {
     pub cycle: u32,
     /// Broken fibres.
     pub broken: BTreeSet<Fibre>,
-    /// Cycle in which each currently repaired-but-unused link was repaired.
-    repaired: Vec<Option<u32>>,
+    /// Per link k (node k → node k+1): the cycle at whose end its two
+    /// nodes were first seen wrapped towards each other (k in WD, k+1 in
+    /// WU) with both fibres carrying light: from then on they hear each
+    /// other's TST (§12).
+    pair_since: Vec<Option<u32>>,
+    /// Per link: its WU end has heard the WD end's TST with ACK (the
+    /// handshake is done) and has not changed mode since.
+    acked: Vec<bool>,
+    /// Per node: the cycle at whose end it unwrapped (→ N); for the next
+    /// cycle a TST where DATA is expected is not a failure (§12, grace).
+    unwrapped_at: Vec<Option<u32>>,
     /// Special master's return store (next cycle's words).
     store: Vec<Slot>,
     /// Words the special master emitted this cycle (alarm retransmit rule).
     emitted: Vec<Slot>,
     /// RWC of the last returned header.
     returned_rwc: bool,
+    /// The special master's failsafe exit (§12).
+    exit: SmExit,
+    /// WU ends of links that reintegrated at the end of the last cycle:
+    /// this cycle's frame reaches their INPUT without its start delimiter.
+    lose_next: Vec<usize>,
+}
+
+/// What the special master keeps to bring the ring out of failsafe
+/// (protocol §12).
+#[derive(Debug, Clone, Default)]
+struct SmExit {
+    /// HOP of the last good header back with FS = 0 outside failsafe.
+    hop_ref: Option<u16>,
+    /// Frames back whole in a row, in failsafe.
+    whole: u32,
+    /// CLR frames sent since it left failsafe (0: not clearing).
+    clr_sent: u32,
+    /// The failsafe began with (or saw) a FAILSAFE request: leave only on
+    /// the host's clear command.
+    request: bool,
+    /// The host gave the clear command.
+    host_clear: bool,
 }
 
 /// Everything the model observed in one cycle.
@@ -459,7 +528,8 @@ impl Ring {
                 failsafe: false,
                 rw: false,
                 armed: false,
-                no_frame: 0,
+                missed: 0,
+                no_cs: 0,
                 perr: 0,
                 ferr: 0,
                 aerr: 0,
@@ -485,10 +555,14 @@ impl Ring {
             nodes,
             cycle: 0,
             broken: BTreeSet::new(),
-            repaired: vec![None; n],
+            pair_since: vec![None; n],
+            acked: vec![false; n],
+            unwrapped_at: vec![None; n],
             store: vec![Slot::Void; s],
             emitted: vec![Slot::Void; s],
             returned_rwc: false,
+            exit: SmExit::default(),
+            lose_next: vec![],
             cfg,
         }
     }
@@ -558,6 +632,9 @@ impl Ring {
     }
 
     fn enter_failsafe(&mut self, ev: &mut Vec<Event>, k: usize, at: At, cause: FsCause) {
+        if k == self.cfg.sm && cause == FsCause::Request {
+            self.exit.request = true;
+        }
         if !self.nodes[k].failsafe {
             self.nodes[k].failsafe = true;
             let c = self.cycle;
@@ -599,6 +676,11 @@ impl Ring {
                 reason: r,
             });
         }
+        if self.cfg.fs_clears.contains(&c) {
+            self.exit.host_clear = true;
+            let sm = self.cfg.sm;
+            self.event(&mut ev, c, At::Hdr, sm, EventKind::FsClear);
+        }
         // 2. Faults of this cycle.
         let faults: Vec<Fault> = self
             .cfg
@@ -633,6 +715,11 @@ impl Ring {
                 _ => None,
             })
             .collect();
+        let bursts: Vec<Fault> = faults
+            .iter()
+            .copied()
+            .filter(|f| matches!(f, Fault::Burst { .. }))
+            .collect();
         let produced: Vec<u16> = (0..s_count).map(|s| self.source_value(s, c)).collect();
 
         let mut fibres: Vec<Carry> = Vec::with_capacity(2 * n);
@@ -658,6 +745,7 @@ impl Ring {
         // The SEC decision is made at the cycle's start, from the RWC of
         // the last frame that returned before it (protocol §8).
         let sec_rwc = self.returned_rwc;
+        let clr = self.sm_frame_start(&mut ev);
         {
             let hdr = Header {
                 fs: self.nodes[sm].failsafe,
@@ -665,10 +753,12 @@ impl Ring {
                 rwp: self.returned_rwc,
                 cyc: (c & 7) as u8,
                 hop: 0,
+                clr,
             };
             let mut frame = Frame {
                 hdr: HeaderRx::Ok(hdr),
                 hdr_bad: (false, false),
+                hdr_marked: false,
                 words: self.store.clone(),
             };
             if !self.nodes[sm].failsafe {
@@ -688,6 +778,13 @@ impl Ring {
                     truncate(&mut frame, s);
                 }
                 self.apply_flips(&mut frame, fib, &flips);
+                for b in &bursts {
+                    if let Fault::Burst { fibre, .. } = *b {
+                        if fibre == fib {
+                            self.apply_burst(&mut frame, *b);
+                        }
+                    }
+                }
                 let fi = self.fibre_index(fib);
                 fibres[fi] = Carry::Data(frame.clone());
                 let (k, port) = self.dst(fib);
@@ -704,6 +801,10 @@ impl Ring {
                     None
                 };
                 let cut_at = cf_at.filter(|_| self.nodes[k].mode == Mode::N);
+                if port == inp && self.lose_next.contains(&k) {
+                    // A WU end that unwrapped at this frame's J K on PI.
+                    frame.hdr = HeaderRx::NoCs;
+                }
                 if port == inp {
                     if k == sm {
                         if let Some(at) = cut_at {
@@ -714,6 +815,7 @@ impl Ring {
                     }
                     path.push(k);
                     got_frame[k] = self.process(k, &mut frame, &mut ev);
+                    mark(&mut frame);
                     if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
                         truncate(&mut frame, s);
                     }
@@ -813,6 +915,7 @@ impl Ring {
         }
 
         // 6. Frame supervision and the CS timeout.
+        let mut packet_in = vec![false; n];
         for (k, &got) in got_frame.iter().enumerate() {
             if !self.nodes[k].up {
                 continue;
@@ -823,12 +926,35 @@ impl Ring {
                 self.nodes[k].last_alive.iter_mut().for_each(|a| *a = None);
             }
             if got {
+                // A node other than the special master counts the cycles
+                // without a good frame from the gap in CYC's 3 bits at the
+                // next good header: 8 or more in a row count modulo 8
+                // (protocol §9); the special master counts every one.
+                if k != self.cfg.sm {
+                    self.nodes[k].ferr -= 8 * (self.nodes[k].missed / 8);
+                }
+                self.nodes[k].missed = 0;
                 self.nodes[k].armed = true;
-                self.nodes[k].no_frame = 0;
             } else if self.nodes[k].armed {
                 self.nodes[k].ferr += 1;
-                self.nodes[k].no_frame += 1;
-                if self.nodes[k].no_frame >= 2 {
+                self.nodes[k].missed += 1;
+            }
+            // Rule 4 (§12): cycles without the start delimiter of a packet
+            // other than a TST on INPUT (a frame whose header is damaged
+            // still shows its J K; a wrapped neighbour's TST can reach the
+            // INPUT of a node cut off between two wraps).
+            let inp = self.in_fibre(k, table1(self.nodes[k].mode).0);
+            let jk = match &fibres[self.fibre_index(inp)] {
+                Carry::Data(f) => f.hdr != HeaderRx::NoCs,
+                Carry::Sec { .. } => true,
+                Carry::Tst { .. } | Carry::Silent | Carry::Idle => false,
+            };
+            packet_in[k] = jk;
+            if got || jk {
+                self.nodes[k].no_cs = 0;
+            } else if self.nodes[k].armed {
+                self.nodes[k].no_cs += 1;
+                if self.nodes[k].no_cs >= CS_TIMEOUT_CYCLES {
                     self.enter_failsafe(&mut ev, k, At::End, FsCause::Timeout);
                 }
             }
@@ -843,14 +969,22 @@ impl Ring {
         for f in &faults {
             if let Fault::Repair { fibre, .. } = *f {
                 self.broken.remove(&fibre);
-                let link = match fibre {
-                    Fibre::P(k) | Fibre::S(k) => k,
-                };
-                self.repaired[link] = Some(c);
             }
         }
         // 7. Stream controllers and switchboxes.
-        self.resolve(&mut ev);
+        let frame_in = self.inputs_carry(
+            &fibres,
+            |x| matches!(x, Carry::Data(f) if f.hdr != HeaderRx::NoCs),
+        );
+        let tst_in = self.inputs_carry(&fibres, |x| matches!(x, Carry::Tst { .. }));
+        self.resolve(
+            &mut ev,
+            &Inputs {
+                packet: &packet_in,
+                frame: &frame_in,
+                tst: &tst_in,
+            },
+        );
         // Alive flip-flops toggle after each frame a node processed (the
         // special master after each frame it sent).
         for (k, nd) in self.nodes.iter_mut().enumerate() {
@@ -949,6 +1083,103 @@ impl Ring {
         }
     }
 
+    /// A burst of garbage on the fibre (protocol §4, scenario `kind =
+    /// "burst"`): the line's code bits in the burst become
+    /// [`line::garbage`], the level returns after it, and every word it
+    /// touched is decoded again, exactly. A word the model knows only as
+    /// bad or missing stays as it is where the burst leaves its last group
+    /// alone, and is bad where it does not (its code is not known), and so
+    /// is every word after it that the burst reaches.
+    fn apply_burst(&self, frame: &mut Frame, burst: Fault) {
+        let Fault::Burst {
+            target,
+            bit,
+            len,
+            pattern,
+            ..
+        } = burst
+        else {
+            return;
+        };
+        let HeaderRx::Ok(h) = frame.hdr else {
+            // No receiver reads past a rejected header, nor a frame whose
+            // delimiter it missed.
+            return;
+        };
+        let ext = self.cfg.ext;
+        let w = line::word_bits(ext) as usize;
+        let slots = self.cfg.slots;
+        // Code bits of H0, H1 and the slots (None: not known).
+        let mut words: Vec<Option<Vec<u8>>> = vec![
+            Some(line::word_code_bits(&h.h0(slots), ext)),
+            Some(line::word_code_bits(&h.h1(), ext)),
+        ];
+        words.extend(frame.words.iter().map(|x| match x {
+            Slot::Data(d) => Some(line::word_code_bits(d, ext)),
+            Slot::Void => Some(line::void_code_bits(ext)),
+            _ => None,
+        }));
+        let start = match target {
+            FlipTarget::H0 => 0,
+            FlipTarget::H1 => w,
+            FlipTarget::Slot(s) => (2 + s) * w,
+            FlipTarget::Cs => return,
+        } + bit as usize;
+        let len = len as usize;
+        let g = line::garbage(pattern, len);
+        // The level's XOR mask m: c' = c ^ m[t] ^ m[t-1]; in the burst c' is
+        // the garbage, so m[t] = m[t-1] ^ c ^ g; after it m = 0.
+        let mut m = Some(0u8);
+        let mut touched = vec![false; words.len()];
+        let mut lost = vec![false; words.len()];
+        let end = (start + len + 1).min(words.len() * w);
+        for t in start..end {
+            let (wi, bi) = (t / w, t % w);
+            touched[wi] = true;
+            let in_burst = t < start + len;
+            match (&mut words[wi], m) {
+                (Some(code), Some(mv)) => {
+                    let c = code[bi];
+                    code[bi] = if in_burst { g[t - start] } else { c ^ mv };
+                    m = in_burst.then_some(mv ^ c ^ code[bi]);
+                }
+                // After a word whose code is not known, the level is not
+                // known either.
+                (Some(_), None) => lost[wi] = true,
+                (None, _) => m = None,
+            }
+        }
+        let rx = |wi: usize| -> Option<line::Rx> {
+            match &words[wi] {
+                Some(_) if lost[wi] => Some(line::Rx::Bad(Lead::Other)),
+                Some(c) => Some(line::decode_word(c, ext)),
+                // Its last group untouched: it stays what it was.
+                None if start + len <= (wi + 1) * w - 5 => None,
+                None => Some(line::Rx::Bad(Lead::Other)),
+            }
+        };
+        for (wi, _) in touched.iter().enumerate().skip(2).filter(|(_, t)| **t) {
+            if let Some(r) = rx(wi) {
+                frame.words[wi - 2] = rx_slot(r);
+            }
+        }
+        if touched[0] || touched[1] {
+            let (a, b) = (rx(0), rx(1));
+            frame.hdr_marked = false;
+            frame.hdr = match (&a, &b) {
+                (Some(line::Rx::Ok(h0)), Some(line::Rx::Ok(h1))) => {
+                    match Header::decode(h0, h1, slots) {
+                        Some(h) => HeaderRx::Ok(h),
+                        None => HeaderRx::Bad,
+                    }
+                }
+                _ => HeaderRx::Bad,
+            };
+            let bad = |r: &Option<line::Rx>| !matches!(r, Some(line::Rx::Ok(_)));
+            frame.hdr_bad = (bad(&a), bad(&b));
+        }
+    }
+
     /// A node's processing of the frame at its INPUT. Returns whether the
     /// header was valid.
     fn process(&mut self, k: usize, frame: &mut Frame, ev: &mut Vec<Event>) -> bool {
@@ -957,7 +1188,13 @@ impl Ring {
             // header, protocol §9: no perr for its words); forwarded as it is.
             return false;
         };
-        if h.fs {
+        if h.clr && !h.fs && self.nodes[k].failsafe {
+            // The special master brings the ring out of failsafe (§12).
+            self.nodes[k].failsafe = false;
+            let c = self.cycle;
+            self.event(ev, c, At::Hdr, k, EventKind::FailsafeExit);
+        }
+        if h.fs && !h.clr {
             self.enter_failsafe(ev, k, At::Hdr, FsCause::Header);
         }
         let wrapped = self.nodes[k].mode != Mode::N;
@@ -969,6 +1206,9 @@ impl Ring {
             h.fs = true;
             frame.hdr = HeaderRx::Ok(h);
             self.count_errors(k, frame);
+            // A frame in failsafe updates nothing: the next Alive check
+            // has nothing to compare with (§7).
+            self.nodes[k].last_alive.iter_mut().for_each(|a| *a = None);
             return true;
         }
         frame.hdr = HeaderRx::Ok(h);
@@ -1007,11 +1247,14 @@ impl Ring {
         };
         match frame.hdr {
             HeaderRx::NoCs => return None,
-            HeaderRx::Bad => match frame.hdr_bad {
-                (true, _) => bump(&mut run, At::Hdr),
-                (false, h1) => {
+            // Bad words a forwarder marked were damaged further up: they
+            // say nothing about this fibre and leave the run as it is (§4).
+            HeaderRx::Bad => match (frame.hdr_bad, frame.hdr_marked) {
+                ((true, _), false) => bump(&mut run, At::Hdr),
+                ((true, _), true) => {}
+                ((false, h1), marked) => {
                     run = 0;
-                    if h1 {
+                    if h1 && !marked {
                         bump(&mut run, At::Hdr);
                     }
                 }
@@ -1022,7 +1265,7 @@ impl Ring {
                     match w {
                         Slot::Data(_) => run = 0,
                         Slot::Bad(_) => bump(&mut run, At::Slot(s)),
-                        Slot::Void | Slot::Missing => {}
+                        Slot::Marked(_) | Slot::Void | Slot::Missing => {}
                     }
                 }
             }
@@ -1039,37 +1282,97 @@ impl Ring {
     }
 
     fn count_errors(&mut self, k: usize, frame: &Frame) {
-        let bad = frame
-            .words
-            .iter()
-            .filter(|w| matches!(w, Slot::Bad(_)))
-            .count() as u32;
+        let bad = frame.words.iter().filter(|w| w.is_bad()).count() as u32;
         self.nodes[k].perr += bad;
     }
 
     /// The special master receives the returning frame.
+    /// The special master at its frame start (§12): leaves failsafe after
+    /// [`WHOLE_RETURNS`] frames came back whole (and the host's clear
+    /// command where it is needed); returns whether this frame carries CLR.
+    fn sm_frame_start(&mut self, ev: &mut Vec<Event>) -> bool {
+        let sm = self.cfg.sm;
+        let c = self.cycle;
+        if self.nodes[sm].failsafe {
+            let host = self.cfg.nodes[sm].fs_exit_host || self.exit.request;
+            if self.exit.whole >= WHOLE_RETURNS && (!host || self.exit.host_clear) {
+                self.nodes[sm].failsafe = false;
+                self.event(ev, c, At::Hdr, sm, EventKind::FailsafeExit);
+                self.exit = SmExit {
+                    hop_ref: self.exit.hop_ref,
+                    clr_sent: 1,
+                    ..SmExit::default()
+                };
+            }
+        } else if self.exit.clr_sent >= CLR_TRIES {
+            // The last CLR frame came back with FS = 1 (or not at all):
+            // some node keeps failing safe.
+            self.exit.clr_sent = 0;
+            self.enter_failsafe(ev, sm, At::Hdr, FsCause::ClearFailed);
+        } else if self.exit.clr_sent > 0 {
+            self.exit.clr_sent += 1;
+        }
+        self.exit.clr_sent > 0
+    }
+
+    /// The special master's failsafe bookkeeping for a good header that
+    /// came back (§12): `hop_ref`, frames back whole, the CLR frames, and
+    /// rule 3.
+    fn exit_return(&mut self, h: &Header, ev: &mut Vec<Event>) {
+        let sm = self.cfg.sm;
+        let was_fs = self.nodes[sm].failsafe;
+        if !was_fs && !h.fs {
+            self.exit.hop_ref = Some(h.hop);
+        }
+        if was_fs && h.hop >= self.exit.hop_ref.unwrap_or(0) {
+            self.exit.whole += 1;
+        } else {
+            self.exit.whole = 0;
+        }
+        if self.exit.clr_sent > 0 && h.clr && !h.fs {
+            // Every node on the path has left failsafe.
+            self.exit.clr_sent = 0;
+        }
+        if h.fs && !h.clr {
+            self.enter_failsafe(ev, sm, At::Hdr, FsCause::Header);
+        }
+    }
+
     fn sm_return(&mut self, returned: Option<Frame>, ev: &mut Vec<Event>) -> bool {
         let sm = self.cfg.sm;
         let s_count = self.cfg.slots;
         let Some(frame) = returned else {
             self.store = vec![Slot::Void; s_count];
             self.nodes[sm].hop = None;
+            self.exit.whole = 0;
             return false;
         };
+        // A FAILSAFE request that comes back: the ring leaves that failsafe
+        // only on the host's clear command (§12).
+        let ext = self.cfg.ext;
+        if frame.words.iter().any(|w| match w {
+            Slot::Data(d) if d.alarm => {
+                (if ext { d.reason } else { (d.data >> 12) as u8 }) == reason::FAILSAFE
+            }
+            _ => false,
+        }) {
+            self.exit.request = true;
+        }
         let HeaderRx::Ok(h) = frame.hdr else {
             self.store = vec![Slot::Void; s_count];
             self.nodes[sm].hop = None;
+            self.exit.whole = 0;
             return false;
         };
         self.returned_rwc = h.rwc;
         self.nodes[sm].hop = Some(h.hop);
         self.nodes[sm].rw = h.rwc || h.rwp || self.nodes[sm].mode != Mode::N;
-        if h.fs {
-            self.enter_failsafe(ev, sm, At::Hdr, FsCause::Header);
-        }
+        self.exit_return(&h, ev);
         let failsafe = self.nodes[sm].failsafe;
         if failsafe {
             self.count_errors(sm, &frame);
+            // Nothing read: no Alive check against this frame (§7).
+            self.nodes[sm].last_alive.iter_mut().for_each(|a| *a = None);
         }
         for s in 0..s_count {
             let w = frame.words[s];
@@ -1098,7 +1401,7 @@ impl Ring {
         let ext = self.cfg.ext;
         let kind = self.cfg.nodes[k].kind;
         match w {
-            Slot::Bad(_) => {
+            Slot::Bad(_) | Slot::Marked(_) => {
                 self.nodes[k].perr += 1;
                 if kind.is_master() {
                     self.nodes[k].last_alive[s] = None;
@@ -1234,8 +1537,8 @@ impl Ring {
                         }
                     }
                     // Data replaced from the first group on; still bad.
-                    Slot::Bad(Lead::Data) => {}
-                    Slot::Void | Slot::Bad(Lead::S) => {
+                    Slot::Bad(Lead::Data) | Slot::Marked(Lead::Data) => {}
+                    Slot::Void | Slot::Bad(Lead::S) | Slot::Marked(Lead::S) => {
                         let alive = !self.nodes[k].act_alive[s];
                         self.nodes[k].act_alive[s] = alive;
                         *w = Slot::Data(Word {
@@ -1256,7 +1559,10 @@ impl Ring {
                 let v = self.nodes[k].output;
                 if let Some(p) = self.take_alarm(k, ev) {
                     *w = Slot::Data(self.alarm_word(k, p, v));
-                } else if !matches!(*w, Slot::Bad(Lead::Data | Lead::Other)) {
+                } else if !matches!(
+                    *w,
+                    Slot::Bad(Lead::Data | Lead::Other) | Slot::Marked(Lead::Data | Lead::Other)
+                ) {
                     *w = Slot::Data(Word {
                         data: v,
                         alive: self.nodes[k].toggle,
@@ -1285,9 +1591,17 @@ impl Ring {
 
     /// End-of-cycle resolution of every stream controller into switchbox
     /// changes, failsafe entries and reintegrations (protocol §9, §10, §12).
-    fn resolve(&mut self, ev: &mut Vec<Event>) {
+    fn resolve(&mut self, ev: &mut Vec<Event>, seen: &Inputs) {
         let n = self.n();
         let c = self.cycle;
+        // A node that unwrapped at the end of the last cycle does not take
+        // a TST where DATA is expected for a failure yet (§12: its partner
+        // may still be sending it).
+        let grace: Vec<bool> = self
+            .unwrapped_at
+            .iter()
+            .map(|u| u.is_some_and(|u| u + 1 == c))
+            .collect();
         let start: Vec<Mode> = self.nodes.iter().map(|x| x.mode).collect();
         let rw: Vec<bool> = self
             .nodes
@@ -1308,18 +1622,23 @@ impl Ring {
                 let fi = self.in_fibre(k, inp);
                 let fb = self.in_fibre(k, bsr);
                 let words = |p: Port| self.nodes[k].cf_words[usize::from(p == Port::Si)];
-                let in_fail =
-                    !self.lit(fi) || (mode == Mode::N && self.carries_tst(fi)) || words(inp);
-                let bsr_fail =
-                    !self.lit(fb) || (mode == Mode::N && self.carries_tst(fb)) || words(bsr);
+                // Structural: loss of signal, or a TST where DATA is
+                // expected (the neighbour wrapped); a run of bad words is a
+                // transient and wraps only a ring not known wrapped (§9, §12).
+                let tst_fails = mode == Mode::N && !grace[k];
+                let hard_in = !self.lit(fi) || (tst_fails && self.carries_tst(fi));
+                let hard_bsr = !self.lit(fb) || (tst_fails && self.carries_tst(fb));
+                let soft = mode == Mode::N && !rw[k];
+                let in_fail = hard_in || (soft && words(inp));
+                let bsr_fail = hard_bsr || (soft && words(bsr));
                 let new = match mode {
                     Mode::N if in_fail => Some(Mode::Wu),
                     Mode::N if bsr_fail => Some(Mode::Wd),
                     _ => None,
                 };
                 let second = match mode {
-                    Mode::N => (in_fail && bsr_fail) || ((in_fail || bsr_fail) && rw[k]),
-                    _ => in_fail,
+                    Mode::N => (!self.lit(fi) && !self.lit(fb)) || ((hard_in || hard_bsr) && rw[k]),
+                    _ => !self.lit(fi),
                 };
                 if second && start[k] == mode {
                     self.enter_failsafe(ev, k, At::End, FsCause::SecondFault);
@@ -1330,44 +1649,18 @@ impl Ring {
                 }
             }
         }
-        // A wrap that a run of bad words caused is on a link that still
-        // carries light: the two nodes hear each other's TST and reintegrate
-        // as after a repair (§12).
-        for (k, &from) in start.iter().enumerate() {
-            let to = self.nodes[k].mode;
-            if from == Mode::N && to != Mode::N && self.nodes[k].cf_words.contains(&true) {
-                let link = if to == Mode::Wu { (k + n - 1) % n } else { k };
-                self.repaired[link].get_or_insert(c);
-            }
-        }
-        // Reintegration of links repaired before this cycle.
-        for link in 0..n {
-            let Some(rc) = self.repaired[link] else {
-                continue;
-            };
-            if rc >= c {
-                continue;
-            }
-            let a = link;
-            let b = (link + 1) % n;
-            let ok = self.lit(Fibre::P(link))
-                && self.lit(Fibre::S(link))
-                && self.nodes[a].mode == Mode::Wd
-                && self.nodes[b].mode == Mode::Wu
-                && !self.nodes[a].failsafe
-                && !self.nodes[b].failsafe;
-            if ok {
-                self.nodes[a].mode = Mode::N;
-                self.nodes[b].mode = Mode::N;
-            }
-            if ok || (self.lit(Fibre::P(link)) && self.lit(Fibre::S(link))) {
-                self.repaired[link] = None;
-            }
-        }
+        self.reintegrate(seen);
+
         for (k, &from) in start.iter().enumerate() {
             let to = self.nodes[k].mode;
             if from != to {
                 self.event(ev, c, At::End, k, EventKind::Mode { from, to });
+                self.unwrapped_at[k] = (to == Mode::N).then_some(c);
+                // A WU end's handshake belongs to its stay in WU.
+                let link = (k + n - 1) % n;
+                if from == Mode::Wu {
+                    self.acked[link] = false;
+                }
                 let nd = &mut self.nodes[k];
                 if (from == Mode::Wu) != (to == Mode::Wu) {
                     // INPUT and BSR move to other lines: a run of bad
@@ -1383,6 +1676,114 @@ impl Ring {
                 });
             }
         }
+    }
+}
+
+/// What each node's INPUT carried in the cycle (step 6), for the
+/// end-of-cycle decisions.
+struct Inputs<'a> {
+    /// A packet's J K other than a TST (a frame, a SEC): rule 4's timer.
+    packet: &'a [bool],
+    /// A frame with its J K.
+    frame: &'a [bool],
+    /// The TST of an upstream neighbour wrapped towards the node.
+    tst: &'a [bool],
+}
+
+impl Ring {
+    /// Per node, whether what its INPUT carried this cycle is `what`.
+    fn inputs_carry(&self, fibres: &[Carry], what: impl Fn(&Carry) -> bool) -> Vec<bool> {
+        (0..self.n())
+            .map(|k| {
+                let inp = self.in_fibre(k, table1(self.nodes[k].mode).0);
+                what(&fibres[self.fibre_index(inp)])
+            })
+            .collect()
+    }
+
+    /// Reintegration (§12) at the end of the cycle, link by link (link k
+    /// joins node k, its WD end, to node k + 1, its WU end). Two nodes
+    /// wrapped towards each other over a link whose fibres both carry
+    /// light hear each other's TST, however they got there (a repair, a
+    /// soft wrap, a node that re-wrapped after unwrapping); the handshake
+    /// is done by the end of the next cycle (≤ 4 TST periods ≤ P). Then:
+    /// - the WD end unwraps at a frame boundary: a packet (a frame, or the
+    ///   TST of an upstream neighbour wrapped towards it: a node cut off
+    ///   between two wraps) ended on its INPUT, or, the special master,
+    ///   its period tick; in the loop without the special master of a
+    ///   split ring no packet comes, and it waits;
+    /// - the WU end unwraps at the next frame's J K on its BSR (PI), so its
+    ///   INPUT misses that frame (`lose_next`): with the WD end if a frame
+    ///   follows through it, else (it unwrapped on a TST) as soon as one
+    ///   does — its handshake is done, and it keeps waiting in WU; in
+    ///   failsafe, at the first frame on its BSR, handshake or not.
+    fn reintegrate(&mut self, seen: &Inputs) {
+        let n = self.n();
+        let c = self.cycle;
+        let sm = self.cfg.sm;
+        let was_lost = std::mem::take(&mut self.lose_next);
+        // A node forwards a frame on PO next cycle: it is not wrapped
+        // towards PO (not WD), a frame reaches its INPUT (it had one, or it
+        // just lost one to its own unwrapping) and it does not lose it.
+        let forwards = |r: &Ring, k: usize| {
+            r.nodes[k].up
+                && r.nodes[k].mode != Mode::Wd
+                && (k == sm || seen.frame[k] || was_lost.contains(&k))
+        };
+        for a in 0..n {
+            let b = (a + 1) % n;
+            let lit = self.lit(Fibre::P(a)) && self.lit(Fibre::S(a));
+            let pair = lit && self.nodes[a].mode == Mode::Wd && self.nodes[b].mode == Mode::Wu;
+            if !pair {
+                self.pair_since[a] = None;
+            }
+            if !lit || self.nodes[b].mode != Mode::Wu {
+                self.acked[a] = false;
+            }
+            if pair {
+                let since = *self.pair_since[a].get_or_insert(c);
+                if since < c {
+                    self.acked[a] = true;
+                    let boundary = seen.packet[a] || seen.tst[a] || a == sm;
+                    if boundary {
+                        // The WD end unwraps; its frame, if one follows,
+                        // takes the WU end along.
+                        self.nodes[a].mode = Mode::N;
+                        self.pair_since[a] = None;
+                    }
+                }
+            }
+            // In failsafe a frame on BSR is as good as the ACK (the upstream
+            // neighbour forwards the ring's frames: it is not wrapped
+            // towards this node; the special master's downstream
+            // neighbour, cut off with it, hears no TST from it).
+            let up_ok = self.acked[a]
+                || (self.nodes[b].failsafe
+                    && self.nodes[b].mode == Mode::Wu
+                    && self.lit(Fibre::P(a)));
+            if up_ok && self.nodes[a].mode != Mode::Wd && forwards(self, a) {
+                self.nodes[b].mode = Mode::N;
+                self.acked[a] = false;
+                self.lose_next.push(b);
+            }
+        }
+    }
+}
+
+/// A forwarder marks what arrived bad (§4): the words of a frame whose
+/// header it processed, and the first bad word of a rejected header (after
+/// it the forwarder passes the packet unchanged).
+fn mark(frame: &mut Frame) {
+    match frame.hdr {
+        HeaderRx::Ok(_) => {
+            for w in frame.words.iter_mut() {
+                if let Slot::Bad(l) = *w {
+                    *w = Slot::Marked(l);
+                }
+            }
+        }
+        HeaderRx::Bad => frame.hdr_marked |= frame.hdr_bad.0 || frame.hdr_bad.1,
+        HeaderRx::NoCs => {}
     }
 }
 
@@ -1409,6 +1810,7 @@ fn rx_slot(r: Rx) -> Slot {
         Rx::Ok(w) => Slot::Data(w),
         Rx::Void => Slot::Void,
         Rx::Bad(l) => Slot::Bad(l),
+        Rx::Marked(l) => Slot::Marked(l),
     }
 }
 
@@ -1421,16 +1823,34 @@ fn rx_slot(r: Rx) -> Slot {
 pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)> {
     let last = cfg.cycles.saturating_sub(1);
     let n = cfg.nodes.len();
+    let sm = cfg.sm;
     let mut v: Vec<(u32, u32, String)> = cfg
         .faults
         .iter()
         .filter_map(|(c, f)| {
-            let len = match f {
-                Fault::Break { .. } | Fault::Kill { .. } => 3,
-                Fault::Repair { .. } => REPAIR_WINDOW,
-                Fault::Flip { .. } => return None,
-            };
-            Some((*c, (*c + len).min(last), f.to_string()))
+            let mut end = *c
+                + match f {
+                    Fault::Break { .. } | Fault::Kill { .. } => 3,
+                    Fault::Repair { .. } => REPAIR_WINDOW,
+                    Fault::Flip { .. } | Fault::Burst { .. } => return None,
+                };
+            // A repair of a ring in failsafe: which frames come back whole
+            // after the reintegrations is bit timing, and so is the cycle
+            // the special master brings the ring out (§12, §13).
+            let in_fs = records
+                .get(*c as usize)
+                .is_some_and(|r| r.nodes[sm].failsafe);
+            if let (Fault::Repair { .. }, true) = (f, in_fs) {
+                let exit = records
+                    .iter()
+                    .flat_map(|r| &r.events)
+                    .find(|e| {
+                        e.node == sm && e.cycle > *c && matches!(e.kind, EventKind::FailsafeExit)
+                    })
+                    .map_or(last, |e| e.cycle + EXIT_WINDOW);
+                end = end.max(exit);
+            }
+            Some((*c, end.min(last), f.to_string()))
         })
         .collect();
     for e in records.iter().flat_map(|r| &r.events) {
@@ -1452,17 +1872,22 @@ pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)>
 }
 
 /// Cycles after a repair's first cycle that its recovery window covers
-/// (protocol §13).
-pub const REPAIR_WINDOW: u32 = 4;
+/// (protocol §13): the WD end unwraps at the end of c+1 or c+2, the WU end
+/// loses the next frame, and the RECONFIG(N) alarms follow.
+pub const REPAIR_WINDOW: u32 = 5;
+
+/// Cycles after the special master's failsafe exit that the window of a
+/// repair made in failsafe covers (protocol §13): the RTL's reintegrations
+/// can each come a cycle later than the model's, and so its exit; then the
+/// writers refresh every memory (a cycle downstream of a writer, one more
+/// upstream through the special master's retransmission).
+pub const EXIT_WINDOW: u32 = 4;
 
 /// Cycles after a bad-word channel failure's cycle that its recovery window
-/// covers (protocol §13): one more than a repair's, as the wrap happens
-/// inside that cycle's frame (a repaired fibre is lit at the end of its
-/// cycle) and the reintegration behind it — the frame the WU end loses
-/// while the frame that went the long way round still arrives, and the
-/// RECONFIG(N) alarm the alternation rule then holds back a cycle — ends a
-/// cycle later than the model's.
-pub const BAD_WORDS_WINDOW: u32 = 5;
+/// covers (protocol §13): a repair's — the link is lit all along, so the
+/// handshake starts inside that cycle's frame and the WD end unwraps at the
+/// end of frame c, c+1 or c+2.
+pub const BAD_WORDS_WINDOW: u32 = REPAIR_WINDOW;
 
 /// Runs a whole scenario.
 pub fn run(cfg: &Config) -> Vec<CycleRecord> {

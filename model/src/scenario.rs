@@ -104,6 +104,30 @@ pub struct RawNode {
     /// Masters: check the Alive bit of every slot they do not write.
     #[serde(default)]
     pub alive_check: Option<bool>,
+    /// Special master: leave failsafe by itself (`auto`) or only after its
+    /// host's clear command too (`host`).
+    #[serde(default)]
+    pub fs_exit: Option<Spanned<FsExit>>,
+}
+
+/// How the special master leaves failsafe (docs/protocol.md §12).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum FsExit {
+    /// By itself, when the ring is whole again.
+    #[default]
+    Auto,
+    /// When the ring is whole again and its host gave the clear command.
+    Host,
+}
+
+/// `[[fs_clear]]`: the special master's host writes the failsafe clear
+/// command before `cycle`.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFsClear {
+    /// Cycle before which the command is written.
+    pub cycle: Spanned<u32>,
 }
 
 /// `[frame]`.
@@ -208,6 +232,8 @@ pub enum FaultKind {
     Kill,
     /// One line bit of one word on one fibre is inverted.
     Flip,
+    /// A fibre carries garbage for some line bits of a frame.
+    Burst,
 }
 
 /// `[[fault]]`.
@@ -232,9 +258,16 @@ pub struct RawFault {
     /// Flip: word hit when not a slot: "cs", "h0" or "h1".
     #[serde(default)]
     pub word: Option<Spanned<String>>,
-    /// Flip: line bit within the word, 0 = first bit on the line.
+    /// Flip, burst: line bit within the word, 0 = first bit on the line.
     #[serde(default)]
     pub bit: Option<Spanned<u32>>,
+    /// Burst: how many line bits carry garbage.
+    #[serde(default)]
+    pub length: Option<Spanned<u32>>,
+    /// Burst: the garbage pattern's seed (0..=255; default from the
+    /// scenario's seed and the fault's place in the file).
+    #[serde(default)]
+    pub pattern: Option<Spanned<u32>>,
 }
 
 /// The whole file as parsed, before validation.
@@ -267,6 +300,9 @@ pub struct RawScenario {
     /// Interrupt requests.
     #[serde(default)]
     pub irq: Vec<RawIrq>,
+    /// Failsafe clear commands of the special master's host.
+    #[serde(default)]
+    pub fs_clear: Vec<RawFsClear>,
     /// Faults.
     #[serde(default)]
     pub fault: Vec<RawFault>,

@@ -46,6 +46,7 @@ pub fn word_token(out: &mut String, w: &Slot) {
         }
         Slot::Void => out.push('v'),
         Slot::Bad(_) => out.push('x'),
+        Slot::Marked(_) => out.push('m'),
         Slot::Missing => out.push('.'),
     }
 }
@@ -54,6 +55,8 @@ fn event_text(k: &EventKind) -> String {
     match k {
         EventKind::Mode { from, to } => format!("mode {}>{}", from.name(), to.name()),
         EventKind::Failsafe(c) => format!("failsafe {c}"),
+        EventKind::FailsafeExit => "failsafe-exit".to_string(),
+        EventKind::FsClear => "fs-clear".to_string(),
         EventKind::AlarmTx { reason } => format!("alarm-tx r{reason}"),
         EventKind::Irq { slot, reason } => format!("irq s{slot} r{reason}"),
         EventKind::AliveLost { slot } => format!("alive-lost s{slot}"),
@@ -118,8 +121,13 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
                         HeaderRx::Ok(h) => {
                             let _ = write!(
                                 o,
-                                "D fs{} rwc{} rwp{} cyc{} hop{} |",
-                                h.fs as u8, h.rwc as u8, h.rwp as u8, h.cyc, h.hop
+                                "D fs{} rwc{} rwp{} cyc{} hop{}{} |",
+                                h.fs as u8,
+                                h.rwc as u8,
+                                h.rwp as u8,
+                                h.cyc,
+                                h.hop,
+                                if h.clr { " clr1" } else { "" }
                             );
                         }
                         HeaderRx::Bad => o.push_str("D hdr-bad |"),

@@ -112,8 +112,9 @@ fn every_single_line_bit_flip_is_detected() {
             };
             for bit in 0..25 {
                 let (a, b) = flip_and_decode(&w, Some(&next), false, bit);
+                // (Marked: the error turned the last group into T, §4.)
                 assert!(
-                    matches!(a, Rx::Bad(_)),
+                    matches!(a, Rx::Bad(_) | Rx::Marked(_)),
                     "flip of bit {bit} in {w:?} not detected"
                 );
                 if let Some(Rx::Ok(b)) = b {
@@ -144,7 +145,7 @@ fn extended_word_flips_are_detected() {
         for bit in 0..30 {
             let (a, _) = flip_and_decode(&w, None, true, bit);
             assert!(
-                matches!(a, Rx::Bad(_)),
+                matches!(a, Rx::Bad(_) | Rx::Marked(_)),
                 "seed 0x5eed0001: flip of bit {bit} in {w:?}"
             );
         }
@@ -158,6 +159,7 @@ fn jk_cannot_be_imitated_by_data() {
     let mut groups: Vec<u8> = DATA_CODES.to_vec();
     groups.push(CODE_I);
     groups.push(CODE_S);
+    groups.push(CODE_T);
     for &a in &groups {
         for &b in &groups {
             for &c in &groups {
@@ -206,4 +208,25 @@ fn single_flips_make_and_break_no_jk() {
             "flip {p} kept the JK"
         );
     }
+}
+
+/// Inside packets the line toggles at least every 4 bit times with every
+/// group a packet can hold — data, S, idle and the forwarder's mark T
+/// (protocol §2, §4): no run of more than three 0 code bits across any
+/// two groups.
+#[test]
+fn no_long_zero_runs_with_any_packet_group() {
+    let mut groups: Vec<u8> = DATA_CODES.to_vec();
+    groups.extend([CODE_I, CODE_S, CODE_T]);
+    for &a in &groups {
+        for &b in &groups {
+            let mut bits = vec![];
+            push_group(&mut bits, a);
+            push_group(&mut bits, b);
+            let longest = bits.split(|&x| x == 1).map(|z| z.len()).max().unwrap_or(0);
+            assert!(longest <= 3, "{a:05b} {b:05b}: {longest} zeros in a row");
+        }
+    }
+    // T is no data group: a marked word is never good.
+    assert!(matches!(decode_group(CODE_T), Symbol::Invalid(_)));
 }

@@ -3,7 +3,9 @@
 //! - after one break or node death, every surviving node's copy of every
 //!   live writer's slot equals the fault-free ring's from the end of the
 //!   recovery window on, and nobody enters failsafe;
-//! - after a second fault, every node is in failsafe by the end of its window.
+//! - after a second fault, every node is in failsafe by the end of its window;
+//! - two breaks on two links, both repaired: the ring leaves failsafe, every
+//!   node is back in mode N and delivers what the fault-free ring does.
 
 mod common;
 use common::*;
@@ -148,7 +150,9 @@ fn second_fault_forces_failsafe() {
         let text = ring_text(&kinds(n, sm, &pick), c2 + 5, &(f1 + &f2));
         let cfg = load(&text);
         let recs = ring::run(&cfg);
-        for rec in &recs[(c2 + 2) as usize..] {
+        // The loop without the special master times out after
+        // CS_TIMEOUT_CYCLES cycles without a start delimiter (§12, rule 4).
+        for rec in &recs[(c2 + ring::CS_TIMEOUT_CYCLES) as usize..] {
             for (k, st) in rec.nodes.iter().enumerate() {
                 prop_assert!(
                     !st.up || st.failsafe,
@@ -157,6 +161,83 @@ fn second_fault_forces_failsafe() {
                 );
             }
         }
+        Ok(())
+    });
+    if let Err(e) = res {
+        panic!("MERKUR_SEED={s}: {e}");
+    }
+}
+
+/// Two fibre breaks on two different links (the second takes the ring into
+/// failsafe), both repaired (protocol §12, issue 28): whatever the links —
+/// neighbours that cut a node off, the special master's own — the links
+/// reintegrate, the special master brings the ring out of failsafe, every
+/// node ends in mode N, and from some cycle on every node delivers exactly
+/// what the fault-free ring's does.
+#[test]
+fn a_repaired_double_break_heals() {
+    let (mut r, s) = runner(48);
+    let strat = (
+        3usize..=100,
+        any::<usize>(),
+        prop::collection::vec(0u8..3, 1..16),
+        (0u8..2, any::<usize>()),
+        (0u8..2, 1usize..1000),
+        0u8..3,
+    );
+    let res = r.run(&strat, |(n, smr, pick, (fk1, pos1), (fk2, off), place)| {
+        let sm = smr % n;
+        // Two links anywhere; two links of one node (cut off between
+        // them); the special master's two links.
+        let (link1, link2) = match place {
+            0 => (pos1 % n, (pos1 + off) % n),
+            1 => (pos1 % n, (pos1 + 1 + (off % 2) * (n - 2)) % n),
+            _ => {
+                let (a, b) = ((sm + n - 1) % n, sm);
+                if off % 2 == 0 {
+                    (a, b)
+                } else {
+                    (b, a)
+                }
+            }
+        };
+        if link2 == link1 {
+            return Ok(());
+        }
+        let c = 3;
+        let brk = |fk: u8, link: usize, cycle: u32| fault_text(fk, link, n, sm, cycle, None);
+        let fibre = |fk: u8, link: usize| format!("{}{link}", ["P", "S"][fk as usize]);
+        let rep = |fk: u8, link: usize, cycle: u32| {
+            format!(
+                "\n[[fault]]\nkind = \"repair\"\ncycle = {cycle}\nfibre = \"{}\"\n",
+                fibre(fk, link)
+            )
+        };
+        let faults = brk(fk1, link1, c)
+            + &brk(fk2, link2, c + 4)
+            + &rep(fk2, link2, c + 6)
+            + &rep(fk1, link1, c + 7);
+        let text = ring_text(&kinds(n, sm, &pick), c + 30, &faults);
+        let cfg = load(&text);
+        let (a, b) = run_pair(&cfg);
+        prop_assert!(
+            a[(c + 8) as usize].nodes.iter().all(|x| x.failsafe),
+            "the second break takes the ring into failsafe\n{text}"
+        );
+        let last = a.last().unwrap();
+        for (k, x) in last.nodes.iter().enumerate() {
+            prop_assert!(
+                !x.failsafe && x.mode == ring::Mode::N,
+                "node {k} ends {:?}, failsafe {}\n{text}",
+                x.mode,
+                x.failsafe
+            );
+        }
+        let from = exact_from(&cfg, &a, &b);
+        prop_assert!(
+            from.is_some(),
+            "never delivers as the fault-free ring\n{text}"
+        );
         Ok(())
     });
     if let Err(e) = res {

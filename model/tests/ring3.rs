@@ -140,7 +140,8 @@ fn double_fault_forces_failsafe_everywhere() {
         recs[8].nodes.iter().all(|n| !n.failsafe),
         "one fault: no failsafe"
     );
-    for r in &recs[11..] {
+    // Cycle 9 + the CS timeout's 3 cycles (protocol §12, rule 4).
+    for r in &recs[12..] {
         assert!(
             r.nodes.iter().all(|n| n.failsafe),
             "cycle {}: all failsafe",

@@ -13,7 +13,13 @@
 //!   a **master's ACT slot** gets `i_slot_data` with the actuator's ALIVE
 //!   kept, or — on VOID — `{i_slot_data, NOT i_slot_alive}` (`o_regen`);
 //! - parities are fixed in the word's last group from the changes made
-//!   (delta parity), so a word that arrived bad leaves bad.
+//!   (delta parity), so a word that arrived bad leaves bad — and **marked**:
+//!   its last group goes out as T (protocol §4), so the next receivers know
+//!   it was damaged before their fibre (their stream controllers count only
+//!   their own fibre's errors);
+//! - H0's FS bit: set when the node is in failsafe, unless the header
+//!   carries CLR (its ALIVE bit, in the first group) and arrived with FS = 0:
+//!   the node leaves failsafe at that header (protocol §12).
 //!
 //! Everything else, including J K, idles, bad groups and packets after a
 //! rejected header (`i_hdr_bad`), passes unchanged; three idle groups in a
@@ -146,6 +152,13 @@ pub struct Fwd {
     slot: DFF<Bits<12>>,
     dead: DFF<Bit>,
     action: DFF<Bits<3>>,
+    // The incoming word so far (for the mark): parities, all data, all S.
+    in_pa: DFF<Bit>,
+    in_pb: DFF<Bit>,
+    in_data: DFF<Bit>,
+    in_s: DFF<Bit>,
+    // H0 carries CLR (its ALIVE bit).
+    clr_h0: DFF<Bit>,
     d_a: DFF<Bit>,
     d_b: DFF<Bit>,
     carry: DFF<Bit>,
@@ -182,6 +195,7 @@ pub struct Fwd {
     pre_b2: Signal<Local, Bit>,
     pre_b1: Signal<Local, Bit>,
     out_bit: Signal<Local, Bit>,
+    arrived_bad: Signal<Local, Bit>,
 }
 
 impl Default for Fwd {
@@ -234,6 +248,11 @@ impl Fwd {
             slot: Default::default(),
             dead: Default::default(),
             action: Default::default(),
+            in_pa: Default::default(),
+            in_pb: Default::default(),
+            in_data: Default::default(),
+            in_s: Default::default(),
+            clr_h0: Default::default(),
             d_a: Default::default(),
             d_b: Default::default(),
             carry: Default::default(),
@@ -270,6 +289,7 @@ impl Fwd {
             pre_b2: Default::default(),
             pre_b1: Default::default(),
             out_bit: Default::default(),
+            arrived_bad: Default::default(),
         }
     }
 }
@@ -303,7 +323,12 @@ impl Logic for Fwd {
             sent,
             sent_reason,
             done,
-            regen
+            regen,
+            in_pa,
+            in_pb,
+            in_data,
+            in_s,
+            clr_h0
         );
         // NRZI decode and the group that completes with this bit.
         self.code.next = self.i_level.val() ^ self.prev.q.val();
@@ -529,7 +554,9 @@ impl Logic for Fwd {
         if self.g_data.val() & (self.act_now.val() != 0) & (self.act_now.val() != 3) {
             self.recode.next = true;
             if (self.act_now.val() == 1) & (self.gidx.q.val() == 3) {
-                if self.i_fs.val() {
+                // FS: a node in failsafe sets it, but not in a CLR header
+                // (whose FS, arriving 0, says the node leaves failsafe).
+                if self.i_fs.val() & !self.clr_h0.q.val() {
                     self.nib_out.next = self.nib_out.val() | 8;
                 }
                 if self.i_wrapped.val() {
@@ -594,6 +621,19 @@ impl Logic for Fwd {
             }
         }
         self.diff.next = self.nib.val() ^ self.nib_out.val();
+        // The word that completes with this group arrived bad (not five
+        // data groups with both parities odd, not a VOID): its last group
+        // leaves as the mark T (protocol §4), unless the node wrote a fresh
+        // word in its place. Not after a rejected header (`dead`: the packet
+        // passes unchanged, and nobody downstream reads it).
+        self.arrived_bad.next = !(self.in_data.q.val()
+            & self.g_data.val()
+            & (self.in_pa.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2))
+            & (self.in_pb.q.val()
+                ^ self.nib.val().get_bit(2)
+                ^ self.nib.val().get_bit(1)
+                ^ self.nib.val().get_bit(0)))
+            & !(self.in_s.q.val() & self.g_s.val());
         // 4B/5B encode, written out (see the decoder above).
         self.code_out.next = 0b11110.into();
         if self.nib_out.val() == 1 {
@@ -669,6 +709,34 @@ impl Logic for Fwd {
                     }
                     if self.recode.val() {
                         self.delay.d.next = self.code_out.val();
+                    }
+                    if (self.gidx.q.val() == 4)
+                        & self.arrived_bad.val()
+                        & !self.dead.q.val()
+                        & (self.action.q.val() != 3)
+                    {
+                        // T (merkur_model::line::CODE_T).
+                        self.delay.d.next = 0b01101.into();
+                    }
+                    // The incoming word so far.
+                    self.in_pa.d.next =
+                        self.in_pa.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
+                    self.in_pb.d.next = self.in_pb.q.val()
+                        ^ self.nib.val().get_bit(2)
+                        ^ self.nib.val().get_bit(1)
+                        ^ self.nib.val().get_bit(0);
+                    self.in_data.d.next = self.in_data.q.val() & self.g_data.val();
+                    self.in_s.d.next = self.in_s.q.val() & self.g_s.val();
+                    if self.gidx.q.val() == 0 {
+                        self.in_pa.d.next = self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
+                        self.in_pb.d.next = self.nib.val().get_bit(2)
+                            ^ self.nib.val().get_bit(1)
+                            ^ self.nib.val().get_bit(0);
+                        self.in_data.d.next = self.g_data.val();
+                        self.in_s.d.next = self.g_s.val();
+                        if self.wcount.q.val() == 0 {
+                            self.clr_h0.d.next = self.nib.val().get_bit(2);
+                        }
                     }
                     if self.gidx.q.val() == 0 {
                         self.action.d.next = self.act_now.val();

@@ -25,6 +25,7 @@
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received (one clock per alarm) |
+//! | `o_irq_fsc` | out | 1 | clock | failsafe entered or left (one clock; protocol §12) |
 //! | `o_mode` | out | 2 | clock | switchbox mode |
 //! | `o_failsafe` | out | 1 | clock | failsafe |
 //! | `o_perr`, `o_ferr`, `o_aerr` | out | 16 | clock | error counters |
@@ -88,6 +89,8 @@ pub struct Master {
     pub o_irq2: Signal<Out, Bit>,
     /// FAILSAFE alarm received.
     pub o_irq_fs: Signal<Out, Bit>,
+    /// Failsafe entered or left.
+    pub o_irq_fsc: Signal<Out, Bit>,
     /// Mode.
     pub o_mode: Signal<Out, Bits<2>>,
     /// Failsafe.
@@ -181,10 +184,14 @@ impl Logic for Master {
         self.mdb.i_alive.next = self.node.o_alive.val();
         self.mdb.i_alarm.next = self.node.o_alarm.val();
         self.mdb.i_ok.next = self.node.o_ok.val();
+        self.mdb.i_hdr_bad.next = self.node.o_hdr_bad.val();
 
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();
         self.o_irq_fs.next = self.mdb.o_irq_fs.val();
+        self.o_irq_fsc.next = self.mdb.o_irq_fsc.val();
+        // FS_CLEAR is the special master's; a master ignores it.
+        self.mdb.i_fs_cleared.next = false;
         self.o_mode.next = self.node.o_mode.val();
         self.o_failsafe.next = self.node.o_failsafe.val();
         self.o_perr.next = self.node.o_perr.val();

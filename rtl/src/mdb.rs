@@ -13,7 +13,9 @@
 //!   Alive, lost, and the CYC that wrote it, so a slot missing in the
 //!   previous cycle is not compared), counted in `aerr`;
 //! - **interrupts**: every good alarm word in a slot other than the home slot
-//!   pulses `o_irq1` / `o_irq2` / `o_irq_fs` by its reason.
+//!   pulses `o_irq1` / `o_irq2` / `o_irq_fs` by its reason; `o_irq_fsc`
+//!   pulses when the node enters or leaves failsafe (the status register's
+//!   bit 3 says which; protocol §12).
 //!
 //! Host port: **Wishbone B4 classic** (16-bit data, 14-bit word address),
 //! one transfer per `i_wb_cyc & i_wb_stb`, acknowledged after 1–4 clocks:
@@ -22,8 +24,8 @@
 //! |---|---|---|
 //! | 0x0000–0x0FFF | R/W | data memory, slot = address; a write to a slot that is neither LOCAL nor ACT is refused (not written, `status[2]` set) |
 //! | 0x1000–0x1FFF | R/W | configuration byte of slot address − 0x1000; a write while running is refused (`status[1]` set) |
-//! | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode |
-//! | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames) |
+//! | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode, 6 FS_HOST, 7 FS_CLEAR given and not yet used |
+//! | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames); bit 4 = 1: FS_CLEAR, the host allows the ring out of failsafe (a special master; protocol §12); bit 5: FS_HOST, the ring leaves failsafe only after FS_CLEAR (a special master; written before the start, refused while running: `status[1]`) |
 //! | 0x2001 | R | `aerr` Alive-check failures (saturating) |
 //! | 0x2002 | R | last interrupt: reason [15:12], slot [11:0] |
 //!
@@ -39,11 +41,14 @@
 //! | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 //! | `i_mode` | in | 2 | clock | switchbox mode (status register) |
 //! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
+//! | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 //! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 //! | `o_tx_data`, `o_tx_local`, `o_tx_act` | out | 16, 1, 1 | clock | data memory and configuration (LOCAL, ACT) of `i_tx_slot`, valid 2–3 clocks after it changes |
 //! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 //! | `o_running` | out | 1 | clock | the host started the ring |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received (one clock per alarm word) |
+//! | `o_irq_fsc` | out | 1 | clock | failsafe changed (one clock, each way) |
+//! | `o_fs_host`, `o_fs_clear` | out | 1 | clock | FS_HOST set; FS_CLEAR written (one clock) |
 //! | `o_aerr` | out | 16 | clock | Alive-check failures |
 //!
 //! Latency: a good word is in the data memory 2 clocks after `i_wvalid`.
@@ -65,6 +70,12 @@ use rust_hdl::prelude::*;
 pub const ST_RUN: u16 = 1;
 /// Status register bit 3 on write: stop (the special master sends no more frames).
 pub const ST_STOP: u16 = 8;
+/// Status register bit 4 on write: FS_CLEAR, the host allows the ring out of
+/// failsafe (read: bit 7 until the special master uses it).
+pub const ST_FS_CLEAR: u16 = 16;
+/// Status register bit 5 on write: FS_HOST, leave failsafe only after
+/// FS_CLEAR (read back at bit 6).
+pub const ST_FS_HOST: u16 = 32;
 /// Wishbone address of the status / control register.
 pub const WB_STATUS: u16 = 0x2000;
 /// Wishbone address of the Alive error counter.
@@ -113,6 +124,8 @@ pub struct Mdb {
     pub i_alarm: Signal<In, Bit>,
     /// Word good.
     pub i_ok: Signal<In, Bit>,
+    /// A header was rejected at INPUT.
+    pub i_hdr_bad: Signal<In, Bit>,
     /// Slot the send side needs.
     pub i_tx_slot: Signal<In, Bits<12>>,
     /// Data memory of `i_tx_slot`.
@@ -143,6 +156,14 @@ pub struct Mdb {
     pub o_irq2: Signal<Out, Bit>,
     /// FAILSAFE alarm received.
     pub o_irq_fs: Signal<Out, Bit>,
+    /// Failsafe entered or left.
+    pub o_irq_fsc: Signal<Out, Bit>,
+    /// FS_HOST is set.
+    pub o_fs_host: Signal<Out, Bit>,
+    /// FS_CLEAR was written.
+    pub o_fs_clear: Signal<Out, Bit>,
+    /// The special master used the FS_CLEAR it was given.
+    pub i_fs_cleared: Signal<In, Bit>,
     /// Alive-check failures.
     pub o_aerr: Signal<Out, Bits<16>>,
     db: RAM<Bits<16>, 12>,
@@ -163,10 +184,21 @@ pub struct Mdb {
     irq1: DFF<Bit>,
     irq2: DFF<Bit>,
     irq_fs: DFF<Bit>,
+    irq_fsc: DFF<Bit>,
+    fs_was: DFF<Bit>,
+    fs_host: DFF<Bit>,
+    fs_clear: DFF<Bit>,
+    fs_clear_held: DFF<Bit>,
     aerr: DFF<Bits<16>>,
     last_irq: DFF<Bits<16>>,
     cur_cyc: DFF<Bits<3>>,
     fs_frame: DFF<Bit>,
+    /// Since the last good header: a header rejected, so a frame was not
+    /// read (CYC alone cannot tell 8 lost frames from none).
+    unread: DFF<Bit>,
+    /// The frame before this one was read (no rejected header and no
+    /// failsafe frame between its header and this one's).
+    read_prev: DFF<Bit>,
     // Host port.
     running: DFF<Bit>,
     err_cfg: DFF<Bit>,
@@ -193,9 +225,38 @@ impl Logic for Mdb {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, tx_served, tx_data, tx_cfg, s2, s2_slot, s2_ok, s2_alive, s2_alarm,
-            s2_data, irq1, irq2, irq_fs, aerr, last_irq, running, err_cfg, err_wr, hstate, ack,
-            rdat, perm, cur_cyc, fs_frame
+            self,
+            clock,
+            tx_served,
+            tx_data,
+            tx_cfg,
+            s2,
+            s2_slot,
+            s2_ok,
+            s2_alive,
+            s2_alarm,
+            s2_data,
+            irq1,
+            irq2,
+            irq_fs,
+            irq_fsc,
+            fs_was,
+            fs_host,
+            fs_clear,
+            fs_clear_held,
+            aerr,
+            last_irq,
+            running,
+            err_cfg,
+            err_wr,
+            hstate,
+            ack,
+            rdat,
+            perm,
+            cur_cyc,
+            fs_frame,
+            unread,
+            read_prev
         );
         self.db.read_clock.next = self.clock.val();
         self.db.write_clock.next = self.clock.val();
@@ -241,20 +302,35 @@ impl Logic for Mdb {
         self.irq1.d.next = false;
         self.irq2.d.next = false;
         self.irq_fs.d.next = false;
+        // Failsafe entered or left: one clock.
+        self.fs_was.d.next = self.i_fs.val();
+        self.irq_fsc.d.next = self.fs_was.q.val() != self.i_fs.val();
+        self.fs_clear.d.next = false;
+        if self.i_fs_cleared.val() {
+            self.fs_clear_held.d.next = false;
+        }
         self.s2_write.next = false;
         // Alive state: bit 0 valid, bit 1 last Alive, bit 2 lost, bits 5:3
         // the CYC of the frame that wrote it: a state not written in the
         // previous cycle (the slot was missing, or no frame came) has
-        // nothing to compare with (protocol §7).
+        // nothing to compare with (protocol §7). The CYC tag has 3 bits, so
+        // a frame read after rejected headers or failsafe frames compares
+        // with nothing either (eight lost frames leave the tag matching).
+        if self.i_hdr_bad.val() {
+            self.unread.d.next = true;
+        }
         if self.i_wvalid.val() & (self.i_kind.val() == 1) & self.i_ok.val() {
             self.cur_cyc.d.next = self.i_data.val().get_bits::<3>(12);
             // Failsafe as of this frame's header: a FAILSAFE alarm read
             // in a slot stops updates from the next frame (protocol §12).
             self.fs_frame.d.next = self.i_fs.val();
+            self.read_prev.d.next = !self.unread.q.val() & !self.fs_frame.q.val();
+            self.unread.d.next = false;
         }
         self.prev_cyc.next = self.cur_cyc.q.val() - 1;
         self.ast_valid.next = self.s2_ast.val().get_bit(0)
-            & (self.s2_ast.val().get_bits::<3>(3) == self.prev_cyc.val());
+            & (self.s2_ast.val().get_bits::<3>(3) == self.prev_cyc.val())
+            & self.read_prev.q.val();
         self.new_ast.next = self.s2_ast.val() & 4;
         self.ast.write_enable.next = false;
         self.ast.write_address.next = self.s2_slot.q.val();
@@ -407,8 +483,25 @@ impl Logic for Mdb {
                     if self.i_fs.val() {
                         self.stat.next = self.stat.val() | 8;
                     }
+                    if self.fs_host.q.val() {
+                        self.stat.next = self.stat.val() | 64;
+                    }
+                    if self.fs_clear_held.q.val() {
+                        self.stat.next = self.stat.val() | 128;
+                    }
                     self.rdat.d.next = self.stat.val();
                     if self.i_wb_we.val() {
+                        if self.i_wb_dat.val().get_bit(4) {
+                            self.fs_clear.d.next = true;
+                            self.fs_clear_held.d.next = true;
+                        }
+                        if self.i_wb_dat.val().get_bit(5) {
+                            if self.running.q.val() {
+                                self.err_cfg.d.next = true;
+                            } else {
+                                self.fs_host.d.next = true;
+                            }
+                        }
                         if self.i_wb_dat.val().get_bit(0) {
                             self.running.d.next = true;
                         }
@@ -484,6 +577,9 @@ impl Logic for Mdb {
         self.o_irq1.next = self.irq1.q.val();
         self.o_irq2.next = self.irq2.q.val();
         self.o_irq_fs.next = self.irq_fs.q.val();
+        self.o_irq_fsc.next = self.irq_fsc.q.val();
+        self.o_fs_host.next = self.fs_host.q.val();
+        self.o_fs_clear.next = self.fs_clear.q.val();
         self.o_aerr.next = self.aerr.q.val();
     }
 }

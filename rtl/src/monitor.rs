@@ -89,6 +89,8 @@ pub struct Monitor {
     pub o_ok: Signal<Out, Bit>,
     /// VOID word.
     pub o_void: Signal<Out, Bit>,
+    /// Marked word (last group T, protocol §4).
+    pub o_marked: Signal<Out, Bit>,
     /// Own slot.
     pub o_own: Signal<Out, Bit>,
     /// Header rejected.
@@ -109,6 +111,7 @@ pub struct Monitor {
     p_reason: DFF<Bits<4>>,
     p_ok: DFF<Bit>,
     p_void: DFF<Bit>,
+    p_marked: DFF<Bit>,
     p_own: DFF<Bit>,
     p_ptype: DFF<Bits<2>>,
     conf_edge: Signal<Local, Bit>,
@@ -143,6 +146,7 @@ impl Monitor {
             o_reason: Default::default(),
             o_ok: Default::default(),
             o_void: Default::default(),
+            o_marked: Default::default(),
             o_own: Default::default(),
             o_hdr_bad: Default::default(),
             o_ptype: Default::default(),
@@ -160,6 +164,7 @@ impl Monitor {
             p_reason: Default::default(),
             p_ok: Default::default(),
             p_void: Default::default(),
+            p_marked: Default::default(),
             p_own: Default::default(),
             p_ptype: Default::default(),
             conf_edge: Default::default(),
@@ -173,7 +178,7 @@ impl Logic for Monitor {
     fn update(&mut self) {
         dff_setup!(
             self, clock, last_lvl, quiet, p_valid, p_kind, p_slot, p_data, p_alive, p_alarm,
-            p_reason, p_ok, p_void, p_own, p_ptype
+            p_reason, p_ok, p_void, p_marked, p_own, p_ptype
         );
         self.cdr.clock.next = self.clock.val();
         self.framer.clock.next = self.clock.val();
@@ -220,6 +225,7 @@ impl Logic for Monitor {
         self.o_reason.next = self.p_reason.q.val();
         self.o_ok.next = self.p_ok.q.val();
         self.o_void.next = self.p_void.q.val();
+        self.o_marked.next = self.p_marked.q.val();
         self.o_own.next = self.p_own.q.val();
         self.o_ptype.next = self.p_ptype.q.val();
         if self.p_valid.q.val() & self.conf_edge.val() {
@@ -241,6 +247,7 @@ impl Logic for Monitor {
             self.p_reason.d.next = self.word.o_reason.val();
             self.p_ok.d.next = self.word.o_ok.val();
             self.p_void.d.next = self.word.o_void.val();
+            self.p_marked.d.next = self.word.o_marked.val();
             self.p_own.d.next = self.word.o_own.val();
             self.p_ptype.d.next = self.word.o_ptype.val();
             if self.conf_edge.val() {
@@ -253,6 +260,7 @@ impl Logic for Monitor {
                 self.o_reason.next = self.word.o_reason.val();
                 self.o_ok.next = self.word.o_ok.val();
                 self.o_void.next = self.word.o_void.val();
+                self.o_marked.next = self.word.o_marked.val();
                 self.o_own.next = self.word.o_own.val();
                 self.o_ptype.next = self.word.o_ptype.val();
             }

@@ -1,7 +1,8 @@
 //! # pkt_tx — packet generator of the special master (protocol §3–§5)
 //!
 //! Purpose: sends one packet per `i_start` on the node's own clock: J K, the
-//! header words H0 and H1 (ALIVE = ALARM = 0), and — for a DATA frame
+//! header words H0 and H1 (ALARM = 0; ALIVE = 0 but for H0's CLR flag,
+//! `i_h0_alive`, protocol §5, §12), and — for a DATA frame
 //! (`i_slots` = 1) — `i_slots_m1 + 1` slot words, each taken from
 //! `i_word_*` when its turn comes (`o_take` is high in that clock; `o_slot`
 //! is the slot whose word must be on `i_word_*`; it moves to the first slot
@@ -16,6 +17,7 @@
 //! | `i_slots` | in | 1 | clock | the packet carries slot words (DATA) |
 //! | `i_slots_m1` | in | 12 | static | slot words − 1 |
 //! | `i_h0`, `i_h1` | in | 16 | clock | header words, taken when they are due |
+//! | `i_h0_alive` | in | 1 | clock | H0's ALIVE bit (a DATA frame's CLR), taken with `i_h0` |
 //! | `i_word_data` | in | 16 | clock | data of slot `o_slot` |
 //! | `i_word_alive`, `i_word_alarm`, `i_word_void` | in | 1 | clock | its flags / VOID |
 //! | `o_slot` | out | 12 | clock | slot whose word is due next |
@@ -51,6 +53,8 @@ pub struct PktTx {
     pub i_h0: Signal<In, Bits<16>>,
     /// Header word 1.
     pub i_h1: Signal<In, Bits<16>>,
+    /// H0's ALIVE bit (CLR).
+    pub i_h0_alive: Signal<In, Bit>,
     /// Slot word data.
     pub i_word_data: Signal<In, Bits<16>>,
     /// Slot word ALIVE.
@@ -197,6 +201,7 @@ impl Logic for PktTx {
                 if self.wcnt.q.val() == 0 {
                     self.wcnt.d.next = 1.into();
                     self.w_data.d.next = self.i_h0.val();
+                    self.w_alive.d.next = self.i_h0_alive.val();
                 } else if self.wcnt.q.val() == 1 {
                     self.wcnt.d.next = 2.into();
                     self.w_data.d.next = self.i_h1.val();

@@ -10,8 +10,8 @@
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::rx_word::RxWord`] |
 //! | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
 //! | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
-//! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
-//! | `o_los`, `o_cf`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
+//! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
+//! | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
 //! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 //!
 //! Latency: as [`Monitor`]; stream-controller outputs one clock later.
@@ -63,6 +63,8 @@ pub struct PortRx {
     pub o_ok: Signal<Out, Bit>,
     /// VOID word.
     pub o_void: Signal<Out, Bit>,
+    /// Marked word (damaged on an earlier fibre, protocol §4).
+    pub o_marked: Signal<Out, Bit>,
     /// Own slot.
     pub o_own: Signal<Out, Bit>,
     /// Header rejected.
@@ -79,6 +81,10 @@ pub struct PortRx {
     pub o_phase: Signal<Out, Bits<2>>,
     /// Channel failure.
     pub o_cf: Signal<Out, Bit>,
+    /// Structural channel failure.
+    pub o_hard: Signal<Out, Bit>,
+    /// Channel failure by a run of bad words.
+    pub o_run: Signal<Out, Bit>,
     /// Test signal.
     pub o_tst: Signal<Out, Bit>,
     /// ACK of the last TST.
@@ -108,6 +114,7 @@ impl PortRx {
             o_reason: Default::default(),
             o_ok: Default::default(),
             o_void: Default::default(),
+            o_marked: Default::default(),
             o_own: Default::default(),
             o_hdr_bad: Default::default(),
             o_ptype: Default::default(),
@@ -116,6 +123,8 @@ impl PortRx {
             o_level: Default::default(),
             o_phase: Default::default(),
             o_cf: Default::default(),
+            o_hard: Default::default(),
+            o_run: Default::default(),
             o_tst: Default::default(),
             o_ack: Default::default(),
             mon: Monitor::new(ext),
@@ -138,6 +147,7 @@ impl Logic for PortRx {
         self.ctrl.i_kind.next = self.mon.o_kind.val();
         self.ctrl.i_ok.next = self.mon.o_ok.val();
         self.ctrl.i_void.next = self.mon.o_void.val();
+        self.ctrl.i_marked.next = self.mon.o_marked.val();
         self.ctrl.i_data.next = self.mon.o_data.val();
         self.ctrl.i_ptype.next = self.mon.o_ptype.val();
         self.ctrl.i_tst_fail.next = self.i_tst_fail.val();
@@ -153,6 +163,7 @@ impl Logic for PortRx {
         self.o_reason.next = self.mon.o_reason.val();
         self.o_ok.next = self.mon.o_ok.val();
         self.o_void.next = self.mon.o_void.val();
+        self.o_marked.next = self.mon.o_marked.val();
         self.o_own.next = self.mon.o_own.val();
         self.o_hdr_bad.next = self.mon.o_hdr_bad.val();
         self.o_ptype.next = self.mon.o_ptype.val();
@@ -161,6 +172,8 @@ impl Logic for PortRx {
         self.o_level.next = self.mon.o_level.val();
         self.o_phase.next = self.mon.o_phase.val();
         self.o_cf.next = self.ctrl.o_cf.val();
+        self.o_hard.next = self.ctrl.o_hard.val();
+        self.o_run.next = self.ctrl.o_run.val();
         self.o_tst.next = self.ctrl.o_tst.val();
         self.o_ack.next = self.ctrl.o_ack.val();
     }

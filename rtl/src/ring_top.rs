@@ -33,7 +33,10 @@
 //! sender dies; flip: one line bit of the next packet is inverted, on the
 //! sender's own bit grid — the harness finds it from the line's edges, a
 //! boundary every 4 DDR halves between them — so the receiver sees exactly
-//! the single line-bit error the model applies) and a **monitor** (clock recovery,
+//! the single line-bit error the model applies; burst: from such a bit on,
+//! the line carries the model's garbage for a number of bits, made by the
+//! same generator, the level inverted where the garbage's code bit differs
+//! from the sender's) and a **monitor** (clock recovery,
 //! framer, word decoder at the nominal rate) whose DATA words are captured
 //! per cycle: entry `(cyc & 3) · CAP + slot` holds `{EPOCH[7:0], CYC[2:0],
 //! status[1:0], ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3
@@ -93,7 +96,9 @@ pub mod cfg {
     pub const KILL: u32 = 10;
     /// Fibre: arm a flip of line bit `val[11:0]` of the next packet (bit 0 =
     /// the first bit of its J K; counted from J's first 0 code bit, so
-    /// bits 0 and 1 cannot be hit and are refused by the driver).
+    /// bits 0 and 1 cannot be hit and are refused by the driver); with
+    /// `val[23:12]` ≠ 0, a burst of that many bits of garbage from there
+    /// (`merkur_model::line::garbage` of the pattern `val[31:24]`).
     pub const FLIP: u32 = 9;
     /// Global: slots − 1.
     pub const SLOTS_M1: u32 = 16;
@@ -132,6 +137,8 @@ pub mod status {
     pub const IRQFS: u32 = 11;
     /// Master: running.
     pub const RUN: u32 = 12;
+    /// Master: failsafe-change interrupts (entered or left, protocol §12).
+    pub const IRQFSC: u32 = 13;
     /// Fibre: `{in frame, last CYC[2:0]}`.
     pub const FRAME: u32 = 16;
     /// Fibre: last DATA H1.
@@ -346,13 +353,13 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                     &mut v,
                     &format!(
                         "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
-                         \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                         \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                          \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
                          \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
                          \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
-                         \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}),\n\
+                         \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
                          \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
-                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0;"
+                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0, irqfsc_{k} = 1'b0;"
                     ),
                 );
             }
@@ -371,11 +378,11 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 w(
                     &mut v,
                     &format!(
-                        "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    wire irq1_{k}, irq2_{k}, irqfs_{k};\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
+                        "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    wire irq1_{k}, irq2_{k}, irqfs_{k}, irqfsc_{k};\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
                          \x20   wire wbsel_{k} = i_wb_node == 16'd{k};\n\
                          \x20   {m} n{k}({common}, {extra}\n\
                          \x20       .i_wb_cyc(i_wb_cyc & wbsel_{k}), .i_wb_stb(i_wb_stb & wbsel_{k}), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),\n\
-                         \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}),\n\
+                         \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}), .o_irq_fsc(irqfsc_{k}),\n\
                          \x20       .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}), .o_aerr(aerr_{k}), .o_running(run_{k}));",
                         m = module_name(kind)
                     ),
@@ -385,8 +392,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         w(
             &mut v,
             &format!(
-                "    reg [15:0] nirq1_{k} = 16'd0, nirq2_{k} = 16'd0, nirqfs_{k} = 16'd0;\n\
-                 \x20   always @(posedge nclk_{k}) begin\n        if (irq1_{k}) nirq1_{k} <= nirq1_{k} + 16'd1;\n        if (irq2_{k}) nirq2_{k} <= nirq2_{k} + 16'd1;\n        if (irqfs_{k}) nirqfs_{k} <= nirqfs_{k} + 16'd1;\n    end"
+                "    reg [15:0] nirq1_{k} = 16'd0, nirq2_{k} = 16'd0, nirqfs_{k} = 16'd0, nirqfsc_{k} = 16'd0;\n\
+                 \x20   always @(posedge nclk_{k}) begin\n        if (irq1_{k}) nirq1_{k} <= nirq1_{k} + 16'd1;\n        if (irq2_{k}) nirq2_{k} <= nirq2_{k} + 16'd1;\n        if (irqfs_{k}) nirqfs_{k} <= nirqfs_{k} + 16'd1;\n        if (irqfsc_{k}) nirqfsc_{k} <= nirqfsc_{k} + 16'd1;\n    end"
             ),
         );
     }
@@ -424,7 +431,16 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20   wire bev_{f} = b1_{f} | b0_{f};\n    wire [31:0] bt_{f} = b1_{f} ? tick : tc_{f};\n\
                  \x20   wire jdet_{f} = b0_{f} & (ones_{f} >= 3'd5) & fl_arm_{f};\n\
                  \x20   wire hit_{f} = (jdet_{f} & fl_tgt_{f} == 12'd2) | (bev_{f} & fl_run_{f} & fl_cnt_{f} == 12'd1);\n\
-                 \x20   wire [31:0] tickd_{f} = tick - 32'd4;\n    wire inv_{f} = (tickd_{f} >= fl_is_{f}) & (tickd_{f} < fl_ie_{f});\n\
+                 \x20   wire [31:0] tickd_{f} = tick - 32'd4;\n\
+                 \x20   // Burst: bits left, the configured length and pattern, the generator (merkur_model::line::garbage), the level mask\n\
+                 \x20   // in force (bu_m from tick bu_t, bu_pm before), and the return of the level after the last bit.\n\
+                 \x20   reg [11:0] bu_len_{f} = 12'd0, bu_cfg_{f} = 12'd0;\n    reg [15:0] bu_s_{f} = 16'd0;\n    reg [1:0] bu_z_{f} = 2'd0;\n    reg [3:0] bu_o_{f} = 4'd0;\n\
+                 \x20   reg bu_m_{f} = 1'b0, bu_pm_{f} = 1'b0, bu_ret_{f} = 1'b0;\n    reg [31:0] bu_t_{f} = 32'hffffffff;\n\
+                 \x20   wire bu_start_{f} = hit_{f} & (bu_cfg_{f} != 12'd0);\n    wire bu_bit_{f} = bev_{f} & (bu_start_{f} | (bu_len_{f} != 12'd0));\n\
+                 \x20   wire bu_gr_{f} = (bu_z_{f} == 2'd2) ? 1'b1 : ((bu_o_{f} == 4'd9) ? 1'b0 : bu_s_{f}[0]);\n\
+                 \x20   wire bu_g_{f} = (bu_start_{f} | (bu_len_{f} == 12'd1)) ? 1'b1 : bu_gr_{f};\n\
+                 \x20   wire [15:0] bu_sn_{f} = bu_s_{f}[0] ? ({{1'b0, bu_s_{f}[15:1]}} ^ 16'hb400) : {{1'b0, bu_s_{f}[15:1]}};\n\
+                 \x20   wire inv_{f} = ((tickd_{f} >= fl_is_{f}) & (tickd_{f} < fl_ie_{f})) ^ ((tickd_{f} >= bu_t_{f}) ? bu_m_{f} : bu_pm_{f});\n\
                  \x20   always @(posedge clk) begin\n        txd_{f} <= {{txd_{f}[2:0], txl_{f}}};\n\
                  \x20       line_{f} <= (brk_{f} | dead_{src}) ? 1'b0 : (txd_{f}[3] ^ inv_{f});\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
                  \x20       if (hs_{src}) begin\n            hp_{f} <= txl_{f};\n\
@@ -433,17 +449,27 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20       if (bev_{f}) begin\n            ones_{f} <= b0_{f} ? 3'd0 : (ones_{f} == 3'd7 ? 3'd7 : ones_{f} + 3'd1);\n\
                  \x20           if (jdet_{f}) begin\n                fl_arm_{f} <= 1'b0;\n                fl_run_{f} <= fl_tgt_{f} > 12'd2;\n                fl_cnt_{f} <= fl_tgt_{f} - 12'd2;\n\
                  \x20           end else if (fl_run_{f}) begin\n                fl_cnt_{f} <= fl_cnt_{f} - 12'd1;\n                if (fl_cnt_{f} == 12'd1) fl_run_{f} <= 1'b0;\n            end\n\
-                 \x20           if (hit_{f}) begin\n                fl_is_{f} <= bt_{f};\n                fl_ie_{f} <= 32'hffffffff;\n                fl_open_{f} <= 1'b1;\n            end else if (fl_open_{f}) begin\n                fl_ie_{f} <= bt_{f};\n                fl_open_{f} <= 1'b0;\n            end\n        end\n\
+                 \x20           if (hit_{f} & (bu_cfg_{f} == 12'd0)) begin\n                fl_is_{f} <= bt_{f};\n                fl_ie_{f} <= 32'hffffffff;\n                fl_open_{f} <= 1'b1;\n            end else if (fl_open_{f}) begin\n                fl_ie_{f} <= bt_{f};\n                fl_open_{f} <= 1'b0;\n            end\n\
+                 \x20           if (bu_bit_{f}) begin\n                // A garbage bit from this boundary: the mask makes the line's code bit the garbage's.\n\
+                 \x20               bu_pm_{f} <= bu_m_{f};\n                bu_m_{f} <= (bu_start_{f} ? 1'b0 : bu_m_{f}) ^ b1_{f} ^ bu_g_{f};\n                bu_t_{f} <= bt_{f};\n                bu_s_{f} <= bu_sn_{f};\n\
+                 \x20               bu_z_{f} <= bu_g_{f} ? 2'd0 : bu_z_{f} + 2'd1;\n                bu_o_{f} <= bu_g_{f} ? bu_o_{f} + 4'd1 : 4'd0;\n\
+                 \x20               bu_len_{f} <= (bu_start_{f} ? bu_cfg_{f} : bu_len_{f}) - 12'd1;\n                bu_ret_{f} <= (bu_start_{f} ? bu_cfg_{f} : bu_len_{f}) == 12'd1;\n\
+                 \x20               if (bu_start_{f}) begin\n                    bu_z_{f} <= 2'd0;\n                    bu_o_{f} <= 4'd1;\n                    bu_cfg_{f} <= 12'd0;\n                end\n\
+                 \x20           end else if (bu_ret_{f}) begin\n                // After the last garbage bit the level is the sender's again.\n\
+                 \x20               bu_pm_{f} <= bu_m_{f};\n                bu_m_{f} <= 1'b0;\n                bu_t_{f} <= bt_{f};\n                bu_ret_{f} <= 1'b0;\n            end\n        end\n\
                  \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_brk}) brk_{f} <= i_cfg_val[0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) begin\n            fl_arm_{f} <= 1'b1;\n            fl_run_{f} <= 1'b0;\n            fl_tgt_{f} <= i_cfg_val[11:0];\n        end\n    end\n\
-                 \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
+                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) begin\n            fl_arm_{f} <= 1'b1;\n            fl_run_{f} <= 1'b0;\n            fl_tgt_{f} <= i_cfg_val[11:0];\n\
+                 \x20           bu_cfg_{f} <= i_cfg_val[23:12];\n            bu_s_{f} <= {{i_cfg_val[31:24], 8'ha5}};\n        end\n    end\n\
+                 \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
                  \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                  \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff), .i_flush(1'b0),\n\
                  \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
                  \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
-                 \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_void(m_void_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
+                 \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_void(m_void_{f}), .o_marked(m_marked_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
                  \x20   reg [30:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 31'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
                  \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
+                 \x20   // A bad word's ALARM field in the capture says whether it was marked (protocol §4).\n\
+                 \x20   wire mflag_{f} = (m_ok_{f} | m_void_{f}) ? m_alarm_{f} : m_marked_{f};\n\
                  \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
@@ -453,7 +479,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
-                 \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{epoch, hdr_cyc_{f}, mstat_{f}, m_alarm_{f}, m_alive_{f}, m_data_{f}}};\n\
+                 \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
                  \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
                 c_brk = cfg::BREAK,
                 c_flip = cfg::FLIP,
@@ -464,7 +490,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         );
     }
     // Status read: every field by name (`status`), `K` = node or fibre.
-    let node_fields: [(u32, &str); 13] = [
+    let node_fields: [(u32, &str); 14] = [
         (status::MODE, "{30'd0, mode_K}"),
         (status::FS, "{31'd0, fs_K}"),
         (status::PERR, "{16'd0, perr_K}"),
@@ -477,6 +503,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         (status::IRQ1, "{16'd0, nirq1_K}"),
         (status::IRQ2, "{16'd0, nirq2_K}"),
         (status::IRQFS, "{16'd0, nirqfs_K}"),
+        (status::IRQFSC, "{16'd0, nirqfsc_K}"),
         (status::RUN, "{31'd0, run_K}"),
     ];
     let fibre_fields: [(u32, &str); 9] = [

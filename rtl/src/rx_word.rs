@@ -30,6 +30,7 @@
 //! | `o_reason` | out | 4 | clock | reason nibble (ext only, else 0) |
 //! | `o_ok` | out | 1 | clock | all groups data, both parities odd |
 //! | `o_void` | out | 1 | clock | all groups S (VOID word) |
+//! | `o_marked` | out | 1 | clock | bad, its last group T: a forwarder marked it (damaged on an earlier fibre, protocol §4) |
 //! | `o_own` | out | 1 | clock | slot word of `i_address` |
 //! | `o_hdr_bad` | out | 1 | clock | DATA header rejected; packet dropped |
 //! | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST) |
@@ -84,6 +85,8 @@ pub struct RxWord {
     pub o_ok: Signal<Out, Bit>,
     /// VOID word.
     pub o_void: Signal<Out, Bit>,
+    /// Marked word (last group T).
+    pub o_marked: Signal<Out, Bit>,
     /// Own slot.
     pub o_own: Signal<Out, Bit>,
     /// Header rejected.
@@ -124,6 +127,7 @@ pub struct RxWord {
     reason_r: DFF<Bits<4>>,
     ok_r: DFF<Bit>,
     void_r: DFF<Bit>,
+    marked_r: DFF<Bit>,
     own_r: DFF<Bit>,
     hdr_bad_r: DFF<Bit>,
     // Combinational helpers.
@@ -157,6 +161,7 @@ impl RxWord {
             o_reason: Default::default(),
             o_ok: Default::default(),
             o_void: Default::default(),
+            o_marked: Default::default(),
             o_own: Default::default(),
             o_hdr_bad: Default::default(),
             o_ptype: Default::default(),
@@ -201,6 +206,7 @@ impl RxWord {
             reason_r: Default::default(),
             ok_r: Default::default(),
             void_r: Default::default(),
+            marked_r: Default::default(),
             own_r: Default::default(),
             hdr_bad_r: Default::default(),
             nib: Default::default(),
@@ -220,7 +226,7 @@ impl Logic for RxWord {
         dff_setup!(
             self, clock, gcount, data, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
             active, wcount, slot, ptype, end_r, wvalid_r, kind_r, slot_r, data_r, alive_r, alarm_r,
-            reason_r, ok_r, void_r, own_r, hdr_bad_r, idles
+            reason_r, ok_r, void_r, marked_r, own_r, hdr_bad_r, idles
         );
         self.dec.i_code.next = self.i_group.val();
         self.nib.next = self.dec.o_nibble.val();
@@ -311,6 +317,8 @@ impl Logic for RxWord {
                 }
                 self.ok_r.d.next = self.w_ok.val();
                 self.void_r.d.next = self.w_all_s.val();
+                // The forwarder's mark, T (merkur_model::line::CODE_T).
+                self.marked_r.d.next = self.i_group.val() == 0b01101;
                 self.own_r.d.next =
                     (self.wcount.q.val() == 2) & (self.slot.q.val() == self.i_address.val());
                 if self.wcount.q.val() == 0 {
@@ -356,6 +364,7 @@ impl Logic for RxWord {
         self.o_reason.next = self.reason_r.q.val();
         self.o_ok.next = self.ok_r.q.val();
         self.o_void.next = self.void_r.q.val();
+        self.o_marked.next = self.marked_r.q.val();
         self.o_own.next = self.own_r.q.val();
         self.o_hdr_bad.next = self.hdr_bad_r.q.val();
         self.o_ptype.next = self.ptype.q.val();

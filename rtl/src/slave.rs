@@ -20,17 +20,17 @@
 //! | `i_address` | in | 12 | static (DIP switches) | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
 //! | `i_actuator` | in | 1 | static | 1 actuator, 0 sensor |
-//! | `i_cs_timeout` | in | 16 | static | clocks without a good frame before failsafe (2 cycle periods) |
+//! | `i_cs_timeout` | in | 16 | static | clocks without the start of a packet other than a TST on INPUT before failsafe (3.5 cycle periods, protocol §12 rule 4) |
 //! | `i_sensor_data` | in | 16 | clock | sensor value |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (a high clock queues the alarm) |
 //! | `o_act_data` | out | 16 | clock | actuator output register |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD) |
-//! | `o_failsafe` | out | 1 | clock | failsafe (terminal) |
+//! | `o_failsafe` | out | 1 | clock | failsafe (until a CLR header brings the node out, protocol §12) |
 //! | `o_perr` | out | 16 | clock | bad words seen at INPUT (saturating) |
 //! | `o_ferr` | out | 16 | clock | frame errors: rejected headers at INPUT (saturating) |
 //! | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::master`] |
 //! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
-//! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok` | out | | clock | INPUT's words, for a master's memories |
+//! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words and rejected headers, for a master's memories |
 //!
 //! Latency: INPUT to OUTPUT 8–9.5 bit times (CDR + one group + retime
 //! buffer, [`Fwd`]); BSR to BSS ≈ 3.5 bit times (CDR + [`Retime`]).
@@ -113,6 +113,8 @@ pub struct Slave {
     pub o_alarm: Signal<Out, Bit>,
     /// Good word.
     pub o_ok: Signal<Out, Bit>,
+    /// INPUT rejected a DATA header (or a header it could not read).
+    pub o_hdr_bad: Signal<Out, Bit>,
     /// Actuator output register.
     pub o_act_data: Signal<Out, Bits<16>>,
     /// Mode.
@@ -194,6 +196,7 @@ impl Slave {
             o_alive: Default::default(),
             o_alarm: Default::default(),
             o_ok: Default::default(),
+            o_hdr_bad: Default::default(),
             o_act_data: Default::default(),
             o_mode: Default::default(),
             o_failsafe: Default::default(),
@@ -350,8 +353,10 @@ impl Logic for Slave {
             }
         }
 
-        // CS timeout: no good DATA header for i_cs_timeout clocks (the
-        // counter restarts below at every good header).
+        // CS timeout: no packet but TSTs for i_cs_timeout clocks (the
+        // counter restarts below at every H0 that is not a good TST's: a
+        // frame whose header a bit error damaged still shows the ring is
+        // alive, protocol §12 rule 4).
         if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
             self.quiet.d.next = self.quiet.q.val() + 1;
         }
@@ -373,13 +378,17 @@ impl Logic for Slave {
                 // RWC waits for H1 (RWP): the node's knowledge changes once
                 // per header, not for the 25 bit times between its words.
                 self.h0_rwc.d.next = self.rx_in.o_data.val().get_bit(12);
-                if self.rx_in.o_data.val().get_bit(13) {
+                // FS without CLR puts the node into failsafe; CLR (the
+                // header's ALIVE bit) with FS = 0 brings it out (§12).
+                if self.rx_in.o_data.val().get_bit(13) & !self.rx_in.o_alive.val() {
                     self.failsafe.d.next = true;
+                }
+                if !self.rx_in.o_data.val().get_bit(13) & self.rx_in.o_alive.val() {
+                    self.failsafe.d.next = false;
                 }
             }
             if self.rx_in.o_kind.val() == 1 {
                 self.armed.d.next = true;
-                self.quiet.d.next = 0.into();
                 // Cycles without a good frame: the gap in CYC since the
                 // last one (counted when the next one comes).
                 self.last_cyc.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
@@ -409,6 +418,12 @@ impl Logic for Slave {
         {
             self.perr.d.next = self.perr.q.val() + 1;
         }
+        if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 0)
+            & !(self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 2))
+        {
+            self.quiet.d.next = 0.into();
+        }
         if self.ferr_owed.q.val() != 0 {
             self.ferr_owed.d.next = self.ferr_owed.q.val() - 1;
             if self.ferr.q.val() != 0xffff {
@@ -421,8 +436,12 @@ impl Logic for Slave {
         // Switchbox decisions (protocol §10, §12): crate::switch_ctl.
         self.swc.clock.next = self.clock.val();
         self.swc.i_armed.next = self.armed.q.val();
-        self.swc.i_cf_in.next = self.rx_in.o_cf.val();
-        self.swc.i_cf_bsr.next = self.rx_bsr.o_cf.val();
+        self.swc.i_hard_in.next = self.rx_in.o_hard.val();
+        self.swc.i_hard_bsr.next = self.rx_bsr.o_hard.val();
+        self.swc.i_run_in.next = self.rx_in.o_run.val();
+        self.swc.i_run_bsr.next = self.rx_bsr.o_run.val();
+        self.swc.i_los_in.next = self.rx_in.o_los.val();
+        self.swc.i_los_bsr.next = self.rx_bsr.o_los.val();
         self.swc.i_rw.next = self.rw.q.val();
         self.swc.i_fs.next = self.failsafe.q.val();
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
@@ -503,5 +522,6 @@ impl Logic for Slave {
         self.o_failsafe.next = self.failsafe.q.val();
         self.o_perr.next = self.perr.q.val();
         self.o_ferr.next = self.ferr.q.val();
+        self.o_hdr_bad.next = self.rx_in.o_hdr_bad.val();
     }
 }

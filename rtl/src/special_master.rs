@@ -7,7 +7,10 @@
 //! returns on PI fills the **return store**, a slot-indexed memory (S words
 //! with the cycle they returned in), from which the next frame is built
 //! (protocol §8: the paper's FIFO; it cannot overflow, and a slot that did
-//! not return last cycle is sent as VOID). Per slot of the outgoing frame:
+//! not return last cycle is sent as VOID). An entry is sent once: it is
+//! marked not valid in the clock after its word is taken, so a slot whose
+//! frame came back with a bad header, or not at all, is VOID however many
+//! cycles ago it last returned (CYC has only 3 bits). Per slot of the outgoing frame:
 //! - LOCAL: `{data memory, Alive}`, or an alarm in the home slot (§11, with
 //!   alternation);
 //! - ACT: the returned word with the data memory's value and the actuator's
@@ -29,6 +32,17 @@
 //! cycle's start only when the last returned frame had RWC = 0 (protocol
 //! §8).
 //!
+//! Failsafe (protocol §12): it enters failsafe like every node (FS in a
+//! returned header without CLR, a second structural fault, its CS timeout:
+//! 3.5 periods without a returned packet other than a TST, a FAILSAFE
+//! alarm), and it alone brings the ring out: it keeps `hop_ref`, the HOP of
+//! the last good header back with FS = 0 outside failsafe; in failsafe,
+//! after 2 frames back in a row with HOP ≥ `hop_ref` (every node reached
+//! again: the ring is no longer split) — and its host's FS_CLEAR where
+//! FS_HOST is set or a FAILSAFE request came back — it leaves failsafe at a
+//! period tick and sends CLR frames (H0's ALIVE bit) until one comes back
+//! with FS = 0; if the 4th does not, it enters failsafe again.
+//!
 //! Switchbox: like every node ([`crate::slave`]; protocol §10) it wraps
 //! when its INPUT or BSR fails (frames then leave on OUTPUT and return on
 //! INPUT of its row of Table 1, headers carry RWC, no SEC is sent, BSS
@@ -48,12 +62,13 @@
 //! | `i_address` | in | 12 | static | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
 //! | `i_period` | in | 16 | static | cycle period P in bit times (protocol §8) |
-//! | `i_cs_timeout` | in | 16 | static | clocks without a returned frame before failsafe |
+//! | `i_cs_timeout` | in | 16 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods) |
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD) |
-//! | `o_failsafe` | out | 1 | clock | failsafe |
+//! | `o_failsafe` | out | 1 | clock | failsafe (left by the special master itself, protocol §12) |
+//! | `o_irq_fsc` | out | 1 | clock | failsafe entered or left (one clock) |
 //! | `o_perr`, `o_ferr`, `o_aerr`, `o_serr` | out | 16 | clock | error counters (`serr`: SEC packets that did not return) |
 //! | `o_hop` | out | 12 | clock | HOP of the last returned frame (N − 1 in a healthy ring) |
 //! | `o_cycles` | out | 16 | clock | frames sent |
@@ -143,6 +158,8 @@ pub struct SpecialMaster {
     pub o_mode: Signal<Out, Bits<2>>,
     /// Failsafe.
     pub o_failsafe: Signal<Out, Bit>,
+    /// Failsafe entered or left.
+    pub o_irq_fsc: Signal<Out, Bit>,
     /// Bad words at INPUT.
     pub o_perr: Signal<Out, Bits<16>>,
     /// Rejected headers at INPUT.
@@ -183,6 +200,10 @@ pub struct SpecialMaster {
     rlast: DFF<Bit>,
     mdb: Mdb,
     store: RAM<Bits<22>, 12>,
+    /// A store entry was sent: mark it not valid (in the next clock the
+    /// return path does not write).
+    st_used: DFF<Bit>,
+    st_used_slot: DFF<Bits<12>>,
     sent_alarm: RAM<Bit, 12>,
     aact: RAM<Bit, 12>,
     half: DFF<Bit>,
@@ -197,10 +218,28 @@ pub struct SpecialMaster {
     ret_cyc: DFF<Bits<3>>,
     hop: DFF<Bits<12>>,
     armed: DFF<Bit>,
-    ferr_owed: DFF<Bits<3>>,
-    cyc_gap: Signal<Local, Bits<3>>,
+    ferr_owed: DFF<Bits<12>>,
+    /// The returning frame's number: CYC's 3 bits say how far back from
+    /// the SM's own 12-bit count it was sent (0 or 1 frames).
+    cyc_back: Signal<Local, Bits<3>>,
+    ret_num: Signal<Local, Bits<12>>,
+    /// Number of the last frame that came back with a good header.
+    last_num: DFF<Bits<12>>,
+    cyc_gap: Signal<Local, Bits<12>>,
+    ferr_sum: Signal<Local, Bits<17>>,
     quiet: DFF<Bits<16>>,
     sec_sent: DFF<Bit>,
+    // Leaving failsafe (protocol §12).
+    hop_ref: DFF<Bits<12>>,
+    whole: DFF<Bits<2>>,
+    clr_sent: DFF<Bits<3>>,
+    ret_fs: DFF<Bit>,
+    ret_clr: DFF<Bit>,
+    ret_seen: DFF<Bit>,
+    fs_request: DFF<Bit>,
+    host_clear: DFF<Bit>,
+    leave: Signal<Local, Bit>,
+    clr_fail: Signal<Local, Bit>,
     sec_ok: DFF<Bit>,
     sec_word: DFF<Bits<16>>,
     serr: DFF<Bits<16>>,
@@ -254,6 +293,7 @@ impl Default for SpecialMaster {
             o_irq_fs: Default::default(),
             o_mode: Default::default(),
             o_failsafe: Default::default(),
+            o_irq_fsc: Default::default(),
             o_perr: Default::default(),
             o_ferr: Default::default(),
             o_aerr: Default::default(),
@@ -285,6 +325,8 @@ impl Default for SpecialMaster {
             rlast: Default::default(),
             mdb: Default::default(),
             store: Default::default(),
+            st_used: Default::default(),
+            st_used_slot: Default::default(),
             sent_alarm: Default::default(),
             aact: Default::default(),
             half: Default::default(),
@@ -300,9 +342,23 @@ impl Default for SpecialMaster {
             hop: Default::default(),
             armed: Default::default(),
             ferr_owed: Default::default(),
+            cyc_back: Default::default(),
+            ret_num: Default::default(),
+            last_num: Default::default(),
             cyc_gap: Default::default(),
+            ferr_sum: Default::default(),
             quiet: Default::default(),
             sec_sent: Default::default(),
+            hop_ref: Default::default(),
+            whole: Default::default(),
+            clr_sent: Default::default(),
+            ret_fs: Default::default(),
+            ret_clr: Default::default(),
+            ret_seen: Default::default(),
+            fs_request: Default::default(),
+            host_clear: Default::default(),
+            leave: Default::default(),
+            clr_fail: Default::default(),
             sec_ok: Default::default(),
             sec_word: Default::default(),
             serr: Default::default(),
@@ -337,10 +393,52 @@ impl Logic for SpecialMaster {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, half, bcnt, cyc, cycles, toggle, fbusy, failsafe, fs_tx, ret_rwc, ret_cyc,
-            hop, armed, quiet, sec_sent, sec_ok, sec_word, serr, perr, ferr, pend_fs, pend_i1,
-            pend_i2, prev_alarm, ferr_owed, rdl, rcd, rcd_run, rdata, relay, rlast, pend_rc,
-            ret_rwp, sw_flush
+            self,
+            clock,
+            half,
+            bcnt,
+            cyc,
+            cycles,
+            toggle,
+            fbusy,
+            failsafe,
+            fs_tx,
+            ret_rwc,
+            ret_cyc,
+            hop,
+            armed,
+            quiet,
+            sec_sent,
+            sec_ok,
+            sec_word,
+            serr,
+            perr,
+            ferr,
+            pend_fs,
+            pend_i1,
+            pend_i2,
+            prev_alarm,
+            ferr_owed,
+            rdl,
+            rcd,
+            rcd_run,
+            rdata,
+            relay,
+            rlast,
+            pend_rc,
+            ret_rwp,
+            sw_flush,
+            hop_ref,
+            whole,
+            clr_sent,
+            ret_fs,
+            ret_clr,
+            ret_seen,
+            fs_request,
+            host_clear,
+            st_used,
+            st_used_slot,
+            last_num
         );
         self.sbox.i_mode.next = self.swc.o_mode.val();
         self.sbox.i_pi.next = self.i_pi.val();
@@ -410,6 +508,10 @@ impl Logic for SpecialMaster {
         self.ftx.i_slots_m1.next = self.i_slots_m1.val();
         self.ftx.i_h0.next = self.h0.val();
         self.ftx.i_h1.next = self.h1.val();
+        // CLR in the frames it sends while it brings the ring out of
+        // failsafe (H0's ALIVE bit, protocol §12).
+        self.ftx.i_h0_alive.next = self.clr_sent.q.val() != 0;
+        self.stx.i_h0_alive.next = false;
         self.stx.i_start.next = self.tick.val() & !self.ret_rwc.q.val() & !self.wrapped.val();
         self.stx.i_slots.next = false;
         self.stx.i_slots_m1.next = self.i_slots_m1.val();
@@ -505,6 +607,7 @@ impl Logic for SpecialMaster {
                 if self.reason.val() == 3 {
                     self.pend_fs.d.next = false;
                     self.failsafe.d.next = true;
+                    self.fs_request.d.next = true;
                 } else if self.reason.val() == 1 {
                     self.pend_i1.d.next = false;
                 } else if self.reason.val() == 2 {
@@ -530,11 +633,44 @@ impl Logic for SpecialMaster {
             self.toggle.d.next = !self.toggle.q.val();
             self.cyc.d.next = self.cyc.q.val() + 1;
         }
+        // Leaving failsafe at a period tick (protocol §12): after frames
+        // came back whole twice in a row, and with the host's FS_CLEAR where
+        // that is needed; or failing safe again when the 4th CLR frame did
+        // not come back with FS = 0.
+        self.leave.next = self.tick.val()
+            & self.failsafe.q.val()
+            & (self.whole.q.val() >= 2)
+            & (!(self.mdb.o_fs_host.val() | self.fs_request.q.val()) | self.host_clear.q.val());
+        self.clr_fail.next =
+            self.tick.val() & !self.failsafe.q.val() & (self.clr_sent.q.val() >= 4);
+        self.mdb.i_fs_cleared.next = self.leave.val() & self.host_clear.q.val();
+        if self.mdb.o_fs_clear.val() {
+            self.host_clear.d.next = true;
+        }
+        if self.tick.val() {
+            self.ret_seen.d.next = false;
+            if !self.ret_seen.q.val() {
+                // The last frame did not come back: not whole.
+                self.whole.d.next = 0.into();
+            }
+            if self.leave.val() {
+                self.failsafe.d.next = false;
+                self.clr_sent.d.next = 1.into();
+                self.whole.d.next = 0.into();
+                self.fs_request.d.next = false;
+                self.host_clear.d.next = false;
+            } else if self.clr_fail.val() {
+                self.failsafe.d.next = true;
+                self.clr_sent.d.next = 0.into();
+            } else if self.clr_sent.q.val() != 0 {
+                self.clr_sent.d.next = self.clr_sent.q.val() + 1;
+            }
+        }
         if self.tick.val() {
             // A frame is written as the SM's state at its start says: a
             // failsafe entered while it is sent applies from the next one
             // (protocol §12).
-            self.fs_tx.d.next = self.failsafe.q.val();
+            self.fs_tx.d.next = (self.failsafe.q.val() & !self.leave.val()) | self.clr_fail.val();
             self.sec_word.d.next = !self.sec_h0.val();
             if self.cycles.q.val() != 0xffff {
                 self.cycles.d.next = self.cycles.q.val() + 1;
@@ -554,30 +690,77 @@ impl Logic for SpecialMaster {
             self.sec_ok.d.next = true;
         }
 
-        self.cyc_gap.next = self.rx_in.o_data.val().get_bits::<3>(12) - self.ret_cyc.q.val() - 1;
-        // The returning frame (protocol §5, §8, §12); a good header
-        // restarts the CS timeout.
+        // Frames without a good header back since the last one (protocol
+        // §9): from the SM's own frame count, so 8 or more in a row count
+        // too (CYC alone has 3 bits).
+        self.cyc_back.next =
+            self.cyc.q.val().get_bits::<3>(0) - self.rx_in.o_data.val().get_bits::<3>(12);
+        self.ret_num.next = self.cyc.q.val() - (bit_cast::<12, 3>(self.cyc_back.val()) | 0);
+        self.cyc_gap.next = self.ret_num.val() - self.last_num.q.val() - 1;
+        // The returning frame (protocol §5, §8, §12); every returned packet
+        // but a TST restarts the CS timeout (a damaged header too).
         if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
             self.quiet.d.next = self.quiet.q.val() + 1;
+        }
+        if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 0)
+            & !(self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 2))
+        {
+            self.quiet.d.next = 0.into();
         }
         if self.rx_in.o_wvalid.val() & self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 0) {
             if self.rx_in.o_kind.val() == 0 {
                 self.ret_rwc.d.next = self.rx_in.o_data.val().get_bit(12);
-                if self.rx_in.o_data.val().get_bit(13) {
+                self.ret_fs.d.next = self.rx_in.o_data.val().get_bit(13);
+                self.ret_clr.d.next = self.rx_in.o_alive.val();
+                // FS without CLR (in CLR frames FS = 1 is a node that has
+                // not left yet, protocol §12).
+                if self.rx_in.o_data.val().get_bit(13) & !self.rx_in.o_alive.val() {
                     self.failsafe.d.next = true;
                 }
             }
             if self.rx_in.o_kind.val() == 1 {
                 self.ret_cyc.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
                 self.ret_rwp.d.next = self.rx_in.o_data.val().get_bit(15);
-                // Cycles without a good frame back: the gap in CYC.
+                // Cycles without a good frame back: the gap in frame numbers.
                 if self.armed.q.val() {
                     self.ferr_owed.d.next = self.cyc_gap.val();
                 }
+                self.last_num.d.next = self.ret_num.val();
                 self.hop.d.next = self.rx_in.o_data.val().get_bits::<12>(0);
                 self.armed.d.next = true;
-                self.quiet.d.next = 0.into();
+                // Leaving failsafe (protocol §12): hop_ref outside failsafe;
+                // in failsafe, frames back whole (HOP ≥ hop_ref) in a row;
+                // a CLR frame back with FS = 0: every node has left.
+                self.ret_seen.d.next = true;
+                if self.failsafe.q.val() {
+                    self.whole.d.next = 0.into();
+                    if self.rx_in.o_data.val().get_bits::<12>(0) >= self.hop_ref.q.val() {
+                        self.whole.d.next = self.whole.q.val() + 1;
+                        if self.whole.q.val() == 3 {
+                            self.whole.d.next = 3.into();
+                        }
+                    }
+                } else {
+                    self.whole.d.next = 0.into();
+                    if !self.ret_fs.q.val() {
+                        self.hop_ref.d.next = self.rx_in.o_data.val().get_bits::<12>(0);
+                    }
+                }
+                if (self.clr_sent.q.val() != 0) & self.ret_clr.q.val() & !self.ret_fs.q.val() {
+                    self.clr_sent.d.next = 0.into();
+                }
             }
+        }
+        // A FAILSAFE alarm that comes back (or the SM's own): the ring leaves
+        // that failsafe only with the host's FS_CLEAR (protocol §12).
+        if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 2)
+            & self.rx_in.o_ok.val()
+            & self.rx_in.o_alarm.val()
+            & (self.rx_in.o_data.val().get_bits::<4>(12) == 3)
+        {
+            self.fs_request.d.next = true;
         }
         if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
             self.failsafe.d.next = true;
@@ -588,8 +771,12 @@ impl Logic for SpecialMaster {
         // over before the frame starts.
         self.swc.clock.next = self.clock.val();
         self.swc.i_armed.next = self.armed.q.val();
-        self.swc.i_cf_in.next = self.rx_in.o_cf.val();
-        self.swc.i_cf_bsr.next = self.rx_bsr.o_cf.val();
+        self.swc.i_hard_in.next = self.rx_in.o_hard.val();
+        self.swc.i_hard_bsr.next = self.rx_bsr.o_hard.val();
+        self.swc.i_run_in.next = self.rx_in.o_run.val();
+        self.swc.i_run_bsr.next = self.rx_bsr.o_run.val();
+        self.swc.i_los_in.next = self.rx_in.o_los.val();
+        self.swc.i_los_bsr.next = self.rx_bsr.o_los.val();
         self.swc.i_rw.next = self.rw.val();
         self.swc.i_fs.next = self.failsafe.q.val();
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
@@ -614,10 +801,13 @@ impl Logic for SpecialMaster {
         {
             self.perr.d.next = self.perr.q.val() + 1;
         }
+        self.ferr_sum.next = (bit_cast::<17, 16>(self.ferr.q.val()) | 0)
+            + (bit_cast::<17, 12>(self.ferr_owed.q.val()) | 0);
         if self.ferr_owed.q.val() != 0 {
-            self.ferr_owed.d.next = self.ferr_owed.q.val() - 1;
-            if self.ferr.q.val() != 0xffff {
-                self.ferr.d.next = self.ferr.q.val() + 1;
+            self.ferr_owed.d.next = 0.into();
+            self.ferr.d.next = self.ferr_sum.val().get_bits::<16>(0);
+            if self.ferr_sum.val().get_bit(16) {
+                self.ferr.d.next = 0xffff.into();
             }
         }
         if self.mdb.o_irq_fs.val() {
@@ -641,6 +831,21 @@ impl Logic for SpecialMaster {
         self.store.write_enable.next = self.mdb.o_s2.val();
         self.store.write_address.next = self.mdb.o_s2_slot.val();
         self.store.write_data.next = self.st_word.val();
+        // An entry is good for one frame (protocol §8): the clock after its
+        // word is taken it is written not valid, or the clock after that if
+        // a returned word is written then (o_s2 is one clock per word; a
+        // slot's word returns at least a hop after it was sent, so the two
+        // never meet in one slot).
+        if self.st_used.q.val() & !self.mdb.o_s2.val() {
+            self.st_used.d.next = false;
+            self.store.write_enable.next = true;
+            self.store.write_address.next = self.st_used_slot.q.val();
+            self.store.write_data.next = 0.into();
+        }
+        if self.ftx.o_take.val() {
+            self.st_used.d.next = true;
+            self.st_used_slot.d.next = self.ftx.o_slot.val();
+        }
 
         // The database.
         self.mdb.i_wb_cyc.next = self.i_wb_cyc.val();
@@ -660,12 +865,14 @@ impl Logic for SpecialMaster {
         self.mdb.i_alive.next = self.rx_in.o_alive.val();
         self.mdb.i_alarm.next = self.rx_in.o_alarm.val();
         self.mdb.i_ok.next = self.rx_in.o_ok.val();
+        self.mdb.i_hdr_bad.next = self.rx_in.o_hdr_bad.val();
 
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();
         self.o_irq_fs.next = self.mdb.o_irq_fs.val();
         self.o_mode.next = self.swc.o_mode.val();
         self.o_failsafe.next = self.failsafe.q.val();
+        self.o_irq_fsc.next = self.mdb.o_irq_fsc.val();
         self.o_perr.next = self.perr.q.val();
         self.o_ferr.next = self.ferr.q.val();
         self.o_aerr.next = self.mdb.o_aerr.val();

@@ -6,13 +6,19 @@
 //!
 //! Channel failure `o_cf` is any of:
 //! - loss of signal (no line transition for 32 bit times, from the CDR);
-//! - 8 consecutive bad words (parity or code errors; VOID words are not bad),
-//!   until the next good word, or until the switchbox moves the input to
-//!   another line (`i_flush`: a run is a property of one channel; carried
-//!   over, it would make a node that wrapped because of it fail safe as soon
-//!   as the settling time after the change is over);
 //! - a test signal while `i_tst_fail` (mode N on INPUT: a TST where DATA is
-//!   expected means the upstream neighbour has wrapped).
+//!   expected means the upstream neighbour has wrapped);
+//! - 8 consecutive bad words damaged on this fibre (parity or code errors;
+//!   VOID words are not bad, marked words — damaged on an earlier fibre,
+//!   protocol §4 — leave the count as it is), until the next good word, or
+//!   until the switchbox moves the input to another line (`i_flush`: a run
+//!   is a property of one channel; carried over, it would make a node that
+//!   wrapped because of it fail safe as soon as the settling time after the
+//!   change is over).
+//!
+//! The first two are structural (`o_hard`: a dark fibre, a dead or wrapped
+//! neighbour), the last a transient (`o_run`): a node decides differently on
+//! them (protocol §9, §12; [`crate::switch_ctl`]).
 //!
 //! Test signal `o_tst`: a good TST packet (H0 type 10, H1 = NOT H0) was
 //! received within the last 130 bit times (2 TST periods); `o_ack` is the
@@ -22,10 +28,12 @@
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_los` | in | 1 | clock | loss of signal |
-//! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_data`, `i_ptype` | in | | clock | word outputs of the receive chain |
+//! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_data`, `i_ptype` | in | | clock | word outputs of the receive chain |
 //! | `i_tst_fail` | in | 1 | static | a test signal counts as channel failure |
 //! | `i_flush` | in | 1 | clock | the input moved to another line: the run of bad words restarts |
-//! | `o_cf` | out | 1 | clock | channel failure |
+//! | `o_cf` | out | 1 | clock | channel failure (`o_hard` or `o_run`) |
+//! | `o_hard` | out | 1 | clock | loss of signal, or a test signal while `i_tst_fail` |
+//! | `o_run` | out | 1 | clock | 8 bad words in a row damaged on this fibre |
 //! | `o_tst` | out | 1 | clock | test signal |
 //! | `o_ack` | out | 1 | clock | ACK of the last TST |
 //!
@@ -59,6 +67,8 @@ pub struct StreamCtrl {
     pub i_ok: Signal<In, Bit>,
     /// VOID word.
     pub i_void: Signal<In, Bit>,
+    /// Marked word (damaged on an earlier fibre).
+    pub i_marked: Signal<In, Bit>,
     /// Word data.
     pub i_data: Signal<In, Bits<16>>,
     /// Packet type.
@@ -69,6 +79,10 @@ pub struct StreamCtrl {
     pub i_flush: Signal<In, Bit>,
     /// Channel failure.
     pub o_cf: Signal<Out, Bit>,
+    /// Structural channel failure (loss of signal, a TST where DATA is expected).
+    pub o_hard: Signal<Out, Bit>,
+    /// A run of bad words damaged on this fibre.
+    pub o_run: Signal<Out, Bit>,
     /// Test signal.
     pub o_tst: Signal<Out, Bit>,
     /// ACK bit of the last TST.
@@ -80,7 +94,8 @@ pub struct StreamCtrl {
     hold: DFF<Bits<9>>,
     tst: DFF<Bit>,
     ack: DFF<Bit>,
-    cf: DFF<Bit>,
+    hard: DFF<Bit>,
+    run: DFF<Bit>,
 }
 
 impl Default for StreamCtrl {
@@ -92,11 +107,14 @@ impl Default for StreamCtrl {
             i_kind: Default::default(),
             i_ok: Default::default(),
             i_void: Default::default(),
+            i_marked: Default::default(),
             i_data: Default::default(),
             i_ptype: Default::default(),
             i_tst_fail: Default::default(),
             i_flush: Default::default(),
             o_cf: Default::default(),
+            o_hard: Default::default(),
+            o_run: Default::default(),
             o_tst: Default::default(),
             o_ack: Default::default(),
             hold_start: Constant::new((TST_HOLD_CLOCKS - 1).to_bits()),
@@ -106,7 +124,8 @@ impl Default for StreamCtrl {
             hold: Default::default(),
             tst: Default::default(),
             ack: Default::default(),
-            cf: Default::default(),
+            hard: Default::default(),
+            run: Default::default(),
         }
     }
 }
@@ -114,11 +133,14 @@ impl Default for StreamCtrl {
 impl Logic for StreamCtrl {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, h0, bad, hold, tst, ack, cf);
+        dff_setup!(self, clock, h0, bad, hold, tst, ack, hard, run);
         if self.i_wvalid.val() {
             if self.i_ok.val() {
                 self.bad.d.next = 0.into();
-            } else if !self.i_void.val() & (self.bad.q.val() != self.bad_max.val()) {
+            } else if !self.i_void.val()
+                & !self.i_marked.val()
+                & (self.bad.q.val() != self.bad_max.val())
+            {
                 self.bad.d.next = self.bad.q.val() + 1;
             }
             if (self.i_kind.val() == 0) & self.i_ok.val() {
@@ -144,10 +166,11 @@ impl Logic for StreamCtrl {
             self.ack.d.next = self.h0.q.val().get_bit(12);
             self.hold.d.next = self.hold_start.val();
         }
-        self.cf.d.next = self.i_los.val()
-            | ((self.bad.q.val() == self.bad_max.val()) & !self.i_flush.val())
-            | (self.tst.q.val() & self.i_tst_fail.val());
-        self.o_cf.next = self.cf.q.val();
+        self.hard.d.next = self.i_los.val() | (self.tst.q.val() & self.i_tst_fail.val());
+        self.run.d.next = (self.bad.q.val() == self.bad_max.val()) & !self.i_flush.val();
+        self.o_cf.next = self.hard.q.val() | self.run.q.val();
+        self.o_hard.next = self.hard.q.val();
+        self.o_run.next = self.run.q.val();
         self.o_tst.next = self.tst.q.val();
         self.o_ack.next = self.ack.q.val();
     }

@@ -6,15 +6,22 @@
 //! repaired link's partner acknowledges its TST. No central station: each
 //! node runs one of these on what it sees.
 //!
-//! - mode N: INPUT fails → WU (and failsafe if BSR failed too, or the node
-//!   knows the ring is already wrapped: the second fault); else BSR fails →
-//!   WD (failsafe if the ring is known wrapped);
-//! - wrapped: INPUT fails → failsafe; the partner's TST with ACK heard on
-//!   BSR → a WD node unwraps at the next frame start after
+//! - mode N: INPUT fails → WU; else BSR fails → WD. A structural failure
+//!   (`i_hard_*`: loss of signal, a TST where DATA is expected) while the
+//!   node knows the ring is wrapped is the second fault: failsafe, and so is
+//!   loss of signal on both at once. A run of bad words (`i_run_*`, a
+//!   transient) counts only while the ring is not known wrapped (a soft
+//!   wrap), and never for failsafe (protocol §9, §12);
+//! - wrapped: loss of signal on INPUT → failsafe; the partner's TST with
+//!   ACK heard on BSR → a WD node unwraps at the next frame start after
 //!   [`crate::slave::REINTEGRATE_CLOCKS`] of it, a WU node when a DATA
 //!   header arrives on BSR after it and no packet is arriving on INPUT (if
 //!   one is — the frame that went the long way round — when it ends, so it
-//!   is not cut into the new one); not in failsafe;
+//!   is not cut into the new one); in failsafe too (issue 28: that is how a
+//!   ring that failed safe becomes whole again), where a WU node takes a
+//!   DATA header on BSR for the ACK (its upstream neighbour forwards the
+//!   ring's frames to it, so it is not wrapped towards it: the special
+//!   master's downstream neighbour, cut off with it, hears no TST);
 //! - stream controllers act only once the node is armed (its first good
 //!   frame) and not for [`crate::slave::SETTLE_CLOCKS`] after a change (the
 //!   receivers lock to their new lines); after unwrapping, a TST where DATA
@@ -24,7 +31,9 @@
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock |
 //! | `i_armed` | in | 1 | clock | the node has received its first good frame |
-//! | `i_cf_in`, `i_cf_bsr` | in | 1 | clock | channel failure on INPUT, on BSR |
+//! | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::stream_ctrl`]) |
+//! | `i_run_in`, `i_run_bsr` | in | 1 | clock | a run of bad words on INPUT, on BSR |
+//! | `i_los_in`, `i_los_bsr` | in | 1 | clock | loss of signal on INPUT, on BSR |
 //! | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
 //! | `i_fs` | in | 1 | clock | the node is in failsafe |
 //! | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
@@ -42,7 +51,7 @@
 //! Latency: a decision takes effect at the next clock edge (`o_mode`).
 //!
 //! ```text
-//! i_cf_in   ____/‾‾‾‾‾‾‾‾‾
+//! i_hard_in ____/‾‾‾‾‾‾‾‾‾
 //! o_change  ____/‾\________        (mode N, ring not known wrapped)
 //! o_mode    ==N===X==WU====
 //! ```
@@ -57,13 +66,21 @@ pub struct SwitchCtl {
     pub clock: Signal<In, Clock>,
     /// First good frame seen.
     pub i_armed: Signal<In, Bit>,
-    /// Channel failure on INPUT.
-    pub i_cf_in: Signal<In, Bit>,
-    /// Channel failure on BSR.
-    pub i_cf_bsr: Signal<In, Bit>,
+    /// Structural channel failure on INPUT.
+    pub i_hard_in: Signal<In, Bit>,
+    /// Structural channel failure on BSR.
+    pub i_hard_bsr: Signal<In, Bit>,
+    /// A run of bad words on INPUT.
+    pub i_run_in: Signal<In, Bit>,
+    /// A run of bad words on BSR.
+    pub i_run_bsr: Signal<In, Bit>,
+    /// Loss of signal on INPUT.
+    pub i_los_in: Signal<In, Bit>,
+    /// Loss of signal on BSR.
+    pub i_los_bsr: Signal<In, Bit>,
     /// The ring is known wrapped.
     pub i_rw: Signal<In, Bit>,
-    /// In failsafe.
+    /// The node is in failsafe.
     pub i_fs: Signal<In, Bit>,
     /// Partner's TST with ACK on BSR.
     pub i_tst_ack: Signal<In, Bit>,
@@ -96,6 +113,9 @@ pub struct SwitchCtl {
     seen_ack: DFF<Bit>,
     pend_up: DFF<Bit>,
     new_mode: Signal<Local, Bits<2>>,
+    fail_in: Signal<Local, Bit>,
+    fail_bsr: Signal<Local, Bit>,
+    up_ok: Signal<Local, Bit>,
 }
 
 impl Default for SwitchCtl {
@@ -103,8 +123,12 @@ impl Default for SwitchCtl {
         Self {
             clock: Default::default(),
             i_armed: Default::default(),
-            i_cf_in: Default::default(),
-            i_cf_bsr: Default::default(),
+            i_hard_in: Default::default(),
+            i_hard_bsr: Default::default(),
+            i_run_in: Default::default(),
+            i_run_bsr: Default::default(),
+            i_los_in: Default::default(),
+            i_los_bsr: Default::default(),
             i_rw: Default::default(),
             i_fs: Default::default(),
             i_tst_ack: Default::default(),
@@ -127,6 +151,9 @@ impl Default for SwitchCtl {
             seen_ack: Default::default(),
             pend_up: Default::default(),
             new_mode: Default::default(),
+            fail_in: Default::default(),
+            fail_bsr: Default::default(),
+            up_ok: Default::default(),
         }
     }
 }
@@ -143,21 +170,26 @@ impl Logic for SwitchCtl {
         }
         self.o_fs_set.next = false;
         self.new_mode.next = self.mode.q.val();
+        // In failsafe a DATA header on BSR is as good as the ACK (§12).
+        self.up_ok.next = self.seen_ack.q.val() | self.i_fs.val();
+        // A run of bad words wraps only a ring not known to be wrapped.
+        self.fail_in.next = self.i_hard_in.val() | (self.i_run_in.val() & !self.i_rw.val());
+        self.fail_bsr.next = self.i_hard_bsr.val() | (self.i_run_bsr.val() & !self.i_rw.val());
         if !self.i_armed.val() | (self.settle.q.val() != 0) {
         } else if self.mode.q.val() == 0 {
-            if self.i_cf_in.val() {
+            if self.fail_in.val() {
                 self.new_mode.next = 1.into();
-                if self.i_cf_bsr.val() | self.i_rw.val() {
-                    self.o_fs_set.next = true;
-                }
-            } else if self.i_cf_bsr.val() {
+            } else if self.fail_bsr.val() {
                 self.new_mode.next = 2.into();
-                if self.i_rw.val() {
-                    self.o_fs_set.next = true;
-                }
+            }
+            // The second structural fault; or both lines dark at once.
+            if ((self.i_hard_in.val() | self.i_hard_bsr.val()) & self.i_rw.val())
+                | (self.i_los_in.val() & self.i_los_bsr.val())
+            {
+                self.o_fs_set.next = true;
             }
         } else {
-            if self.i_cf_in.val() {
+            if self.i_los_in.val() {
                 self.o_fs_set.next = true;
             }
             if self.i_tst_ack.val() {
@@ -166,22 +198,20 @@ impl Logic for SwitchCtl {
                     self.ack_time.d.next = self.ack_time.q.val() + 1;
                 }
             }
-            if !self.i_fs.val() {
-                if (self.mode.q.val() == 2)
-                    & (self.ack_time.q.val() >= self.reintegrate.val())
-                    & self.i_frame_start.val()
-                {
-                    self.new_mode.next = 0.into();
-                }
-                if (self.mode.q.val() == 1) & self.seen_ack.q.val() & self.i_bsr_data.val() {
-                    self.pend_up.d.next = true;
-                }
-                if (self.mode.q.val() == 1)
-                    & (self.pend_up.q.val() | (self.seen_ack.q.val() & self.i_bsr_data.val()))
-                    & !self.i_in_pkt.val()
-                {
-                    self.new_mode.next = 0.into();
-                }
+            if (self.mode.q.val() == 2)
+                & (self.ack_time.q.val() >= self.reintegrate.val())
+                & self.i_frame_start.val()
+            {
+                self.new_mode.next = 0.into();
+            }
+            if (self.mode.q.val() == 1) & self.up_ok.val() & self.i_bsr_data.val() {
+                self.pend_up.d.next = true;
+            }
+            if (self.mode.q.val() == 1)
+                & (self.pend_up.q.val() | (self.up_ok.val() & self.i_bsr_data.val()))
+                & !self.i_in_pkt.val()
+            {
+                self.new_mode.next = 0.into();
             }
         }
         self.o_change.next = self.new_mode.val() != self.mode.q.val();

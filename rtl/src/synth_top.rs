@@ -27,6 +27,7 @@
 //! | `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr[13:0]`, `i_wb_dat[15:0]` | in | | master, SM | Wishbone B4 host port on `clk` ([`crate::mdb`]) |
 //! | `o_wb_dat[15:0]`, `o_wb_ack` | out | | master, SM | Wishbone read data, acknowledge |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_running` | out | 1 | master, SM | interrupts received, ring started |
+//! | `o_irq_fsc` | out | 1 | master, SM | failsafe entered or left (protocol §12) |
 //!
 //! Latency: inputs reach the node 1–1.75 clocks after the pin (capture +
 //! one register); outputs leave 1 clock after the node's DDR pair (the
@@ -40,11 +41,12 @@
 
 use merkur_model::scenario::Kind;
 
-/// Clocks without a good frame before a node enters failsafe: 2.5 cycle
-/// periods (2 per protocol §12 plus margin for ±1000 ppm clocks), at 2
-/// clocks per bit time, saturated to the 16-bit port.
+/// Clocks without the start of a packet other than a TST before a node
+/// enters failsafe: 3.5 cycle periods (3 per protocol §12 rule 4, plus
+/// margin for ±1000 ppm clocks and where in its period a frame passes), at
+/// 2 clocks per bit time, saturated to the 16-bit port.
 pub fn cs_timeout_clocks(period_bits: u64) -> u64 {
-    (5 * period_bits).min(0xfffe)
+    (7 * period_bits).min(0xfffe)
 }
 
 /// The static configuration of one node, as the top ties it.
@@ -170,6 +172,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             "o_irq1",
             "o_irq2",
             "o_irq_fs",
+            "o_irq_fsc",
             "o_running",
         ]);
     }
@@ -187,7 +190,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             "    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
              \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n\
              \x20   output wire [15:0] o_wb_dat;\n    output wire o_wb_ack;\n    output wire o_irq1;\n\
-             \x20   output wire o_irq2;\n    output wire o_irq_fs;\n    output wire o_running;\n",
+             \x20   output wire o_irq2;\n    output wire o_irq_fs;\n    output wire o_irq_fsc;\n    output wire o_running;\n",
         );
     }
     v.push_str(
@@ -220,13 +223,13 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
              \x20   // Master-mode outputs of the slave module, unused in a slave.\n\
              \x20   /* verilator lint_off UNUSEDSIGNAL */\n\
              \x20   wire [11:0] nc_fwd_slot;\n    wire nc_regen;\n    wire nc_wvalid;\n    wire [1:0] nc_kind;\n\
-             \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire nc_ok;\n\
+             \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire nc_ok;\n    wire nc_hdr_bad;\n\
              \x20   /* verilator lint_on UNUSEDSIGNAL */\n\
              \x20   {}  node(\n        {common},\n\
              \x20       .i_actuator(1'b{act}), .i_sensor_data(sensor),\n\
              \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
              \x20       .o_fwd_slot(nc_fwd_slot), .o_regen(nc_regen), .o_wvalid(nc_wvalid), .o_kind(nc_kind),\n\
-             \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_ok(nc_ok),\n\
+             \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad),\n\
              \x20       .o_act_data(act_data));\n",
             node_module(st.kind)
         ));
@@ -246,7 +249,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             "    {} node(\n        {common},\n\
              \x20       .i_wb_cyc(i_wb_cyc), .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),\n\
              \x20       .i_wb_dat(i_wb_dat), .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack),\n\
-             \x20       .o_irq1(o_irq1), .o_irq2(o_irq2), .o_irq_fs(o_irq_fs), .o_aerr(aerr),\n\
+             \x20       .o_irq1(o_irq1), .o_irq2(o_irq2), .o_irq_fs(o_irq_fs), .o_irq_fsc(o_irq_fsc), .o_aerr(aerr),\n\
              \x20       .o_running(o_running){extra});\n",
             node_module(st.kind)
         ));

@@ -16,7 +16,7 @@ use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::line::{Lead, Word};
 use merkur_model::ring::{self, table1, Carry, CycleRecord, EventKind, HeaderRx, Mode, Port, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
-use merkur_rtl::mdb::{ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
+use merkur_rtl::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
 use merkur_rtl::ring_top::{
     cap_slots, cfg as field, ring_verilog, status as st, INC_NOMINAL, TICKS_PER_BIT,
 };
@@ -135,7 +135,7 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
     if cfg
         .faults
         .iter()
-        .any(|(_, f)| matches!(f, Fault::Flip { .. }))
+        .any(|(_, f)| matches!(f, Fault::Flip { .. } | Fault::Burst { .. }))
     {
         let recs = ring::run(cfg);
         let n = cfg.nodes.len();
@@ -158,8 +158,12 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
 /// packet by its J K ([`merkur_rtl::ring_top`]): the fibre must carry one
 /// packet in the cycle, after an idle gap the driver can see.
 pub fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Option<String> {
-    let Fault::Flip { fibre, target, bit } = f else {
-        return None;
+    let (fibre, target, bit) = match f {
+        Fault::Flip { fibre, target, bit } => (fibre, target, bit),
+        Fault::Burst {
+            fibre, target, bit, ..
+        } => (fibre, target, bit),
+        _ => return None,
     };
     if target == FlipTarget::Cs && bit < 2 {
         return Some(format!(
@@ -178,7 +182,32 @@ pub fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Opt
             "fibre = {fibre}: in this cycle the fibre does not carry one frame or SEC after another (a wrap in progress); the RTL harness cannot place the flip"
         ));
     }
+    // Garbage can make a good header word of another value (2 parity bits:
+    // about 1 word in 128); the harness's monitors file a frame's words
+    // under the CYC of its H1, so a changed CYC would file it wrongly.
+    if let (Fault::Burst { .. }, Carry::Data(fr)) = (f, &rec.fibres[fi]) {
+        if let HeaderRx::Ok(h) = fr.hdr {
+            if h.cyc as u32 != c & 7 {
+                return Some(format!(
+                    "the garbage makes H1 another good word with CYC = {}; the RTL harness files a frame's words under the CYC of its H1",
+                    h.cyc
+                ));
+            }
+        }
+    }
     None
+}
+
+/// Line bit `bit` of a fault's target, counted from the packet's first line
+/// bit (J K 10 bits, two header words and the slots at 25 each, protocol §3).
+fn packet_bit(target: FlipTarget, bit: u32) -> u64 {
+    let word = match target {
+        FlipTarget::Cs => 0,
+        FlipTarget::H0 => 10,
+        FlipTarget::H1 => 35,
+        FlipTarget::Slot(s) => 60 + 25 * s as u64,
+    };
+    word + bit as u64
 }
 
 fn fibre_index(fb: Fibre, n: usize) -> usize {
@@ -296,6 +325,8 @@ fn cap_slot(e: u64, cyc: u32) -> Slot {
             reason: 0,
         }),
         3 => Slot::Void,
+        // A bad word's ALARM field tells whether it was marked (ring_top).
+        _ if (e >> 17) & 1 == 1 => Slot::Marked(Lead::Other),
         _ => Slot::Bad(Lead::Other),
     }
 }
@@ -393,6 +424,14 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             }
         }
     }
+    // The special master's failsafe exit (protocol §12): host exit, and a
+    // clear command given before the start.
+    if cfg.nodes[cfg.sm].fs_exit_host {
+        r.wb(cfg.sm, WB_STATUS, Some(ST_FS_HOST))?;
+    }
+    if cfg.fs_clears.contains(&0) {
+        r.wb(cfg.sm, WB_STATUS, Some(ST_FS_CLEAR))?;
+    }
     // Requests of cycle 0 are raised now, later ones after the previous
     // frame has passed the node.
     let mut reqs: Vec<(u32, usize, u64)> = vec![];
@@ -408,10 +447,17 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         }
     }
     reqs.sort();
+    // Host writes after the start, and the special master's host's failsafe
+    // clear commands (to its status register).
     let mut writes: Vec<(u32, usize, usize, u16)> = cfg
         .host_writes
         .iter()
         .copied()
+        .chain(
+            cfg.fs_clears
+                .iter()
+                .map(|&c| (c, cfg.sm, WB_STATUS as usize, ST_FS_CLEAR)),
+        )
         .filter(|w| w.0 > 0)
         .collect();
     writes.sort_by_key(|w| w.0);
@@ -465,14 +511,21 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                     .collect();
                 (i, c, When::Slot(outs, slot), (node, field::KILL, 1))
             }
+            Fault::Burst {
+                fibre,
+                target,
+                bit,
+                len,
+                pattern,
+            } => {
+                let fi = fibre_index(fibre, n);
+                let at = packet_bit(target, bit);
+                let val = at | (len as u64) << 12 | (pattern as u64) << 24;
+                (i, c, When::FrameEnded(fi), (fi, field::FLIP, val))
+            }
             Fault::Flip { fibre, target, bit } => {
                 let fi = fibre_index(fibre, n);
-                let at = match target {
-                    FlipTarget::Cs => 0,
-                    FlipTarget::H0 => 10,
-                    FlipTarget::H1 => 35,
-                    FlipTarget::Slot(s) => 60 + 25 * s as u64,
-                } + bit as u64;
+                let at = packet_bit(target, bit);
                 let when = match recs[c as usize].fibres[fi] {
                     Carry::Sec { .. } => {
                         let before = recs[..c as usize]
@@ -604,27 +657,32 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                             // In the idle gap: 10 bit times after frame
                             // c − 1 ended, so that the next node has its
                             // last word out and confirmed by idles.
+                            // (CYC has 3 bits: frame c − 1 of this epoch,
+                            // which the special master has started.)
                             let ended = !ats.is_empty()
+                                && sent >= c
                                 && ats
                                     .iter()
                                     .all(|&(infr, cyc, _)| !infr && cyc == c.wrapping_sub(1) & 7);
                             if ended && gap_at[idx].is_none() {
                                 gap_at[idx] = Some(r.ticks + 10 * TICKS_PER_BIT as u64);
                             }
-                            // (A repaired fibre carried nothing: when the
-                            // special master starts frame c.)
+                            // (A repaired fibre carries light again from the
+                            // end of cycle c, protocol §12: it carried
+                            // nothing, so when the special master starts
+                            // frame c + 1, below.)
                             let dark = matches!(cfg.faults[idx].1, Fault::Repair { .. });
                             c == 0
                                 || sent > c + 1
-                                || (dark && sent > c)
-                                || gap_at[idx].is_some_and(|t| r.ticks >= t)
+                                || (!dark && gap_at[idx].is_some_and(|t| r.ticks >= t))
                         }
                         Some(s) => {
                             let want = if s == 0 { 0xfff } else { s as u64 - 1 };
                             sent > c + 1
-                                || ats
-                                    .iter()
-                                    .any(|&(infr, cyc, last)| infr && cyc == c & 7 && last == want)
+                                || (sent > c
+                                    && ats.iter().any(|&(infr, cyc, last)| {
+                                        infr && cyc == c & 7 && last == want
+                                    }))
                         }
                     }
                 }
@@ -718,6 +776,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             st::IRQ1,
             st::IRQ2,
             st::IRQFS,
+            st::IRQFSC,
         ]
         .iter()
         .map(|&f| r.rd(k, f))
@@ -804,18 +863,16 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         if nd.kind == Kind::Actuator {
             check("output", want.output as u64, v[7]);
         }
-        let mut irq = [0u64; 3];
+        let mut irq = [0u64; 4];
         for rec in recs {
-            for ev in &rec.events {
-                if ev.node == k {
-                    if let EventKind::Irq { reason, .. } = ev.kind {
-                        match reason {
-                            1 => irq[0] += 1,
-                            2 => irq[1] += 1,
-                            3 => irq[2] += 1,
-                            _ => {}
-                        }
-                    }
+            for ev in rec.events.iter().filter(|ev| ev.node == k) {
+                match ev.kind {
+                    EventKind::Irq { reason: 1, .. } => irq[0] += 1,
+                    EventKind::Irq { reason: 2, .. } => irq[1] += 1,
+                    EventKind::Irq { reason: 3, .. } => irq[2] += 1,
+                    // The failsafe-change interrupt, both ways (§12).
+                    EventKind::Failsafe(_) | EventKind::FailsafeExit => irq[3] += 1,
+                    _ => {}
                 }
             }
         }
@@ -823,6 +880,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             check("IRQ1 alarms received", irq[0], v[8]);
             check("IRQ2 alarms received", irq[1], v[9]);
             check("FAILSAFE alarms received", irq[2], v[10]);
+            check("failsafe-change interrupts", irq[3], v[11]);
         }
         let mut irqs_got = v[8] + v[9] + v[10];
         if nd.kind.is_master() {
@@ -1125,9 +1183,21 @@ fn compare_cycle(
     let legal = |slot: usize, got: &Slot| -> bool {
         let Some((a, z)) = win else { return false };
         let Slot::Data(g) = got else { return true };
-        recs[a.saturating_sub(1) as usize..=z as usize]
-            .iter()
-            .any(|x| {
+        let span = &recs[a.saturating_sub(1) as usize..=z as usize];
+        // A RECONFIG alarm (§11) of a mode its sender had in the window:
+        // which of its modes is pending when it next writes depends on
+        // bit timing (a switchbox change just before or after a frame
+        // start; protocol §13).
+        let sender = cfg.nodes.iter().position(|nd| nd.address == slot);
+        let reconfig = !cfg.ext
+            && g.alarm
+            && sender.is_some_and(|w| {
+                span.iter().any(|x| {
+                    g.data == (merkur_model::ring::reason::reconfig(x.nodes[w].mode) as u16) << 12
+                })
+            });
+        reconfig
+            || span.iter().any(|x| {
                 x.produced.get(slot) == Some(&g.data)
                     || x.fibres.iter().any(|carry| match carry {
                         Carry::Data(fr) => {

@@ -4,7 +4,8 @@
 use crate::verilator::Model;
 use crate::Rng;
 use merkur_model::line::{
-    lead_of, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_I, CODE_J, CODE_K,
+    lead_of, mark_code_bits, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_I,
+    CODE_J, CODE_K,
 };
 use merkur_model::ring::{Frame, HeaderRx, Slot};
 
@@ -58,6 +59,7 @@ pub fn frame_code(code: &mut Vec<u8>, f: &Frame, slots: usize, rng: &mut Rng) {
             Slot::Data(d) => code.extend(word_code_bits(d, false)),
             Slot::Void => code.extend(void_code_bits(false)),
             Slot::Bad(l) => code.extend(bad_word(*l, rng)),
+            Slot::Marked(l) => code.extend(mark_code_bits(&bad_word(*l, rng))),
             Slot::Missing => panic!("frame_code needs a complete frame"),
         }
     }
@@ -92,8 +94,10 @@ pub enum Seen {
     Word(u16, bool, bool),
     /// VOID.
     Void,
-    /// Bad.
+    /// Bad, damaged on the fibre it was read on.
     Bad,
+    /// Bad and marked by a forwarder (protocol §4).
+    Marked,
 }
 
 /// How the model's slot must look to a monitor.
@@ -101,6 +105,7 @@ pub fn seen(s: &Slot) -> Seen {
     match s {
         Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm),
         Slot::Void => Seen::Void,
+        Slot::Marked(_) => Seen::Marked,
         _ => Seen::Bad,
     }
 }
@@ -116,6 +121,7 @@ pub struct PacketReader {
     alarm: usize,
     ok: usize,
     void: usize,
+    marked: usize,
     /// Packets so far: (header words, slots).
     pub packets: Vec<(Vec<u16>, Vec<Seen>)>,
 }
@@ -132,6 +138,7 @@ impl PacketReader {
             alarm: m.port("o_alarm"),
             ok: m.port("o_ok"),
             void: m.port("o_void"),
+            marked: m.port("o_marked"),
             packets: vec![],
         }
     }
@@ -158,6 +165,8 @@ impl PacketReader {
                     )
                 } else if m.get(self.void) == 1 {
                     Seen::Void
+                } else if m.get(self.marked) == 1 {
+                    Seen::Marked
                 } else {
                     Seen::Bad
                 });

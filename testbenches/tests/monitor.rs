@@ -3,12 +3,13 @@
 //! from a line whose bit clock is off by ±2000 ppm (two nodes at ±1000 ppm)
 //! with jitter. The model's fibre contents (tb-data scenarios) are turned
 //! into line bits with the model's own encoder; the monitor's words must
-//! match the model's decoded slots (good words exactly, VOID and bad words by
-//! class), bad headers must be rejected and destroyed delimiters not found.
+//! match the model's decoded slots (good words exactly, VOID, bad and marked
+//! words by class), bad headers must be rejected and destroyed delimiters
+//! not found.
 
 use merkur_model::config;
 use merkur_model::line::{
-    nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K, CODE_S,
+    mark_code_bits, nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K, CODE_S,
 };
 use merkur_model::ring::{self, Carry, HeaderRx, Slot};
 use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
@@ -58,8 +59,10 @@ fn encode_packet(
                 seen.push(Seen::Void);
             }
             Slot::Bad(_) => {
-                // The model keeps only "bad"; any single error inside the word
-                // (not its last bit, which would also hit the next word) is one.
+                // The model keeps only "bad"; any single error inside the
+                // word's first four groups is one (not in its last group,
+                // which an error can turn into the mark T, nor at its last
+                // bit, which would also hit the next word).
                 code.extend(word_code_bits(
                     &Word {
                         data: rng.next_u64() as u16,
@@ -67,8 +70,17 @@ fn encode_packet(
                     },
                     false,
                 ));
-                flips.push(at + rng.below(24) as usize);
+                flips.push(at + rng.below(19) as usize);
                 seen.push(Seen::Bad);
+            }
+            Slot::Marked(_) => {
+                // A bad word a forwarder marked: its last group T.
+                let w = Word {
+                    data: rng.next_u64() as u16,
+                    ..Word::default()
+                };
+                code.extend(mark_code_bits(&word_code_bits(&w, false)));
+                seen.push(Seen::Marked);
             }
             Slot::Missing => unreachable!(),
         }
@@ -112,6 +124,7 @@ fn run_scenario(name: &str, delta_ppm: f64) {
     let samples = line_samples(&line, delta_ppm, phase, 0.6, &mut rng);
     let mut m = Model::build(&block_verilog(Monitor::new(false))).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
+    let marked = p(&m, "o_marked");
     let (clk, smp, wv, kind, data, alive, alarm, ok, void, hbad, start) = (
         p(&m, "clock"),
         p(&m, "i_samples"),
@@ -142,6 +155,8 @@ fn run_scenario(name: &str, delta_ppm: f64) {
                 Seen::Word(m.get(data) as u16, m.get(alive) == 1, m.get(alarm) == 1)
             } else if m.get(void) == 1 {
                 Seen::Void
+            } else if m.get(marked) == 1 {
+                Seen::Marked
             } else {
                 Seen::Bad
             };

@@ -1,11 +1,13 @@
 //! rx_word in Verilator against the model: every word of random packets
-//! (data, alarm, VOID, words with a single line-bit error, bad and foreign
-//! headers, TST packets) is classified and decoded as `merkur_model::line::
+//! (data, alarm, VOID, words with a single line-bit error, words a
+//! forwarder marked, bad and foreign headers, TST packets) is classified and
+//! decoded as `merkur_model::line::
 //! decode_word` says; the slot counter, own-slot flag and packet end follow
 //! protocol §5.
 
 use merkur_model::line::{
-    decode_word, nrzi_decode, nrzi_encode, push_group, word_code_bits, Lead, Rx, Word, CODE_S,
+    decode_word, mark_code_bits, nrzi_decode, nrzi_encode, push_group, word_code_bits, Lead, Rx,
+    Word, CODE_S,
 };
 use merkur_model::ring::Header;
 use merkur_rtl::{rx_word::RxWord, verilog::block_verilog};
@@ -34,6 +36,7 @@ fn check(ext: bool) {
         p(&m, "i_gvalid"),
         p(&m, "i_group"),
     );
+    let marked = m.port("o_marked");
     let (end, wv, kind, slot, data, alive, alarm, reason, ok, void, own, hbad) = (
         p(&m, "o_end"),
         p(&m, "o_wvalid"),
@@ -75,6 +78,7 @@ fn check(ext: bool) {
                 rwp: false,
                 cyc: rng.below(8) as u8,
                 hop: rng.below(4096) as u16,
+                clr: rng.below(2) == 1,
             };
             let slots = if sort == 1 { SLOTS + 1 } else { SLOTS };
             (h.h0(slots), h.h1())
@@ -96,8 +100,12 @@ fn check(ext: bool) {
             }
         }
         let mut code = vec![];
-        for w in &words {
+        for (i, w) in words.iter().enumerate() {
             match w {
+                // Now and then a slot word a forwarder marked (§4).
+                Some(w) if i >= 2 && rng.below(10) == 0 => {
+                    code.extend(mark_code_bits(&word_code_bits(w, ext)))
+                }
                 Some(w) => code.extend(word_code_bits(w, ext)),
                 None => (0..wbits / 5).for_each(|_| push_group(&mut code, CODE_S)),
             }
@@ -115,6 +123,7 @@ fn check(ext: bool) {
             .chunks(wbits)
             .map(|c| match decode_word(c, ext) {
                 Rx::Bad(_) => Rx::Bad(Lead::Other),
+                Rx::Marked(_) => Rx::Marked(Lead::Other),
                 r => r,
             })
             .collect();
@@ -189,6 +198,8 @@ fn check(ext: bool) {
                     })
                 } else if m.get(void) == 1 {
                     Rx::Void
+                } else if m.get(marked) == 1 {
+                    Rx::Marked(Lead::Other)
                 } else {
                     Rx::Bad(Lead::Other)
                 };

@@ -37,6 +37,7 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
                     ..Header::default()
                 }),
                 hdr_bad: (false, false),
+                hdr_marked: false,
                 words: (0..SLOTS)
                     .map(|s| {
                         Slot::Data(Word {

@@ -44,6 +44,7 @@ fn data_frame(code: &mut Vec<u8>, cyc: u8, rng: &mut Rng) -> (u16, Vec<Seen>) {
             ..Header::default()
         }),
         hdr_bad: (false, false),
+        hdr_marked: false,
         words: (0..SLOTS)
             .map(|s| {
                 Slot::Data(Word {
