@@ -426,6 +426,55 @@ pub fn min_period(slots: usize, nodes: usize, ext: bool) -> u32 {
     f.max(latency).max(MIN_PERIOD_BITS)
 }
 
+/// Where a `flip` or `burst` fault hits: `word` ("cs" for a flip only,
+/// "h0", "h1") or `slot`, one of the two.
+fn fault_target(
+    m: &SourceMap,
+    f: &RawFault,
+    j: usize,
+    slots: usize,
+    kind: &str,
+) -> Result<FlipTarget, ScenarioError> {
+    let flip = kind == "flip";
+    let words = if flip {
+        "(\"cs\", \"h0\", \"h1\")"
+    } else {
+        "(\"h0\", \"h1\")"
+    };
+    match (&f.word, &f.slot) {
+        (Some(x), None) => match x.get_ref().as_str() {
+            "cs" if flip => Ok(FlipTarget::Cs),
+            "h0" => Ok(FlipTarget::H0),
+            "h1" => Ok(FlipTarget::H1),
+            other => Err(m.at(
+                x,
+                if flip {
+                    format!("fault[{j}].word = \"{other}\": use \"cs\", \"h0\", \"h1\", or give `slot` instead")
+                } else {
+                    format!("fault[{j}].word = \"{other}\": a burst starts in \"h0\", \"h1\" or a `slot` (not in the start delimiter)")
+                },
+            )),
+        },
+        (None, Some(sl)) => {
+            let v = *sl.get_ref() as usize;
+            if v >= slots {
+                return Err(m.at(
+                    sl,
+                    format!("fault[{j}].slot = {v}: the frame has slots 0..{}", slots - 1),
+                ));
+            }
+            Ok(FlipTarget::Slot(v))
+        }
+        (Some(x), Some(_)) => {
+            Err(m.at(x, format!("fault[{j}]: give either `word` or `slot`, not both")))
+        }
+        (None, None) => Err(m.at(
+            &f.kind,
+            format!("fault[{j}]: kind = \"{kind}\" needs `slot` or `word` {words}"),
+        )),
+    }
+}
+
 /// A `kind = "burst"` fault (its fibre already read): where it starts
 /// (a header word or a slot, not the start delimiter: garbage there would
 /// move the packet's start), its length, inside the frame, and its pattern.
@@ -439,37 +488,7 @@ fn burst(
     seed: u64,
 ) -> Result<Fault, ScenarioError> {
     let w = word_bits(ext);
-    let target = match (&f.word, &f.slot) {
-        (Some(x), None) => match x.get_ref().as_str() {
-            "h0" => FlipTarget::H0,
-            "h1" => FlipTarget::H1,
-            other => {
-                return Err(m.at(
-                    x,
-                    format!("fault[{j}].word = \"{other}\": a burst starts in \"h0\", \"h1\" or a `slot` (not in the start delimiter)"),
-                ))
-            }
-        },
-        (None, Some(sl)) => {
-            let v = *sl.get_ref() as usize;
-            if v >= slots {
-                return Err(m.at(
-                    sl,
-                    format!("fault[{j}].slot = {v}: the frame has slots 0..{}", slots - 1),
-                ));
-            }
-            FlipTarget::Slot(v)
-        }
-        (Some(x), Some(_)) => {
-            return Err(m.at(x, format!("fault[{j}]: give either `word` or `slot`, not both")))
-        }
-        (None, None) => {
-            return Err(m.at(
-                &f.kind,
-                format!("fault[{j}]: kind = \"burst\" needs `slot` or `word` (\"h0\", \"h1\")"),
-            ))
-        }
-    };
+    let target = fault_target(m, f, j, slots, "burst")?;
     let b = f.bit.as_ref().expect("checked");
     if *b.get_ref() >= w {
         return Err(m.at(
@@ -950,29 +969,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 forbid(spanu(&f.length), "length")?;
                 forbid(spanu(&f.pattern), "pattern")?;
                 let fibre = fibre(j)?;
-                let target = match (&f.word, &f.slot) {
-                    (Some(w), None) => match w.get_ref().as_str() {
-                        "cs" => FlipTarget::Cs,
-                        "h0" => FlipTarget::H0,
-                        "h1" => FlipTarget::H1,
-                        other => {
-                            return Err(m.at(
-                                w,
-                                format!("fault[{j}].word = \"{other}\": use \"cs\", \"h0\", \"h1\", or give `slot` instead"),
-                            ))
-                        }
-                    },
-                    (None, Some(_)) => FlipTarget::Slot(slot_at(&f.slot)?.expect("some")),
-                    (Some(w), Some(_)) => {
-                        return Err(m.at(w, format!("fault[{j}]: give either `word` or `slot`, not both")))
-                    }
-                    (None, None) => {
-                        return Err(m.at(
-                            &f.kind,
-                            format!("fault[{j}]: kind = \"flip\" needs `slot` or `word` (\"cs\", \"h0\", \"h1\")"),
-                        ))
-                    }
-                };
+                let target = fault_target(&m, f, j, slots, "flip")?;
                 let b = f.bit.as_ref().expect("checked");
                 let max = if target == FlipTarget::Cs {
                     JK_BITS
