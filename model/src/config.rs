@@ -417,6 +417,10 @@ pub fn frame_bits(slots: usize, ext: bool) -> u32 {
     JK_BITS + (2 + slots as u32) * word_bits(ext)
 }
 
+/// Longest legal cycle period in bit times (docs/protocol.md §8): the nodes'
+/// 20-bit period and CS timeout registers hold 7 · P clocks.
+pub const MAX_PERIOD_BITS: u32 = 149_796;
+
 /// Smallest legal cycle period (docs/protocol.md §8): room for the frame and
 /// its gap, for the worst-case wrapped ring latency plus one word of
 /// processing in the special master, and for a reintegration handshake.
@@ -772,6 +776,14 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                         "frame.period_bits = {v} is shorter than the ring can hold: {slots} slots on {n} nodes need at least {min} bit times (frame {} + gap {MIN_GAP_BITS}, wrapped-ring latency {}, reintegration {MIN_PERIOD_BITS})",
                         frame_bits(slots, ext),
                         n as u32 * (NODE_DELAY_BITS + PASS_DELAY_BITS) + word_bits(ext)
+                    ),
+                ));
+            }
+            if v > MAX_PERIOD_BITS {
+                return Err(m.at(
+                    p,
+                    format!(
+                        "frame.period_bits = {v} is longer than the nodes can count: at most {MAX_PERIOD_BITS} bit times (20-bit period and CS timeout registers, docs/protocol.md §8)"
                     ),
                 ));
             }

@@ -12,7 +12,7 @@
 //! | `clock` | in | 1 | — | core clock of every node |
 //! | `i_pi`, `i_si` | in | 4 | clock | chain inputs (4 samples per clock) |
 //! | `o_po`, `o_so` | out | 2 | clock | chain outputs |
-//! | `i_slots_m1`, `i_cs_timeout` | in | 12, 16 | static | shared configuration |
+//! | `i_slots_m1`, `i_cs_timeout` | in | 12, 20 | static | shared configuration |
 //! | `i_address<k>`, `i_actuator<k>`, `i_sensor<k>`, `i_irq1_<k>` | in | | clock | node k's [`Slave`] inputs |
 //! | `o_act<k>`, `o_mode<k>`, `o_fs<k>`, `o_perr<k>` | out | | clock | node k's [`Slave`] outputs |
 //!
@@ -68,7 +68,7 @@ pub struct Chain8 {
     /// Slots − 1.
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// CS timeout in clocks.
-    pub i_cs_timeout: Signal<In, Bits<16>>,
+    pub i_cs_timeout: Signal<In, Bits<20>>,
     /// Node 0: home slot.
     pub i_address0: Signal<In, Bits<12>>,
     /// Node 0: actuator (1) or sensor (0).

@@ -35,6 +35,7 @@
 //! - [`slave`]: the slave node top (Figure 6)
 //! - [`special_master`]: the clock base: frames every period, return store, SEC
 //! - [`tst_tx`]: link test packets of a wrapped node
+//! - [`ulx3s`]: board top of a slave on the Radiona ULX3S (ECP5 PLL, pins)
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
 
 pub mod boards;
@@ -67,5 +68,6 @@ pub mod switch_ctl;
 pub mod switchbox;
 pub mod synth_top;
 pub mod tst_tx;
+pub mod ulx3s;
 pub mod verilog;
 pub mod xem6010;

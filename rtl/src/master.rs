@@ -21,7 +21,7 @@
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 //! | `i_address` | in | 12 | static | home slot (one of the LOCAL slots) |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
-//! | `i_cs_timeout` | in | 16 | static | clocks without a good frame before failsafe |
+//! | `i_cs_timeout` | in | 20 | static | clocks without a good frame before failsafe |
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received (one clock per alarm) |
@@ -62,7 +62,7 @@ pub struct Master {
     /// Slots − 1.
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// CS timeout in clocks.
-    pub i_cs_timeout: Signal<In, Bits<16>>,
+    pub i_cs_timeout: Signal<In, Bits<20>>,
     /// Wishbone cycle.
     pub i_wb_cyc: Signal<In, Bit>,
     /// Wishbone strobe.

@@ -67,7 +67,7 @@
 //! the request's CYC, i.e. before the next frame; a sensor sees the value
 //! of the frame whose H1 its PI fibre showed last (its slot comes after).
 
-use crate::verilog::block_verilog;
+use crate::verilog::{block_verilog, mem_depth, size_memories};
 use merkur_model::scenario::Kind;
 
 /// Ticks of the simulation clock per nominal bit time (one tick per
@@ -180,14 +180,16 @@ pub fn renamed(verilog: &str, name: &str) -> String {
         .replace(" top$", &format!(" {name}$"))
 }
 
-/// The Verilog of a node kind's modules, named after [`module_name`].
-pub fn node_verilog(kind: Kind) -> String {
+/// The Verilog of a node kind's modules, named after [`module_name`], for a
+/// ring of `slots` slots: the memories are [`mem_depth`]`(slots)` deep
+/// ([`size_memories`]). Simulation and synthesis both use this text.
+pub fn node_verilog(kind: Kind, slots: usize) -> String {
     let v = match kind {
         Kind::Sensor | Kind::Actuator => block_verilog(crate::slave::Slave::new()),
         Kind::Master => block_verilog(crate::master::Master::default()),
         Kind::SpecialMaster => block_verilog(crate::special_master::SpecialMaster::default()),
     };
-    renamed(&v, module_name(kind))
+    renamed(&size_memories(&v, mem_depth(slots)), module_name(kind))
 }
 
 /// Capture entries per cycle buffer: slots rounded up to a power of two.
@@ -213,7 +215,7 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
         }
     }
     for k in need {
-        out.push_str(&node_verilog(k));
+        out.push_str(&node_verilog(k, slots));
     }
     out.push_str(&renamed(
         &block_verilog(crate::monitor::Monitor::new(false)),
@@ -248,7 +250,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     v = v.replace("CAPW-1", &(capw - 1).to_string());
     w(
         &mut v,
-        "    // Shared configuration.\n    reg [11:0] slots_m1 = 12'd0;\n    reg [15:0] cs_timeout = 16'hffff;\n    reg [15:0] period = 16'd0;\n\
+        "    // Shared configuration.\n    reg [11:0] slots_m1 = 12'd0;\n    reg [19:0] cs_timeout = 20'hfffff;\n    reg [19:0] period = 20'd0;\n\
          \x20   // Ticks since the start (for the fibres' H1 times).\n    reg [31:0] tick = 32'd0;\n    always @(posedge clk) tick <= tick + 32'd1;\n\
          \x20   // Monitors run at the nominal rate (a quarter of the tick rate).\n    reg [1:0] mcnt = 2'd0;\n    always @(posedge clk) mcnt <= mcnt + 2'd1;\n\
          \x20   reg men_l = 1'b0;\n    always @(negedge clk) men_l <= mcnt == 2'd3;\n    wire mclk = clk & men_l;",
@@ -570,8 +572,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         &mut v,
         &format!(
             "    always @(posedge clk) begin\n        if (i_cfg_we && i_cfg_field == 8'd{}) slots_m1 <= i_cfg_val[11:0];\n\
-             \x20       if (i_cfg_we && i_cfg_field == 8'd{}) cs_timeout <= i_cfg_val[15:0];\n\
-             \x20       if (i_cfg_we && i_cfg_field == 8'd{}) period <= i_cfg_val[15:0];\n    end\nendmodule",
+             \x20       if (i_cfg_we && i_cfg_field == 8'd{}) cs_timeout <= i_cfg_val[19:0];\n\
+             \x20       if (i_cfg_we && i_cfg_field == 8'd{}) period <= i_cfg_val[19:0];\n    end\nendmodule",
             cfg::SLOTS_M1,
             cfg::CS_TIMEOUT,
             cfg::PERIOD

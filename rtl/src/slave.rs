@@ -20,7 +20,7 @@
 //! | `i_address` | in | 12 | static (DIP switches) | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
 //! | `i_actuator` | in | 1 | static | 1 actuator, 0 sensor |
-//! | `i_cs_timeout` | in | 16 | static | clocks without the start of a packet other than a TST on INPUT before failsafe (3.5 cycle periods, protocol §12 rule 4) |
+//! | `i_cs_timeout` | in | 20 | static | clocks without the start of a packet other than a TST on INPUT before failsafe (3.5 cycle periods, protocol §12 rule 4) |
 //! | `i_sensor_data` | in | 16 | clock | sensor value |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (a high clock queues the alarm) |
 //! | `o_act_data` | out | 16 | clock | actuator output register |
@@ -76,7 +76,7 @@ pub struct Slave {
     /// Actuator (1) or sensor (0).
     pub i_actuator: Signal<In, Bit>,
     /// CS timeout in clocks.
-    pub i_cs_timeout: Signal<In, Bits<16>>,
+    pub i_cs_timeout: Signal<In, Bits<20>>,
     /// Sensor value.
     pub i_sensor_data: Signal<In, Bits<16>>,
     /// User interrupt 1 request.
@@ -145,7 +145,7 @@ pub struct Slave {
     last_cyc: DFF<Bits<3>>,
     ferr_owed: DFF<Bits<3>>,
     cyc_gap: Signal<Local, Bits<3>>,
-    quiet: DFF<Bits<16>>,
+    quiet: DFF<Bits<20>>,
     pend_fs: DFF<Bit>,
     pend_rc: DFF<Bit>,
     pend_i1: DFF<Bit>,
@@ -357,7 +357,7 @@ impl Logic for Slave {
         // counter restarts below at every H0 that is not a good TST's: a
         // frame whose header a bit error damaged still shows the ring is
         // alive, protocol §12 rule 4).
-        if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
+        if self.armed.q.val() & (self.quiet.q.val() != 0xfffff) {
             self.quiet.d.next = self.quiet.q.val() + 1;
         }
         // New requests after the clearing: a request in the clock its

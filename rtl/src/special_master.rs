@@ -61,8 +61,8 @@
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 //! | `i_address` | in | 12 | static | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
-//! | `i_period` | in | 16 | static | cycle period P in bit times (protocol §8) |
-//! | `i_cs_timeout` | in | 16 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods) |
+//! | `i_period` | in | 20 | static | cycle period P in bit times (protocol §8) |
+//! | `i_cs_timeout` | in | 20 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods) |
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received |
@@ -125,9 +125,9 @@ pub struct SpecialMaster {
     /// Slots − 1.
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// Cycle period in bit times.
-    pub i_period: Signal<In, Bits<16>>,
+    pub i_period: Signal<In, Bits<20>>,
     /// CS timeout in clocks.
-    pub i_cs_timeout: Signal<In, Bits<16>>,
+    pub i_cs_timeout: Signal<In, Bits<20>>,
     /// Wishbone cycle.
     pub i_wb_cyc: Signal<In, Bit>,
     /// Wishbone strobe.
@@ -190,7 +190,7 @@ pub struct SpecialMaster {
     rw: Signal<Local, Bit>,
     bss_pair: Signal<Local, Bits<2>>,
     relay_len: Constant<Bits<7>>,
-    unwrap_lead: Constant<Bits<16>>,
+    unwrap_lead: Constant<Bits<20>>,
     unwrap_at: Signal<Local, Bit>,
     rdl: DFF<Bits<76>>,
     rcd: DFF<Bits<7>>,
@@ -207,7 +207,7 @@ pub struct SpecialMaster {
     sent_alarm: RAM<Bit, 12>,
     aact: RAM<Bit, 12>,
     half: DFF<Bit>,
-    bcnt: DFF<Bits<16>>,
+    bcnt: DFF<Bits<20>>,
     cyc: DFF<Bits<12>>,
     cycles: DFF<Bits<16>>,
     toggle: DFF<Bit>,
@@ -227,7 +227,7 @@ pub struct SpecialMaster {
     last_num: DFF<Bits<12>>,
     cyc_gap: Signal<Local, Bits<12>>,
     ferr_sum: Signal<Local, Bits<17>>,
-    quiet: DFF<Bits<16>>,
+    quiet: DFF<Bits<20>>,
     sec_sent: DFF<Bit>,
     // Leaving failsafe (protocol §12).
     hop_ref: DFF<Bits<12>>,
@@ -699,7 +699,7 @@ impl Logic for SpecialMaster {
         self.cyc_gap.next = self.ret_num.val() - self.last_num.q.val() - 1;
         // The returning frame (protocol §5, §8, §12); every returned packet
         // but a TST restarts the CS timeout (a damaged header too).
-        if self.armed.q.val() & (self.quiet.q.val() != 0xffff) {
+        if self.armed.q.val() & (self.quiet.q.val() != 0xfffff) {
             self.quiet.d.next = self.quiet.q.val() + 1;
         }
         if self.rx_in.o_wvalid.val()

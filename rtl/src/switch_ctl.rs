@@ -40,7 +40,7 @@
 //! | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
 //! | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
 //! | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
-//! | `i_cs_timeout` | in | 16 | static | CS timeout, clocks |
+//! | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
 //! | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
 //! | `o_relink` | out | 1 | clock | … and INPUT and BSR move to other lines (into or out of WU) |
@@ -91,7 +91,7 @@ pub struct SwitchCtl {
     /// A packet is arriving on INPUT.
     pub i_in_pkt: Signal<In, Bit>,
     /// CS timeout, clocks.
-    pub i_cs_timeout: Signal<In, Bits<16>>,
+    pub i_cs_timeout: Signal<In, Bits<20>>,
     /// Mode.
     pub o_mode: Signal<Out, Bits<2>>,
     /// The mode changes at the next edge.
@@ -108,7 +108,7 @@ pub struct SwitchCtl {
     settle_start: Constant<Bits<7>>,
     mode: DFF<Bits<2>>,
     settle: DFF<Bits<7>>,
-    grace: DFF<Bits<16>>,
+    grace: DFF<Bits<20>>,
     ack_time: DFF<Bits<9>>,
     seen_ack: DFF<Bit>,
     pend_up: DFF<Bit>,

@@ -39,15 +39,21 @@
 //! o_po pair    {b1,b0} registered at clk ↑ ─▶ po = b0 (clk high), b1 (clk low)
 //! ```
 
+use merkur_model::config::MAX_PERIOD_BITS;
 use merkur_model::scenario::Kind;
 
 /// Clocks without the start of a packet other than a TST before a node
 /// enters failsafe: 3.5 cycle periods (3 per protocol §12 rule 4, plus
 /// margin for ±1000 ppm clocks and where in its period a frame passes), at
-/// 2 clocks per bit time, saturated to the 16-bit port.
+/// 2 clocks per bit time. The nodes' 20-bit port holds it for every legal
+/// period (`MAX_PERIOD_BITS`, protocol §8); [`check`] refuses others.
 pub fn cs_timeout_clocks(period_bits: u64) -> u64 {
-    (7 * period_bits).min(0xfffe)
+    7 * period_bits
 }
+
+// The 20-bit CS timeout counter saturates at 2²⁰ − 1: the longest legal
+// period must stay below it.
+const _: () = assert!(7 * (MAX_PERIOD_BITS as u64) < 0xfffff);
 
 /// The static configuration of one node, as the top ties it.
 #[derive(Debug, Clone, PartialEq)]
@@ -103,7 +109,7 @@ endmodule
 use crate::ring_top::{module_name as node_module, node_verilog};
 
 /// Refuses a configuration the ports cannot carry.
-fn check(st: &NodeStatic) -> Result<(), String> {
+pub fn check(st: &NodeStatic) -> Result<(), String> {
     if st.slots == 0 || st.slots > 4096 {
         return Err(format!("slots {} must be 1 … 4096", st.slots));
     }
@@ -113,9 +119,9 @@ fn check(st: &NodeStatic) -> Result<(), String> {
             st.address, st.slots
         ));
     }
-    if st.kind == Kind::SpecialMaster && !(1..=0xffff).contains(&st.period) {
+    if !(1..=MAX_PERIOD_BITS).contains(&st.period) {
         return Err(format!(
-            "period {} bit times does not fit the 16-bit period port",
+            "period {} bit times: the nodes' 20-bit period and CS timeout ports carry 1 … {MAX_PERIOD_BITS}",
             st.period
         ));
     }
@@ -141,7 +147,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             String::new()
         }
     ));
-    v.push_str(&node_verilog(st.kind));
+    v.push_str(&node_verilog(st.kind, st.slots));
     v.push_str(DDR_IO);
     let mut ports = vec![
         "clk",
@@ -210,7 +216,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
     let to = cs_timeout_clocks(st.period as u64);
     let common = format!(
         ".clock(clk), .i_pi(pi_s), .i_si(si_s), .o_po(po_pair), .o_so(so_pair),\n\
-         \x20       .i_address(12'd{a}), .i_slots_m1(12'd{s1}), .i_cs_timeout(16'd{to}),\n\
+         \x20       .i_address(12'd{a}), .i_slots_m1(12'd{s1}), .i_cs_timeout(20'd{to}),\n\
          \x20       .i_irq1(req[0]), .i_irq2(req[1]), .i_fs_req(req[2]),\n\
          \x20       .o_mode(o_mode), .o_failsafe(o_failsafe), .o_perr(perr), .o_ferr(ferr)"
     );
@@ -239,7 +245,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
         let extra = if sm {
             v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
             format!(
-                ",\n        .i_period(16'd{}), .o_serr(serr), .o_hop(hop), .o_cycles(cycles)",
+                ",\n        .i_period(20'd{}), .o_serr(serr), .o_hop(hop), .o_cycles(cycles)",
                 st.period
             )
         } else {

@@ -35,6 +35,96 @@ pub fn zero_memories(verilog: &str) -> String {
     out
 }
 
+/// The depth the masters' memories get for a ring of `slots` slots: the
+/// slot count rounded up to a power of two, at least 256 (one iCE40 block
+/// RAM holds 256 × 16 bits, so less saves nothing) and at most 4096 (the
+/// 12-bit slot number).
+pub fn mem_depth(slots: usize) -> usize {
+    slots.next_power_of_two().clamp(256, 4096)
+}
+
+/// Resizes every rust-hdl memory deeper than `depth` (a power of two) to
+/// `depth` entries: the low address bits index it, a read of an address at
+/// or above `depth` gives 0 and a write there is ignored — what the full
+/// memory does for addresses nothing writes. The masters and the special
+/// master address every memory by slot number, and a ring of S slots uses
+/// slots 0 … S−1 only, so with `depth ≥ S` the node behaves as with 4096
+/// entries (the host port reads 0 from, and cannot write, slots the ring
+/// does not have; docs/synthesis.md). Applied to the Verilog of
+/// [`zero_memories`] (the zeroing loop is resized with the memory).
+///
+/// Panics when `depth` is not a power of two or a memory of rust-hdl's
+/// shape is not found whole (the emitted text changed): a generator bug,
+/// caught by the tests.
+pub fn size_memories(verilog: &str, depth: usize) -> String {
+    assert!(depth.is_power_of_two(), "memory depth {depth}");
+    let a = depth.trailing_zeros();
+    let mut out = String::with_capacity(verilog.len());
+    // Address width of the memory being resized, until its write is done.
+    let mut aw: Option<u32> = None;
+    let mut width = 0usize;
+    let mut pending = 0;
+    for line in verilog.lines() {
+        let t = line.trim();
+        let mut l = line.to_string();
+        if let Some((w, d)) = t
+            .strip_prefix("reg[")
+            .and_then(|r| r.split_once(":0] mem["))
+            .and_then(|(w, tail)| Some((w, tail.strip_suffix(":0];")?)))
+        {
+            let d: usize = d.parse().expect("memory depth");
+            if d + 1 > depth {
+                assert!((d + 1).is_power_of_two(), "memory depth {}", d + 1);
+                aw = Some((d + 1).trailing_zeros());
+                width = w.parse::<usize>().expect("memory width") + 1;
+                pending = 4;
+                l = format!("    reg[{w}:0] mem[{}:0];", depth - 1);
+            }
+        } else if let Some(n) = aw {
+            let hi = format!("{}:{a}", n - 1);
+            let zero = format!("{}'d0", n - a);
+            if t.starts_with("initial for (mem_i = 0;") {
+                l = l.replace(
+                    &format!("mem_i <= {}", (1usize << n) - 1),
+                    &format!("mem_i <= {}", depth - 1),
+                );
+                pending -= 1;
+            } else if t == "read_data <= mem[read_address];" {
+                l = format!(
+                    "       read_data <= (read_address[{hi}] == {zero}) ? mem[read_address[{}:0]] : {{{width}{{1'b0}}}};",
+                    a - 1
+                );
+                pending -= 1;
+            } else if t == "if (write_enable) begin" {
+                l = format!("       if (write_enable && write_address[{hi}] == {zero}) begin");
+                pending -= 1;
+            } else if t == "mem[write_address] <= write_data;" {
+                l = format!("          mem[write_address[{}:0]] <= write_data;", a - 1);
+                pending -= 1;
+            } else if t.starts_with("endmodule") {
+                assert_eq!(pending, 0, "memory of unexpected shape before {t}");
+                aw = None;
+            }
+        }
+        out.push_str(&l);
+        out.push('\n');
+    }
+    assert!(aw.is_none(), "memory module without its end");
+    out
+}
+
+/// Every memory of a Verilog text: (width in bits, depth), in order.
+pub fn memories(verilog: &str) -> Vec<(usize, usize)> {
+    verilog
+        .lines()
+        .filter_map(|l| {
+            let (w, tail) = l.trim().strip_prefix("reg[")?.split_once(":0] mem[")?;
+            let d = tail.strip_suffix(":0];")?;
+            Some((w.parse::<usize>().ok()? + 1, d.parse::<usize>().ok()? + 1))
+        })
+        .collect()
+}
+
 /// Every block with its default parameters: (name = file name in `rtl/src`, Verilog).
 pub fn all_blocks() -> Vec<(&'static str, String)> {
     use crate::*;
@@ -87,3 +177,55 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
 
 /// The lint waiver file (`rtl/lint/waivers.vlt`), each waiver commented.
 pub const WAIVERS: &str = include_str!("../lint/waivers.vlt");
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn memories_are_resized_with_every_access_guarded() {
+        let full = block_verilog(crate::special_master::SpecialMaster::default());
+        let mems = memories(&full);
+        // The return store, the sent-alarm and alarm-ACT bits, and the
+        // database's data, two configuration copies and Alive state.
+        assert_eq!(mems.len(), 7, "{mems:?}");
+        assert!(mems.iter().all(|&(_, d)| d == 4096), "{mems:?}");
+        let sized = size_memories(&full, 256);
+        let after = memories(&sized);
+        assert_eq!(
+            after,
+            mems.iter().map(|&(w, _)| (w, 256)).collect::<Vec<_>>()
+        );
+        let count = |v: &str, pat: &str| v.matches(pat).count();
+        assert_eq!(count(&sized, "mem_i <= 255;"), 7);
+        assert_eq!(
+            count(
+                &sized,
+                "(read_address[11:8] == 4'd0) ? mem[read_address[7:0]]"
+            ),
+            7
+        );
+        assert_eq!(
+            count(
+                &sized,
+                "if (write_enable && write_address[11:8] == 4'd0) begin"
+            ),
+            7
+        );
+        assert_eq!(count(&sized, "mem[write_address[7:0]] <= write_data;"), 7);
+        assert_eq!(count(&sized, "mem[read_address]"), 0);
+        // Full depth: the text is left as it is.
+        assert_eq!(size_memories(&full, 4096), full);
+    }
+
+    #[test]
+    fn memory_depth_follows_the_slot_count() {
+        assert_eq!(mem_depth(1), 256);
+        assert_eq!(mem_depth(100), 256);
+        assert_eq!(mem_depth(256), 256);
+        assert_eq!(mem_depth(257), 512);
+        assert_eq!(mem_depth(2048), 2048);
+        assert_eq!(mem_depth(2049), 4096);
+        assert_eq!(mem_depth(4096), 4096);
+    }
+}

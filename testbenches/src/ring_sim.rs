@@ -382,8 +382,9 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let t1 = Instant::now();
     let mut rng = Rng::new(opts.seed ^ cfg.seed);
     let period = cfg.period as u64;
-    // Shared configuration: S−1, CS timeout 2.5 periods (2 per protocol
-    // §12 plus margin for the clock offsets), period.
+    // Shared configuration: S−1, CS timeout 3.5 periods (3 per protocol
+    // §12 plus margin for the clock offsets; synth_top::cs_timeout_clocks),
+    // period.
     r.cfg(0, field::SLOTS_M1, s as u64 - 1);
     r.cfg(
         0,

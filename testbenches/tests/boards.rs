@@ -6,6 +6,7 @@
 use merkur_model::scenario::Kind;
 use merkur_rtl::boards::{self, Board};
 use merkur_rtl::synth_top::{node_top, NodeStatic};
+use merkur_rtl::ulx3s::ulx3s_verilog;
 use merkur_rtl::xem6010::xem6010_verilog;
 use merkur_testbenches::repo_root;
 use std::collections::BTreeSet;
@@ -57,8 +58,9 @@ fn port_bits(verilog: &str, top: &str) -> BTreeSet<String> {
         let rest = rest.trim();
         let (width, name) = if let Some(r) = rest.strip_prefix('[') {
             let (range, n) = r.split_once(']').unwrap();
-            let hi: usize = range.split(':').next().unwrap().trim().parse().unwrap();
-            (Some(hi), n.trim())
+            let (hi, lo) = range.split_once(':').unwrap();
+            let bound = |x: &str| x.trim().parse::<usize>().unwrap();
+            (Some((bound(hi), bound(lo))), n.trim())
         } else {
             (None, rest)
         };
@@ -67,8 +69,8 @@ fn port_bits(verilog: &str, top: &str) -> BTreeSet<String> {
             None => {
                 out.insert(name.to_string());
             }
-            Some(hi) => {
-                for i in 0..=hi {
+            Some((hi, lo)) => {
+                for i in lo..=hi {
                     out.insert(format!("{name}[{i}]"));
                 }
             }
@@ -103,6 +105,11 @@ fn every_top_level_port_is_constrained() {
             &boards::ice40_hx8k_breakout(),
             &node_top(&st(kind)).unwrap(),
             "merkur_top",
+        );
+        check_covers(
+            &boards::ulx3s(),
+            &ulx3s_verilog(&st(kind)).unwrap(),
+            "merkur_ulx3s",
         );
     }
     for kind in [Kind::Master, Kind::SpecialMaster] {

@@ -6,6 +6,7 @@
 
 use merkur_model::scenario::Kind;
 use merkur_rtl::synth_top::{node_top, NodeStatic, DDR_IO};
+use merkur_rtl::ulx3s::{ulx3s_verilog, PLL_BLACKBOX};
 use merkur_rtl::verilog::WAIVERS;
 use merkur_rtl::xem6010::{
     xem6010_core_verilog, xem6010_verilog, OK_BLACKBOXES, XILINX_BLACKBOXES,
@@ -281,6 +282,14 @@ fn every_synthesis_top_is_lint_clean() {
         let v = node_top(&st(kind)).unwrap();
         lint(kind.name(), "merkur_top", &[("top.v", &v)]);
     }
+    for kind in [Kind::Sensor, Kind::Actuator] {
+        let v = ulx3s_verilog(&st(kind)).unwrap();
+        lint(
+            &format!("ulx3s-{}", kind.name()),
+            "merkur_ulx3s",
+            &[("top.v", &v), ("pll.v", PLL_BLACKBOX)],
+        );
+    }
     for kind in [Kind::Master, Kind::SpecialMaster] {
         let v = xem6010_verilog(&st(kind)).unwrap();
         lint(
@@ -303,10 +312,16 @@ fn bad_node_configurations_are_refused() {
     let mut s = st(Kind::Sensor);
     s.address = 9;
     assert!(node_top(&s).unwrap_err().contains("address 9"));
+    // The 20-bit period and CS timeout ports (protocol §8: P ≤ 149,796).
     let mut s = st(Kind::SpecialMaster);
-    s.period = 70000;
-    assert!(node_top(&s).unwrap_err().contains("period 70000"));
+    s.period = 149_796;
+    assert!(node_top(&s).is_ok());
+    s.period = 149_797;
+    assert!(node_top(&s).unwrap_err().contains("period 149797"));
     assert!(xem6010_verilog(&st(Kind::Sensor))
         .unwrap_err()
         .contains("not a sensor"));
+    assert!(ulx3s_verilog(&st(Kind::Master))
+        .unwrap_err()
+        .contains("not a master"));
 }

@@ -3,24 +3,37 @@
 //!
 //! Targets: `ice40-hx8k` (Yosys `synth_ice40` → nextpnr-ice40 `--hx8k
 //! --package ct256` → `icepack`: a bitstream, timing at the design clock),
-//! `xc2c256` (Yosys `synth_coolrunner2`: macrocells and product terms; no
+//! `ecp5-85` and `ecp5-45` (Yosys `synth_ecp5` → nextpnr-ecp5 → `ecppack`:
+//! a `.bit`; [`fpga`] has both FPGA flows), `xc2c256` (Yosys `synth_coolrunner2`: macrocells and product terms; no
 //! fitter exists in the open tools), `xc6s` (Yosys `synth_xilinx -family
 //! xc6s`: resource counts), `xem6010` (the board top of a master or the
 //! special master, its `.ucf` and an ISE script; Yosys checks and counts
 //! it; with the `xem6010` cargo feature and Opal Kelly's FrontPanel HDL and
 //! Xilinx ISE installed, ISE builds the bitstream).
 
+use fpga::{read_json, run_tool, sum_cells, yosys_cells};
 use merkur_model::config::Config;
 use merkur_model::scenario::Kind;
 use merkur_rtl::boards;
-use merkur_rtl::synth_top::{node_top, NodeStatic};
+use merkur_rtl::ring_top::node_verilog;
+use merkur_rtl::synth_top::{self, node_top, NodeStatic};
+use merkur_rtl::verilog;
 use merkur_rtl::xem6010;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+mod fpga;
+
 /// Synthesis targets.
-pub const TARGETS: [&str; 4] = ["ice40-hx8k", "xc2c256", "xc6s", "xem6010"];
+pub const TARGETS: [&str; 6] = [
+    "ice40-hx8k",
+    "ecp5-85",
+    "ecp5-45",
+    "xc2c256",
+    "xc6s",
+    "xem6010",
+];
 
 /// XC2C256 limits: macrocells, product terms (16 function blocks × 56),
 /// user I/O in its largest package (FT256).
@@ -43,14 +56,30 @@ pub struct NodeResult {
     pub luts: Option<u64>,
     /// Flip-flops.
     pub ffs: Option<u64>,
-    /// Block RAMs (SB_RAM40_4K on iCE40; RAMB16 + RAMB8 on Spartan-6).
+    /// Block RAMs (SB_RAM40_4K on iCE40, DP16KD on ECP5, RAMB16 + RAMB8 on
+    /// Spartan-6).
     pub brams: Option<u64>,
-    /// iCE40 logic cells after packing (nextpnr).
+    /// Block RAMs the device has (bitstream targets).
+    pub brams_available: Option<u64>,
+    /// Logic cells after packing (nextpnr: ICESTORM_LC on iCE40,
+    /// TRELLIS_COMB on ECP5).
     pub lcs: Option<u64>,
+    /// Logic cells the device has.
+    pub lcs_available: Option<u64>,
     /// I/O pins used.
     pub ios: Option<u64>,
-    /// Fmax of the core clock (nextpnr), MHz.
+    /// Placement seeds run (nextpnr `--seed`).
+    pub seeds: Vec<u64>,
+    /// The seed whose bitstream was kept (the best Fmax).
+    pub seed: Option<u64>,
+    /// Every clock's Fmax per seed (nextpnr's report).
+    pub clocks: Vec<fpga::ClockTiming>,
+    /// Fmax of the core clock (nextpnr), MHz: the best seed's.
     pub fmax_mhz: Option<f64>,
+    /// The core clock's lowest Fmax over the seeds, MHz.
+    pub fmax_min_mhz: Option<f64>,
+    /// The core clock's median Fmax over the seeds, MHz.
+    pub fmax_median_mhz: Option<f64>,
     /// The line rate that Fmax allows (core clock = 2 × line rate), Mbit/s.
     pub max_line_rate_mbps: Option<f64>,
     /// CoolRunner-II macrocells (MACROCELL_XOR cells).
@@ -76,6 +105,8 @@ pub struct Report {
     pub line_rate_mbps: f64,
     /// Design core clock, MHz.
     pub clock_mhz: f64,
+    /// Tool set of the FPGA flows (`yowasp` or `debian`).
+    pub flow: String,
     /// Tool versions.
     pub tools: Vec<String>,
     /// Per node.
@@ -88,7 +119,114 @@ pub struct Opts<'a> {
     pub nodes: &'a [usize],
     pub line_rate: Option<f64>,
     pub output: Option<&'a Path>,
+    /// First nextpnr seed.
     pub seed: u64,
+    /// How many seeds (seed, seed + 1, …).
+    pub seeds: u64,
+    /// `--flow`.
+    pub flow: &'a str,
+    /// `--speed` (ECP5).
+    pub speed: Option<u8>,
+    /// `--board`.
+    pub board: Option<&'a str>,
+}
+
+/// Boards a slave can be built for, per FPGA target (`--board`).
+const BOARDS: [(&str, &str); 3] = [
+    ("ice40-hx8k-breakout", "ice40-hx8k"),
+    ("ulx3s", "ecp5-85"),
+    ("ulx3s", "ecp5-45"),
+];
+
+/// The board of a run: `--board`, checked against the target, or the
+/// iCE40-HX8K breakout by default on that target. Slaves go on it; masters
+/// are placed freely (their parallel host port is wider than any of these
+/// boards' headers).
+fn board_of(target: &str, board: Option<&str>) -> Result<Option<boards::Board>, String> {
+    let Some(name) = board else {
+        return Ok((target == "ice40-hx8k").then(boards::ice40_hx8k_breakout));
+    };
+    let list = || {
+        BOARDS
+            .iter()
+            .map(|(b, t)| format!("{b} (--target {t})"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if !BOARDS.iter().any(|(b, _)| *b == name) {
+        return Err(format!(
+            "error: --board {name}: unknown board; boards: {}{}",
+            list(),
+            if name == "xem6010" {
+                " (the XEM6010 is its own target: --target xem6010)"
+            } else {
+                ""
+            }
+        ));
+    }
+    if !BOARDS.iter().any(|&(b, t)| b == name && t == target) {
+        return Err(format!(
+            "error: --board {name} does not carry --target {target}; boards: {}",
+            list()
+        ));
+    }
+    Ok(boards::by_name(name))
+}
+
+/// A device's block RAM, for the memory budget checked before any tool runs.
+#[derive(Clone, Debug)]
+pub struct BlockRam {
+    /// The device as its vendor names it.
+    device: &'static str,
+    /// The primitive nextpnr counts.
+    cell: &'static str,
+    /// How many the device has.
+    count: u64,
+    /// Bits per block (data bits of its widest configuration).
+    bits: u64,
+}
+
+/// Blocks a node's memories need at least when they are `depth` deep:
+/// each memory takes ⌈width · depth / bits⌉ blocks, at least one (a lower
+/// bound: a fitter never needs fewer, so a refusal is never wrong; Yosys
+/// 0.23 reaches it on the iCE40, docs/synthesis.md).
+fn blocks_needed(widths: &[usize], depth: usize, bits: u64) -> u64 {
+    widths
+        .iter()
+        .map(|&w| ((w * depth) as u64).div_ceil(bits).max(1))
+        .sum()
+}
+
+/// Refuses, before anything is written, a node whose memories cannot fit
+/// the target's block RAM, naming the slot count, the need, the device's
+/// limit and the largest slot count that fits this node kind.
+fn memory_budget(b: &BlockRam, k: usize, st: &NodeStatic) -> Result<(), String> {
+    let widths: Vec<usize> = verilog::memories(&node_verilog(st.kind, 4096))
+        .iter()
+        .map(|&(w, _)| w)
+        .collect();
+    let depth = verilog::mem_depth(st.slots);
+    let need = blocks_needed(&widths, depth, b.bits);
+    if need <= b.count {
+        return Ok(());
+    }
+    let fits = (8..=12)
+        .rev()
+        .map(|a| 1usize << a)
+        .find(|&d| blocks_needed(&widths, d, b.bits) <= b.count);
+    Err(format!(
+        "error: slots {}: node {k} ({}) needs at least {need} {} block RAMs for its memories \
+         ({depth} entries deep), the {} has {}; {}",
+        st.slots,
+        kind_label(st.kind),
+        b.cell,
+        b.device,
+        b.count,
+        match fits {
+            Some(d) => format!("at most {d} slots fit a {} on it", kind_label(st.kind)),
+            None => format!("no {} fits it", kind_label(st.kind)),
+        }
+    ))
 }
 
 fn kind_label(k: Kind) -> &'static str {
@@ -137,204 +275,9 @@ fn pick_nodes(cfg: &Config, given: &[usize], target: &str) -> Result<Vec<usize>,
     Ok(out)
 }
 
-fn run_tool(dir: &Path, prog: &str, args: &[&str], log: &str) -> Result<String, String> {
-    match run_tool_status(dir, prog, args, log)? {
-        (true, text) => Ok(text),
-        (false, text) => {
-            let tail: Vec<&str> = text.lines().rev().take(15).collect();
-            Err(format!(
-                "error: {prog} failed in {} (log {}):\n{}",
-                dir.display(),
-                log,
-                tail.into_iter().rev().collect::<Vec<_>>().join("\n")
-            ))
-        }
-    }
-}
-
-/// Runs a tool, writes its output to `log`; (exit success, output).
-fn run_tool_status(
-    dir: &Path,
-    prog: &str,
-    args: &[&str],
-    log: &str,
-) -> Result<(bool, String), String> {
-    let o = Command::new(prog)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .map_err(|e| format!("error: cannot run {prog}: {e} (./run test installs the tools)"))?;
-    let text = format!(
-        "{}{}",
-        String::from_utf8_lossy(&o.stdout),
-        String::from_utf8_lossy(&o.stderr)
-    );
-    std::fs::write(dir.join(log), &text)
-        .map_err(|e| format!("error: cannot write {}: {e}", dir.join(log).display()))?;
-    Ok((o.status.success(), text))
-}
-
-/// nextpnr's utilisation lines over 100 % ("ICESTORM_RAM:    54/   32").
-fn pnr_overfull(log: &str) -> Vec<String> {
-    log.lines()
-        .filter_map(|l| {
-            let (name, rest) = l.trim_start_matches("Info:").trim().split_once(':')?;
-            let (used, avail) = rest.split_once('/')?;
-            let used: u64 = used.trim().parse().ok()?;
-            let avail: u64 = avail.split_whitespace().next()?.parse().ok()?;
-            (used > avail).then(|| format!("{used} {name} of {avail}"))
-        })
-        .collect()
-}
-
-/// Cell counts from the last `stat` of a Yosys log: (cell type, count).
-fn yosys_cells(log: &str) -> Vec<(String, u64)> {
-    let start = log.rfind("Number of cells:").unwrap_or(log.len());
-    log[start..]
-        .lines()
-        .skip(1)
-        .map_while(|l| {
-            let mut it = l.split_whitespace();
-            let (a, b) = (it.next()?, it.next()?);
-            Some((a.to_string(), b.parse::<u64>().ok()?))
-        })
-        .collect()
-}
-
-fn sum_cells(cells: &[(String, u64)], pred: impl Fn(&str) -> bool) -> u64 {
-    cells.iter().filter(|(n, _)| pred(n)).map(|(_, c)| c).sum()
-}
-
-/// nextpnr's "ICESTORM_LC:  1593/ 7680" line.
-fn pnr_used(log: &str, what: &str) -> Option<u64> {
-    log.lines().find_map(|l| {
-        let rest = l.split_once(&format!("{what}:"))?.1;
-        rest.split('/').next()?.trim().parse().ok()
-    })
-}
-
-/// Fmax of the core clock and whether it passed, from the last report.
-fn pnr_fmax(log: &str) -> Option<(f64, bool)> {
-    log.lines()
-        .rev()
-        .filter(|l| l.contains("Max frequency for clock 'clk$"))
-        .find_map(|l| {
-            let rest = l.split_once("': ")?.1;
-            let mhz = rest.split_whitespace().next()?.parse().ok()?;
-            Some((mhz, rest.contains("PASS")))
-        })
-}
-
-/// The net names of the core clock's critical path.
-fn pnr_critical_path(log: &str) -> Vec<String> {
-    let mut out = vec![];
-    let mut on = false;
-    for l in log.lines() {
-        if l.contains("Critical path report for clock 'clk$") {
-            on = true;
-            out.clear();
-            out.push(l.trim_start_matches("Info: ").trim().to_string());
-            continue;
-        }
-        if on {
-            let t = l.trim_start_matches("Info:").trim();
-            if t.is_empty() || t.starts_with("Critical path report") || t.starts_with("Max") {
-                on = false;
-            } else if t.contains(" Net ") {
-                out.push(t.to_string());
-            }
-        }
-    }
-    out
-}
-
 fn write(dir: &Path, name: &str, text: &str) -> Result<(), String> {
     std::fs::write(dir.join(name), text)
         .map_err(|e| format!("error: cannot write {}: {e}", dir.join(name).display()))
-}
-
-fn ice40(
-    dir: &Path,
-    st: &NodeStatic,
-    clock: f64,
-    seed: u64,
-    r: &mut NodeResult,
-) -> Result<(), String> {
-    write(dir, "top.v", &node_top(st)?)?;
-    r.artifacts.push("top.v".into());
-    let slave = matches!(st.kind, Kind::Sensor | Kind::Actuator);
-    let ylog = run_tool(
-        dir,
-        "yosys",
-        &[
-            "-p",
-            "read_verilog top.v; synth_ice40 -top merkur_top -json top.json; stat",
-        ],
-        "yosys.log",
-    )?;
-    let cells = yosys_cells(&ylog);
-    r.luts = Some(sum_cells(&cells, |n| n == "SB_LUT4"));
-    r.ffs = Some(sum_cells(&cells, |n| n.starts_with("SB_DFF")));
-    r.brams = Some(sum_cells(&cells, |n| n.starts_with("SB_RAM40")));
-    let freq = format!("{clock}");
-    let seed = seed.to_string();
-    let mut args = vec![
-        "--hx8k",
-        "--package",
-        "ct256",
-        "--json",
-        "top.json",
-        "--asc",
-        "top.asc",
-        "--freq",
-        &freq,
-        "--seed",
-        &seed,
-        "--timing-allow-fail",
-    ];
-    if slave {
-        let b = boards::ice40_hx8k_breakout();
-        write(dir, "top.pcf", &boards::constraints_file(&b))?;
-        r.artifacts.push("top.pcf".into());
-        args.extend(["--pcf", "top.pcf"]);
-    } else {
-        r.reason = "I/O placed by nextpnr (no board pinout: the parallel host port is wider than the breakout's headers)".into();
-    }
-    let (placed, plog) = run_tool_status(dir, "nextpnr-ice40", &args, "nextpnr.log")?;
-    r.lcs = pnr_used(&plog, "ICESTORM_LC");
-    r.ios = pnr_used(&plog, "SB_IO");
-    r.artifacts
-        .extend(["top.json".into(), "yosys.log".into(), "nextpnr.log".into()]);
-    if !placed {
-        let over = pnr_overfull(&plog);
-        if over.is_empty() {
-            return Err(format!(
-                "error: nextpnr-ice40 failed in {} (log nextpnr.log)",
-                dir.display()
-            ));
-        }
-        r.status = "does not fit".into();
-        r.reason = format!("needs {} (iCE40-HX8K)", over.join(", "));
-        return Ok(());
-    }
-    let (fmax, pass) = pnr_fmax(&plog).ok_or_else(|| {
-        format!(
-            "error: no Fmax for clk in {}",
-            dir.join("nextpnr.log").display()
-        )
-    })?;
-    r.fmax_mhz = Some(fmax);
-    r.max_line_rate_mbps = Some(fmax / 2.0);
-    run_tool(dir, "icepack", &["top.asc", "top.bin"], "icepack.log")?;
-    r.artifacts.extend(["top.asc".into(), "top.bin".into()]);
-    if pass {
-        r.status = "ok".into();
-    } else {
-        r.status = "timing failed".into();
-        r.reason = format!("Fmax {fmax:.2} MHz < {clock} MHz design clock");
-        r.critical_path = pnr_critical_path(&plog);
-    }
-    Ok(())
 }
 
 /// `synth_coolrunner2` in its steps, with memories (ROM tables included)
@@ -347,7 +290,8 @@ const XC2_SCRIPT: &str =
     techmap -map +/coolrunner2/cells_counter_map.v; clean; opt -fast -full; \
     techmap -map +/techmap.v -map +/coolrunner2/cells_latch.v; opt -fast; \
     dfflibmap -prepare -liberty +/coolrunner2/xc2_dff.lib; \
-    synth_coolrunner2 -top merkur_top -run map_tff:; write_edif top.edif; stat";
+    synth_coolrunner2 -top merkur_top -run map_tff:; write_edif top.edif; \
+    tee -q -o stat.json stat -json";
 
 fn xc2c256(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String> {
     if !matches!(st.kind, Kind::Sensor | Kind::Actuator) {
@@ -356,8 +300,8 @@ fn xc2c256(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String
         return Ok(());
     }
     write(dir, "top.v", &node_top(st)?)?;
-    let ylog = run_tool(dir, "yosys", &["-p", XC2_SCRIPT], "yosys.log")?;
-    let cells = yosys_cells(&ylog);
+    run_tool(dir, "yosys", &["-p", XC2_SCRIPT], "yosys.log")?;
+    let cells = yosys_cells(&read_json(dir, "stat.json")?);
     let mc = sum_cells(&cells, |n| n == "MACROCELL_XOR");
     let pt = sum_cells(&cells, |n| n == "ANDTERM");
     let io = sum_cells(&cells, |n| {
@@ -370,7 +314,7 @@ fn xc2c256(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String
     }));
     r.ios = Some(io);
     r.artifacts
-        .extend(["top.v".into(), "top.edif".into(), "yosys.log".into()]);
+        .extend(["top.v", "top.edif", "stat.json", "yosys.log"].map(String::from));
     let mut why = vec![];
     if mc > XC2C256_MC {
         why.push(format!("{mc} macrocells > {XC2C256_MC}"));
@@ -391,30 +335,32 @@ fn xc2c256(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String
     Ok(())
 }
 
-fn xilinx_counts(r: &mut NodeResult, log: &str) {
-    let cells = yosys_cells(log);
+fn xilinx_counts(r: &mut NodeResult, dir: &Path) -> Result<(), String> {
+    let cells = yosys_cells(&read_json(dir, "stat.json")?);
     r.luts = Some(sum_cells(&cells, |n| n.starts_with("LUT")));
     r.ffs = Some(sum_cells(&cells, |n| n.starts_with("FD")));
     r.brams = Some(sum_cells(&cells, |n| n.starts_with("RAMB")));
     r.ios = Some(sum_cells(&cells, |n| {
         n.starts_with("IBUF") || n.starts_with("OBUF") || n.starts_with("IOBUF")
     }));
+    Ok(())
 }
 
 fn xc6s(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String> {
     write(dir, "top.v", &node_top(st)?)?;
-    let ylog = run_tool(
+    run_tool(
         dir,
         "yosys",
         &[
             "-p",
-            "read_verilog top.v; synth_xilinx -flatten -family xc6s -top merkur_top; write_edif top.edif; stat",
+            "read_verilog top.v; synth_xilinx -flatten -family xc6s -top merkur_top; write_edif top.edif; \
+             tee -q -o stat.json stat -json",
         ],
         "yosys.log",
     )?;
-    xilinx_counts(r, &ylog);
+    xilinx_counts(r, dir)?;
     r.artifacts
-        .extend(["top.v".into(), "top.edif".into(), "yosys.log".into()]);
+        .extend(["top.v", "top.edif", "stat.json", "yosys.log"].map(String::from));
     r.status = "ok".into();
     r.reason = "resource counts only (a Spartan-6 bitstream and timing need Xilinx ISE)".into();
     Ok(())
@@ -469,16 +415,17 @@ fn xem(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String> {
             FP_ASSETS.join(",")
         ),
     )?;
-    let ylog = run_tool(
+    run_tool(
         dir,
         "yosys",
         &[
             "-p",
-            "read_verilog top.v; read_verilog -lib ok_blackbox.v; synth_xilinx -flatten -family xc6s -top merkur_xem6010; stat",
+            "read_verilog top.v; read_verilog -lib ok_blackbox.v; \
+             synth_xilinx -flatten -family xc6s -top merkur_xem6010; tee -q -o stat.json stat -json",
         ],
         "yosys.log",
     )?;
-    xilinx_counts(r, &ylog);
+    xilinx_counts(r, dir)?;
     r.artifacts.extend(
         [
             "top.v",
@@ -486,6 +433,7 @@ fn xem(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String> {
             "xem6010.ucf",
             "merkur_xem6010.tcl",
             "README.md",
+            "stat.json",
             "yosys.log",
         ]
         .map(String::from),
@@ -533,6 +481,53 @@ fn ise(dir: &Path) -> Result<String, String> {
     }
 }
 
+/// Whether a program is on PATH.
+fn on_path(prog: &str) -> bool {
+    std::env::var_os("PATH")
+        .is_some_and(|p| std::env::split_paths(&p).any(|d| d.join(prog).is_file()))
+}
+
+/// The tools a target runs, each checked to be on PATH before anything is
+/// written; their versions for the report.
+fn tools_of(target: &str, f: Option<&fpga::Fpga>, flow: fpga::Flow) -> Result<Vec<String>, String> {
+    let progs: Vec<(String, &str)> = match f {
+        Some(f) => {
+            let (pnr, pack) = match f.family {
+                fpga::Family::Ice40 => ("nextpnr-ice40", "icepack"),
+                fpga::Family::Ecp5 => ("nextpnr-ecp5", "ecppack"),
+            };
+            vec![
+                (flow.tool("yosys"), "-V"),
+                (flow.tool(pnr), "--version"),
+                (flow.tool(pack), ""),
+            ]
+        }
+        None => vec![("yosys".to_string(), "-V")],
+    };
+    let missing: Vec<&str> = progs
+        .iter()
+        .filter(|(p, _)| !on_path(p))
+        .map(|(p, _)| p.as_str())
+        .collect();
+    if !missing.is_empty() {
+        let how = if flow == fpga::Flow::Yowasp && f.is_some() {
+            "scripts/install-tools.sh --synth installs the pinned YoWASP tools into .tools/venv; \
+             put .tools/venv/bin on PATH (./run does)"
+        } else {
+            "scripts/install-tools.sh installs the pinned Debian tools"
+        };
+        return Err(format!(
+            "error: --target {target}: {} not found on PATH ({how})",
+            missing.join(", ")
+        ));
+    }
+    Ok(progs
+        .iter()
+        .filter(|(_, arg)| !arg.is_empty())
+        .map(|(p, arg)| tool_version(p, arg))
+        .collect())
+}
+
 fn tool_version(prog: &str, arg: &str) -> String {
     Command::new(prog)
         .arg(arg)
@@ -571,7 +566,54 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         }
     };
     let clock = 2.0 * rate;
+    let flow = fpga::Flow::parse(o.flow)?;
+    let fpga = fpga::fpga(o.target, o.speed);
+    if let Some(sp) = o.speed {
+        if !o.target.starts_with("ecp5") {
+            return Err(format!(
+                "error: --speed {sp}: speed grades are for the ECP5 targets (ecp5-85, ecp5-45)"
+            ));
+        }
+        if !fpga::ECP5_SPEEDS.contains(&sp) {
+            return Err(format!(
+                "error: --speed {sp}: the ECP5 speed grades are 6, 7 and 8"
+            ));
+        }
+    }
+    if !(1..=16).contains(&o.seeds) {
+        return Err(format!(
+            "error: --seeds {}: must be 1 … 16 (placement seeds {} on)",
+            o.seeds, o.seed
+        ));
+    }
+    if flow == fpga::Flow::Debian
+        && fpga
+            .as_ref()
+            .is_some_and(|f| f.family != fpga::Family::Ice40)
+    {
+        return Err(format!(
+            "error: --flow debian --target {}: Debian's tools have no nextpnr-ecp5; use --flow yowasp",
+            o.target
+        ));
+    }
+    let board = board_of(o.target, o.board)?;
+    let fpga = match (&board, o.speed) {
+        // The ULX3S carries speed grade 6 parts.
+        (Some(b), None) if b.name == "ulx3s" => fpga::fpga(o.target, Some(6)),
+        _ => fpga,
+    };
     let nodes = pick_nodes(&cfg, o.nodes, o.target)?;
+    if let Some(b) = &board {
+        let slave = |k: usize| matches!(cfg.nodes[k].kind, Kind::Sensor | Kind::Actuator);
+        if let Some(&k) = o.nodes.iter().find(|&&k| k < cfg.nodes.len() && !slave(k)) {
+            return Err(format!(
+                "error: --node {k} is a {}; --board {} carries a slave (a master's parallel host port \
+                 needs more pins than the board has)",
+                cfg.nodes[k].kind.name(),
+                b.name
+            ));
+        }
+    }
     if nodes.is_empty() {
         return Err(format!(
             "error: {}: no node to build for --target {}",
@@ -579,24 +621,32 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
             o.target
         ));
     }
+    // Everything that can be refused is refused before the output exists.
+    let statics: Vec<NodeStatic> = nodes
+        .iter()
+        .map(|&k| NodeStatic {
+            kind: cfg.nodes[k].kind,
+            address: cfg.nodes[k].address,
+            slots: cfg.slots,
+            period: cfg.period,
+        })
+        .collect();
+    for (&k, st) in nodes.iter().zip(&statics) {
+        synth_top::check(st).map_err(|e| format!("error: node {k}: {e}"))?;
+        if let Some(f) = &fpga {
+            memory_budget(&f.bram, k, st)?;
+        }
+    }
+    let tools = tools_of(o.target, fpga.as_ref(), flow)?;
     let out = o.output.map(PathBuf::from).unwrap_or_else(|| {
         PathBuf::from("merkur-synth").join(format!("{}-{}", cfg.name, o.target))
     });
     std::fs::create_dir_all(&out)
         .map_err(|e| format!("error: --output {}: cannot create: {e}", out.display()))?;
-    let tools = vec![
-        tool_version("yosys", "-V"),
-        tool_version("nextpnr-ice40", "--version"),
-    ];
+    let seeds: Vec<u64> = (0..o.seeds).map(|i| o.seed + i).collect();
     let mut results = vec![];
-    for &k in &nodes {
+    for (&k, st) in nodes.iter().zip(&statics) {
         let nd = &cfg.nodes[k];
-        let st = NodeStatic {
-            kind: nd.kind,
-            address: nd.address,
-            slots: cfg.slots,
-            period: cfg.period,
-        };
         let label = format!("node{k}-{}", kind_label(nd.kind));
         // Built in a scratch folder and moved into place when complete.
         let tmp = out.join(format!(".{label}.{}.tmp", std::process::id()));
@@ -610,10 +660,15 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         };
         eprintln!("synth {}: node {k} ({}) …", o.target, r.kind);
         let res = match o.target {
-            "ice40-hx8k" => ice40(&tmp, &st, clock, o.seed, &mut r),
-            "xc2c256" => xc2c256(&tmp, &st, &mut r),
-            "xc6s" => xc6s(&tmp, &st, &mut r),
-            _ => xem(&tmp, &st, &mut r),
+            _ if fpga.is_some() => {
+                let f = fpga.as_ref().expect("checked");
+                let slave = matches!(st.kind, Kind::Sensor | Kind::Actuator);
+                let b = board.as_ref().filter(|_| slave);
+                fpga::build(&tmp, st, f, b, flow, clock, &seeds, &mut r)
+            }
+            "xc2c256" => xc2c256(&tmp, st, &mut r),
+            "xc6s" => xc6s(&tmp, st, &mut r),
+            _ => xem(&tmp, st, &mut r),
         };
         if let Err(e) = res {
             let keep = out.join(format!("{label}.failed"));
@@ -638,6 +693,7 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         target: o.target.to_string(),
         line_rate_mbps: rate,
         clock_mhz: clock,
+        flow: o.flow.to_string(),
         tools,
         nodes: results,
     };
@@ -651,7 +707,7 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
     );
     // A bitstream target fails when a node gave no usable bitstream; the
     // mapping-only targets report a device overflow as a result.
-    let bitstream = o.target == "ice40-hx8k";
+    let bitstream = fpga.is_some();
     Ok(report
         .nodes
         .iter()
@@ -691,26 +747,52 @@ pub fn markdown(r: &Report) -> String {
         r.clock_mhz,
         r.tools.join("; ")
     );
-    s.push_str("| node | kind | status | LUTs | FFs | BRAM | LCs | I/O | Fmax MHz | max line rate Mbit/s | macrocells | product terms | note |\n");
-    s.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    s.push_str(&format!("Flow: {}.\n\n", r.flow));
+    s.push_str("| node | kind | status | LUTs | FFs | BRAM | LCs | I/O | Fmax MHz (best) | min / median over seeds | max line rate Mbit/s | macrocells | product terms | note |\n");
+    s.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    let of = |u: &Option<u64>, a: &Option<u64>| match (u, a) {
+        (Some(u), Some(a)) => format!("{u} / {a}"),
+        _ => opt(u),
+    };
+    let mhz = |f: Option<f64>| f.map_or("—".into(), |f| format!("{f:.2}"));
     for n in &r.nodes {
+        let spread = match (n.fmax_min_mhz, n.fmax_median_mhz) {
+            (Some(lo), Some(md)) => format!("{lo:.2} / {md:.2} ({} seeds)", n.seeds.len()),
+            _ => "—".into(),
+        };
         s.push_str(&format!(
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             n.node,
             n.kind,
             n.status,
             opt(&n.luts),
             opt(&n.ffs),
-            opt(&n.brams),
-            opt(&n.lcs),
+            of(&n.brams, &n.brams_available),
+            of(&n.lcs, &n.lcs_available),
             opt(&n.ios),
-            n.fmax_mhz.map_or("—".into(), |f| format!("{f:.2}")),
+            mhz(n.fmax_mhz),
+            spread,
             n.max_line_rate_mbps
                 .map_or("—".into(), |f| format!("{f:.1}")),
             opt(&n.macrocells),
             opt(&n.pterms),
             n.reason
         ));
+    }
+    for n in r.nodes.iter().filter(|n| !n.clocks.is_empty()) {
+        s.push_str(&format!(
+            "\nClocks of node {} (nextpnr, seeds {:?}):\n\n",
+            n.node, n.seeds
+        ));
+        for c in &n.clocks {
+            let v: Vec<String> = c.fmax_mhz.iter().map(|f| format!("{f:.2}")).collect();
+            s.push_str(&format!(
+                "- `{}`: constraint {:.1} MHz, Fmax {} MHz\n",
+                c.name,
+                c.constraint_mhz,
+                v.join(", ")
+            ));
+        }
     }
     for n in r.nodes.iter().filter(|n| !n.critical_path.is_empty()) {
         s.push_str(&format!(

@@ -1,0 +1,534 @@
+//! The FPGA bitstream flows of `merkur synth`: Yosys → nextpnr → the
+//! bitstream packer for the iCE40 (`ice40-hx8k`) and the ECP5 (`ecp5-85`,
+//! `ecp5-45`), over one or more placement seeds, with the results read
+//! from the tools' machine-readable output (Yosys `stat -json`, nextpnr
+//! `--report`), never from their logs.
+//!
+//! Two tool sets (`--flow`): `yowasp` (the default: Yosys and nextpnr from
+//! PyPI, scripts/requirements-synth.txt, in .tools/venv) and `debian`
+//! (Yosys 0.23 and nextpnr-ice40 0.4 of scripts/tools.lock; iCE40 only).
+//! docs/synthesis.md compares them on the same nodes.
+
+use super::{write, BlockRam, NodeResult};
+use merkur_rtl::synth_top::{node_top, NodeStatic};
+use merkur_rtl::{boards, ulx3s};
+use serde::Serialize;
+use std::path::Path;
+use std::process::Command;
+
+/// Which tools run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flow {
+    /// YoWASP's Yosys and nextpnr (PyPI, WebAssembly).
+    Yowasp,
+    /// Debian bookworm's Yosys and nextpnr-ice40.
+    Debian,
+}
+
+impl Flow {
+    /// From `--flow`.
+    pub fn parse(s: &str) -> Result<Flow, String> {
+        match s {
+            "yowasp" => Ok(Flow::Yowasp),
+            "debian" => Ok(Flow::Debian),
+            _ => Err(format!(
+                "error: --flow {s}: unknown tool set; flows: yowasp (the pinned PyPI tools in \
+                 .tools/venv), debian (Yosys 0.23 and nextpnr-ice40 0.4; iCE40 only)"
+            )),
+        }
+    }
+
+    /// The command of a tool (`yosys`, `nextpnr-ice40`, `icepack`, …).
+    pub fn tool(self, name: &str) -> String {
+        match self {
+            Flow::Yowasp => format!("yowasp-{name}"),
+            Flow::Debian => name.to_string(),
+        }
+    }
+}
+
+/// FPGA families.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// Lattice iCE40.
+    Ice40,
+    /// Lattice ECP5.
+    Ecp5,
+}
+
+/// One FPGA target.
+#[derive(Clone, Debug)]
+pub struct Fpga {
+    /// Family.
+    pub family: Family,
+    /// nextpnr's device option (`--hx8k`, `--85k`).
+    pub device_arg: &'static str,
+    /// Package.
+    pub package: &'static str,
+    /// Speed grade (ECP5: 6, 7 or 8).
+    pub speed: Option<u8>,
+    /// Block RAM.
+    pub bram: BlockRam,
+}
+
+/// ECP5 speed grades nextpnr-ecp5 knows.
+pub const ECP5_SPEEDS: [u8; 3] = [6, 7, 8];
+
+/// The FPGA of a target name, `None` for targets without a bitstream flow.
+pub fn fpga(target: &str, speed: Option<u8>) -> Option<Fpga> {
+    let ecp5 = |device_arg, device, count| Fpga {
+        family: Family::Ecp5,
+        device_arg,
+        package: "CABGA381",
+        speed: Some(speed.unwrap_or(8)),
+        bram: BlockRam {
+            device,
+            cell: "DP16KD",
+            count,
+            // 18 kbit in the ×9/×18 configurations.
+            bits: 18432,
+        },
+    };
+    match target {
+        "ice40-hx8k" => Some(Fpga {
+            family: Family::Ice40,
+            device_arg: "--hx8k",
+            package: "ct256",
+            speed: None,
+            bram: BlockRam {
+                device: "iCE40-HX8K",
+                cell: "SB_RAM40_4K",
+                count: 32,
+                bits: 4096,
+            },
+        }),
+        "ecp5-85" => Some(ecp5("--85k", "LFE5U-85F", 208)),
+        "ecp5-45" => Some(ecp5("--45k", "LFE5U-45F", 108)),
+        _ => None,
+    }
+}
+
+/// One clock's timing over the seeds.
+#[derive(Serialize, Debug, Clone, Default)]
+pub struct ClockTiming {
+    /// The clock net as nextpnr names it.
+    pub name: String,
+    /// The constraint, MHz.
+    pub constraint_mhz: f64,
+    /// Fmax per seed (in the order of `NodeResult::seeds`), MHz.
+    pub fmax_mhz: Vec<f64>,
+}
+
+/// The core clock among nextpnr's clock names: the net named after the
+/// node top's `clk` port (`clk$SB_IO_IN_$glb_clk`,
+/// `$glbnet$clk$TRELLIS_IO_IN`) or, inside a board top that makes it with
+/// a PLL, after the port it drives (`$glbnet$node.cap_pi.clk`).
+fn is_core_clock(name: &str) -> bool {
+    // Critical paths name their ends with the edge: "posedge clk$…".
+    let n = name
+        .trim_start_matches("posedge ")
+        .trim_start_matches("negedge ")
+        .trim_start_matches("$glbnet$");
+    n == "clk" || n.starts_with("clk$") || n.ends_with(".clk")
+}
+
+/// Runs a tool in `dir` (YoWASP tools see only that folder), its output in
+/// `log`; (exit success, output).
+pub fn run_tool_status(
+    dir: &Path,
+    prog: &str,
+    args: &[&str],
+    log: &str,
+) -> Result<(bool, String), String> {
+    let o = Command::new(prog)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .map_err(|e| {
+            format!(
+                "error: cannot run {prog}: {e} (scripts/ensure-tools.sh installs the tools; \
+                 the YoWASP ones go to .tools/venv/bin, which ./run puts on PATH)"
+            )
+        })?;
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    write(dir, log, &text)?;
+    Ok((o.status.success(), text))
+}
+
+/// As [`run_tool_status`], an error with the log's tail when it fails.
+pub fn run_tool(dir: &Path, prog: &str, args: &[&str], log: &str) -> Result<String, String> {
+    match run_tool_status(dir, prog, args, log)? {
+        (true, text) => Ok(text),
+        (false, text) => {
+            let tail: Vec<&str> = text.lines().rev().take(15).collect();
+            Err(format!(
+                "error: {prog} failed in {} (log {}):\n{}",
+                dir.display(),
+                log,
+                tail.into_iter().rev().collect::<Vec<_>>().join("\n")
+            ))
+        }
+    }
+}
+
+pub fn read_json(dir: &Path, name: &str) -> Result<serde_json::Value, String> {
+    let p = dir.join(name);
+    let text = std::fs::read_to_string(&p)
+        .map_err(|e| format!("error: cannot read {}: {e}", p.display()))?;
+    serde_json::from_str(&text).map_err(|e| format!("error: {}: {e}", p.display()))
+}
+
+/// Cell counts of the top module from Yosys' `stat -json`.
+pub fn yosys_cells(stat: &serde_json::Value) -> Vec<(String, u64)> {
+    let m = stat["modules"]
+        .as_object()
+        .and_then(|m| {
+            m.iter()
+                .find(|(k, _)| k.trim_start_matches('\\') == "merkur_top")
+        })
+        .map(|(_, v)| v.clone())
+        .unwrap_or_else(|| stat["design"].clone());
+    m["num_cells_by_type"]
+        .as_object()
+        .map(|o| {
+            o.iter()
+                .filter_map(|(k, v)| Some((k.clone(), v.as_u64()?)))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// Sum of the cells whose type matches.
+pub fn sum_cells(cells: &[(String, u64)], pred: impl Fn(&str) -> bool) -> u64 {
+    cells.iter().filter(|(n, _)| pred(n)).map(|(_, c)| c).sum()
+}
+
+/// nextpnr's utilisation lines over 100 % in its log ("ICESTORM_RAM: 54/
+/// 32"): nextpnr writes no report when it cannot place, so this is the one
+/// place the log is read.
+fn pnr_overfull(log: &str) -> Vec<String> {
+    log.lines()
+        .filter_map(|l| {
+            let (name, rest) = l.trim_start_matches("Info:").trim().split_once(':')?;
+            let (used, avail) = rest.split_once('/')?;
+            let used: u64 = used.trim().parse().ok()?;
+            let avail: u64 = avail.split_whitespace().next()?.parse().ok()?;
+            (used > avail).then(|| format!("{used} {name} of {avail}"))
+        })
+        .collect()
+}
+
+/// The core clock's critical path from a nextpnr report (with
+/// `--detailed-timing-report`): one line per step, delay and net.
+fn critical_path(report: &serde_json::Value) -> Vec<String> {
+    let Some(paths) = report["critical_paths"].as_array() else {
+        return vec![];
+    };
+    let Some(p) = paths.iter().find(|p| {
+        is_core_clock(p["from"].as_str().unwrap_or(""))
+            && is_core_clock(p["to"].as_str().unwrap_or(""))
+    }) else {
+        return vec![];
+    };
+    p["path"]
+        .as_array()
+        .map(|steps| {
+            steps
+                .iter()
+                .map(|s| {
+                    let cell = |e: &str| s[e]["cell"].as_str().unwrap_or("").to_string();
+                    format!(
+                        "{:6.2} ns {:9} {} → {}{}",
+                        s["delay"].as_f64().unwrap_or(0.0),
+                        s["type"].as_str().unwrap_or(""),
+                        cell("from"),
+                        cell("to"),
+                        s["net"]
+                            .as_str()
+                            .map(|n| format!(" (net {n})"))
+                            .unwrap_or_default()
+                    )
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// Yosys' script for a family: reads `files`, synthesizes `top`.
+fn yosys_script(family: Family, files: &[&str], top: &str) -> String {
+    // The defaults of each Yosys: 0.70 maps with ABC9 by default, 0.23
+    // with ABC. (`-dff`, ABC9's sequential mode, aborts in ABC's `&verify`
+    // on the slave with Yosys 0.70.)
+    let synth = match family {
+        Family::Ice40 => "synth_ice40",
+        Family::Ecp5 => "synth_ecp5",
+    };
+    format!(
+        "read_verilog {}; {synth} -top {top} -json top.json; tee -q -o stat.json stat -json",
+        files.join(" ")
+    )
+}
+
+/// Writes the node's Verilog (the board's top when the node goes on a
+/// board) and its constraints; (files Yosys reads, top module, nextpnr's
+/// constraint arguments).
+fn sources(
+    dir: &Path,
+    st: &NodeStatic,
+    board: Option<&boards::Board>,
+    flow: Flow,
+    clock: f64,
+    r: &mut NodeResult,
+) -> Result<(Vec<&'static str>, &'static str, Vec<String>), String> {
+    let Some(b) = board else {
+        write(dir, "top.v", &node_top(st)?)?;
+        r.artifacts.push("top.v".into());
+        r.reason = "I/O placed by nextpnr (no board pinout for this node and device)".into();
+        return Ok((vec!["top.v"], "merkur_top", vec![]));
+    };
+    write(dir, b.file, &boards::constraints_file(b))?;
+    r.artifacts.extend(["top.v".into(), b.file.to_string()]);
+    if b.name == "ulx3s" {
+        write(dir, "top.v", &ulx3s::ulx3s_verilog(st)?)?;
+        // Project Trellis' PLL calculator: clk and clk90 from 25 MHz.
+        let f = format!("{clock}");
+        run_tool(
+            dir,
+            &flow.tool("ecppll"),
+            &[
+                "-n",
+                "merkur_pll",
+                "--clkin_name",
+                "clk_25mhz",
+                "-i",
+                "25",
+                "--clkout0_name",
+                "clk",
+                "-o",
+                &f,
+                "--clkout1_name",
+                "clk90",
+                "--clkout1",
+                &f,
+                "--phase1",
+                "90",
+                "-f",
+                "pll.v",
+            ],
+            "ecppll.log",
+        )?;
+        r.artifacts.extend(["pll.v".into(), "ecppll.log".into()]);
+        r.reason = format!("on the ULX3S ({}), clocks from its PLL", b.file);
+        Ok((
+            vec!["pll.v", "top.v"],
+            "merkur_ulx3s",
+            vec!["--lpf".into(), b.file.into()],
+        ))
+    } else {
+        write(dir, "top.v", &node_top(st)?)?;
+        r.reason = format!("pins of {} ({})", b.name, b.file);
+        Ok((
+            vec!["top.v"],
+            "merkur_top",
+            vec!["--pcf".into(), b.file.into()],
+        ))
+    }
+}
+
+/// Builds one node: Yosys once, nextpnr once per seed, the bitstream of the
+/// best seed. `r` gets the resources, every clock's Fmax per seed, the
+/// status and the critical path when timing failed.
+#[allow(clippy::too_many_arguments)]
+pub fn build(
+    dir: &Path,
+    st: &NodeStatic,
+    f: &Fpga,
+    board: Option<&boards::Board>,
+    flow: Flow,
+    clock: f64,
+    seeds: &[u64],
+    r: &mut NodeResult,
+) -> Result<(), String> {
+    let (files, top, pins) = sources(dir, st, board, flow, clock, r)?;
+    run_tool(
+        dir,
+        &flow.tool("yosys"),
+        &["-p", &yosys_script(f.family, &files, top)],
+        "yosys.log",
+    )?;
+    let cells = yosys_cells(&read_json(dir, "stat.json")?);
+    let (lut, ff, ram) = match f.family {
+        Family::Ice40 => ("SB_LUT4", "SB_DFF", "SB_RAM40"),
+        Family::Ecp5 => ("LUT4", "TRELLIS_FF", "DP16KD"),
+    };
+    r.luts = Some(sum_cells(&cells, |n| n == lut));
+    r.ffs = Some(sum_cells(&cells, |n| n.starts_with(ff)));
+    r.brams = Some(sum_cells(&cells, |n| n.starts_with(ram)));
+    r.brams_available = Some(f.bram.count);
+    r.artifacts
+        .extend(["top.json", "stat.json", "yosys.log"].map(String::from));
+    let freq = format!("{clock}");
+    let mut best: Option<(usize, f64)> = None;
+    for (i, &seed) in seeds.iter().enumerate() {
+        let s = seed.to_string();
+        let (out_arg, out_file) = match f.family {
+            Family::Ice40 => ("--asc", format!("top-s{seed}.asc")),
+            Family::Ecp5 => ("--textcfg", format!("top-s{seed}.config")),
+        };
+        let report = format!("report-s{seed}.json");
+        let log = format!("nextpnr-s{seed}.log");
+        let speed = f.speed.map(|x| x.to_string());
+        let mut args: Vec<&str> = vec![f.device_arg, "--package", f.package];
+        if let Some(sp) = &speed {
+            args.extend(["--speed", sp]);
+        }
+        args.extend([
+            "--json",
+            "top.json",
+            out_arg,
+            &out_file,
+            "--freq",
+            &freq,
+            "--seed",
+            &s,
+            "--timing-allow-fail",
+            "--report",
+            &report,
+            "--detailed-timing-report",
+        ]);
+        args.extend(pins.iter().map(String::as_str));
+        let pnr = match f.family {
+            Family::Ice40 => "nextpnr-ice40",
+            Family::Ecp5 => "nextpnr-ecp5",
+        };
+        let (placed, plog) = run_tool_status(dir, &flow.tool(pnr), &args, &log)?;
+        r.artifacts.push(log);
+        if !placed {
+            let over = pnr_overfull(&plog);
+            if over.is_empty() {
+                return Err(format!(
+                    "error: {pnr} failed in {} (log nextpnr-s{seed}.log)",
+                    dir.display()
+                ));
+            }
+            r.status = "does not fit".into();
+            r.reason = format!("needs {} ({})", over.join(", "), f.bram.device);
+            return Ok(());
+        }
+        r.artifacts.extend([report.clone(), out_file]);
+        let rep = read_json(dir, &report)?;
+        read_timing(&rep, i, r)?;
+        read_utilisation(&rep, f.family, r);
+        let fmax = r.fmax_mhz.unwrap_or(0.0);
+        if best.map_or(true, |(_, b)| fmax > b) {
+            best = Some((i, fmax));
+            r.critical_path = critical_path(&rep);
+        }
+        r.seeds.push(seed);
+    }
+    let (bi, fmax) = best.expect("at least one seed");
+    let core = r
+        .clocks
+        .iter()
+        .find(|c| is_core_clock(&c.name))
+        .ok_or_else(|| {
+            format!(
+                "error: no core clock in {}",
+                dir.join("report-s*.json").display()
+            )
+        })?;
+    r.fmax_mhz = Some(fmax);
+    r.max_line_rate_mbps = Some(fmax / 2.0);
+    r.fmax_min_mhz = core.fmax_mhz.iter().cloned().reduce(f64::min);
+    r.fmax_median_mhz = median(&core.fmax_mhz);
+    let seed = seeds[bi];
+    r.seed = Some(seed);
+    match f.family {
+        Family::Ice40 => {
+            run_tool(
+                dir,
+                &flow.tool("icepack"),
+                &[&format!("top-s{seed}.asc"), "top.bin"],
+                "icepack.log",
+            )?;
+            r.artifacts.push("top.bin".into());
+        }
+        Family::Ecp5 => {
+            run_tool(
+                dir,
+                &flow.tool("ecppack"),
+                &[&format!("top-s{seed}.config"), "top.bit"],
+                "ecppack.log",
+            )?;
+            r.artifacts.push("top.bit".into());
+        }
+    }
+    if fmax >= clock {
+        r.status = "ok".into();
+        r.critical_path.clear();
+    } else {
+        r.status = "timing failed".into();
+        r.reason = format!(
+            "Fmax {fmax:.2} MHz < {clock} MHz design clock (best of {} seeds)",
+            seeds.len()
+        );
+    }
+    Ok(())
+}
+
+/// The middle value (the mean of the two middle ones for an even count).
+fn median(v: &[f64]) -> Option<f64> {
+    let mut s = v.to_vec();
+    s.sort_by(f64::total_cmp);
+    let n = s.len();
+    match n {
+        0 => None,
+        _ if n % 2 == 1 => Some(s[n / 2]),
+        _ => Some((s[n / 2 - 1] + s[n / 2]) / 2.0),
+    }
+}
+
+/// Every clock's Fmax from one seed's report (seed index `i`); the core
+/// clock's goes to `r.fmax_mhz` for this seed.
+fn read_timing(rep: &serde_json::Value, i: usize, r: &mut NodeResult) -> Result<(), String> {
+    let clocks = rep["fmax"]
+        .as_object()
+        .ok_or("error: nextpnr report without fmax")?;
+    r.fmax_mhz = None;
+    for (name, v) in clocks {
+        let achieved = v["achieved"].as_f64().unwrap_or(0.0);
+        let c = match r.clocks.iter_mut().find(|c| &c.name == name) {
+            Some(c) => c,
+            None => {
+                r.clocks.push(ClockTiming {
+                    name: name.clone(),
+                    constraint_mhz: v["constraint"].as_f64().unwrap_or(0.0),
+                    fmax_mhz: vec![],
+                });
+                r.clocks.last_mut().expect("pushed")
+            }
+        };
+        c.fmax_mhz.resize(i, f64::NAN);
+        c.fmax_mhz.push(achieved);
+        if is_core_clock(name) {
+            r.fmax_mhz = Some(achieved);
+        }
+    }
+    Ok(())
+}
+
+/// Logic cells and I/O used and available from a report.
+fn read_utilisation(rep: &serde_json::Value, family: Family, r: &mut NodeResult) {
+    let u = &rep["utilization"];
+    let get = |k: &str| (u[k]["used"].as_u64(), u[k]["available"].as_u64());
+    let (lc, io) = match family {
+        Family::Ice40 => ("ICESTORM_LC", "SB_IO"),
+        Family::Ecp5 => ("TRELLIS_COMB", "TRELLIS_IO"),
+    };
+    (r.lcs, r.lcs_available) = get(lc);
+    r.ios = get(io).0;
+}
