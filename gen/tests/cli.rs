@@ -641,6 +641,41 @@ fn synth_refuses_bad_arguments() {
             ][..],
             "--seeds 0: must be 1 … 16",
         ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ecp5-85",
+                "--board",
+                "ulx3s",
+                "--node",
+                "0",
+            ][..],
+            "--node 0 is a special_master; --board ulx3s carries a slave",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ice40-hx8k",
+                "--board",
+                "ulx3s",
+            ][..],
+            "--board ulx3s does not carry --target ice40-hx8k",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ecp5-85",
+                "--board",
+                "arty",
+            ][..],
+            "--board arty: unknown board; boards: ice40-hx8k-breakout (--target ice40-hx8k), ulx3s",
+        ),
     ] {
         refused(args, want);
     }

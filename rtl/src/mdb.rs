@@ -17,6 +17,11 @@
 //!   pulses when the node enters or leaves failsafe (the status register's
 //!   bit 3 says which; protocol §12).
 //!
+//! Every memory here is written 4096 deep (the 12-bit slot number); the
+//! Verilog that simulation and synthesis use is sized to the ring's slot
+//! count ([`crate::verilog::size_memories`]): slots beyond it read 0 from
+//! the host port and take no writes.
+//!
 //! Host port: **Wishbone B4 classic** (16-bit data, 14-bit word address),
 //! one transfer per `i_wb_cyc & i_wb_stb`, acknowledged after 1–4 clocks:
 //!

@@ -4,8 +4,9 @@
 //! Targets: `ice40-hx8k` (Yosys `synth_ice40` → nextpnr-ice40 `--hx8k
 //! --package ct256` → `icepack`: a bitstream, timing at the design clock),
 //! `ecp5-85` and `ecp5-45` (Yosys `synth_ecp5` → nextpnr-ecp5 → `ecppack`:
-//! a `.bit`; [`fpga`] has both FPGA flows), `xc2c256` (Yosys `synth_coolrunner2`: macrocells and product terms; no
-//! fitter exists in the open tools), `xc6s` (Yosys `synth_xilinx -family
+//! a `.bit`; [`fpga`] has both FPGA flows, over placement seeds, read from
+//! the tools' JSON), `xc2c256` (Yosys `synth_coolrunner2`: macrocells and
+//! product terms; no fitter exists in the open tools), `xc6s` (Yosys `synth_xilinx -family
 //! xc6s`: resource counts), `xem6010` (the board top of a master or the
 //! special master, its `.ucf` and an ISE script; Yosys checks and counts
 //! it; with the `xem6010` cargo feature and Opal Kelly's FrontPanel HDL and
@@ -52,7 +53,7 @@ pub struct NodeResult {
     pub status: String,
     /// Why, when not `ok`.
     pub reason: String,
-    /// LUTs (LUT4 on iCE40, LUT1–6 on Spartan-6).
+    /// LUTs (LUT4 on iCE40 and ECP5, LUT1–6 on Spartan-6).
     pub luts: Option<u64>,
     /// Flip-flops.
     pub ffs: Option<u64>,
@@ -603,7 +604,9 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         _ => fpga,
     };
     let nodes = pick_nodes(&cfg, o.nodes, o.target)?;
-    if let Some(b) = &board {
+    // A board asked for by name carries what it can; the default board
+    // (the breakout on the HX8K) takes the slaves and leaves masters free.
+    if let (Some(b), Some(_)) = (&board, o.board) {
         let slave = |k: usize| matches!(cfg.nodes[k].kind, Kind::Sensor | Kind::Actuator);
         if let Some(&k) = o.nodes.iter().find(|&&k| k < cfg.nodes.len() && !slave(k)) {
             return Err(format!(
