@@ -1,5 +1,7 @@
 //! The pinned tools of scripts/tools.lock are installed at exactly those
-//! versions and run. `./run test` installs them first when missing.
+//! versions and run, and so are the YoWASP synthesis tools of
+//! scripts/requirements-synth.txt. `./run test` installs them first when
+//! missing.
 
 use merkur_testbenches::pinned_tools;
 use std::process::Command;
@@ -47,6 +49,42 @@ fn pinned_tools_run() {
         assert!(
             text.contains(expect),
             "{cmd} {arg} printed {text:?}, expected {expect:?}"
+        );
+    }
+}
+
+/// The YoWASP synthesis tools in .tools/venv are exactly the versions of
+/// scripts/requirements-synth.txt (`./run` installs them with pip
+/// `--require-hashes`, so the wheels are the pinned ones too).
+#[test]
+fn synthesis_venv_holds_the_pinned_versions() {
+    let root = merkur_testbenches::repo_root();
+    let lock = std::fs::read_to_string(root.join("scripts/requirements-synth.txt")).unwrap();
+    let pins: Vec<(String, String)> = lock
+        .lines()
+        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'))
+        .map(|l| {
+            let spec = l.split_whitespace().next().unwrap();
+            let (n, v) = spec.split_once("==").expect("name==version");
+            (n.to_lowercase(), v.to_string())
+        })
+        .collect();
+    assert!(pins.len() >= 4, "requirements-synth.txt lists the tools");
+    let pip = root.join(".tools/venv/bin/pip");
+    let out = Command::new(&pip)
+        .args(["freeze", "--disable-pip-version-check"])
+        .output()
+        .unwrap_or_else(|e| {
+            panic!(
+                "{} not runnable ({e}): run scripts/install-tools.sh --synth",
+                pip.display()
+            )
+        });
+    let frozen = String::from_utf8_lossy(&out.stdout).to_lowercase();
+    for (n, v) in &pins {
+        assert!(
+            frozen.lines().any(|l| l == format!("{n}=={v}")),
+            "{n}=={v} not installed in .tools/venv (pip freeze: {frozen}); run scripts/install-tools.sh --synth"
         );
     }
 }
