@@ -26,10 +26,11 @@
 //! | `diag[15:0]` | out | 16 | `o_diag` (J1) |
 //!
 //! Latency: as `merkur_top`; the PLL locks within its datasheet time after
-//! configuration. The node has no reset: it starts from its flip-flops'
-//! initial values when the bitstream loads, and its clock may run before
-//! the PLL is locked. A ring tolerates that as it tolerates any node that
-//! starts late: the node reintegrates (protocol §12).
+//! configuration. The node has no reset input: it starts from its
+//! flip-flops' initial values when the bitstream loads, and its clock runs
+//! from the PLL's output whether or not it is locked yet (`led[3]` shows
+//! the lock). Holding the node until lock would need a reset or clock
+//! enable the node does not have; not done here, not tested on hardware.
 
 use crate::synth_top::{node_top, NodeStatic};
 use merkur_model::scenario::Kind;
