@@ -546,6 +546,47 @@ fn tool_version(prog: &str, arg: &str) -> String {
         .unwrap_or_else(|| format!("{prog}: not found"))
 }
 
+/// The tool set and the FPGA of a run from `--flow`, `--speed`, `--seeds`
+/// and the board (the ULX3S carries speed grade 6 parts, so that is its
+/// default); refuses what cannot run. `None`: a target without a
+/// bitstream flow.
+fn fpga_of(
+    o: &Opts,
+    board: Option<&boards::Board>,
+) -> Result<(fpga::Flow, Option<fpga::Fpga>), String> {
+    let flow = fpga::Flow::parse(o.flow)?;
+    if let Some(sp) = o.speed {
+        if !o.target.starts_with("ecp5") {
+            return Err(format!(
+                "error: --speed {sp}: speed grades are for the ECP5 targets (ecp5-85, ecp5-45)"
+            ));
+        }
+        if !fpga::ECP5_SPEEDS.contains(&sp) {
+            return Err(format!(
+                "error: --speed {sp}: the ECP5 speed grades are 6, 7 and 8"
+            ));
+        }
+    }
+    if !(1..=16).contains(&o.seeds) {
+        return Err(format!(
+            "error: --seeds {}: must be 1 … 16 (placement seeds {} on)",
+            o.seeds, o.seed
+        ));
+    }
+    let speed = match board {
+        Some(b) if b.name == "ulx3s" => o.speed.or(Some(6)),
+        _ => o.speed,
+    };
+    let f = fpga::fpga(o.target, speed);
+    if flow == fpga::Flow::Debian && f.as_ref().is_some_and(|f| f.family != fpga::Family::Ice40) {
+        return Err(format!(
+            "error: --flow debian --target {}: Debian's tools have no nextpnr-ecp5; use --flow yowasp",
+            o.target
+        ));
+    }
+    Ok((flow, f))
+}
+
 /// Runs the synthesis; `Ok(false)` when a node failed timing, or did not
 /// fit the device of a bitstream target.
 pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
@@ -567,42 +608,8 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         }
     };
     let clock = 2.0 * rate;
-    let flow = fpga::Flow::parse(o.flow)?;
-    let fpga = fpga::fpga(o.target, o.speed);
-    if let Some(sp) = o.speed {
-        if !o.target.starts_with("ecp5") {
-            return Err(format!(
-                "error: --speed {sp}: speed grades are for the ECP5 targets (ecp5-85, ecp5-45)"
-            ));
-        }
-        if !fpga::ECP5_SPEEDS.contains(&sp) {
-            return Err(format!(
-                "error: --speed {sp}: the ECP5 speed grades are 6, 7 and 8"
-            ));
-        }
-    }
-    if !(1..=16).contains(&o.seeds) {
-        return Err(format!(
-            "error: --seeds {}: must be 1 … 16 (placement seeds {} on)",
-            o.seeds, o.seed
-        ));
-    }
-    if flow == fpga::Flow::Debian
-        && fpga
-            .as_ref()
-            .is_some_and(|f| f.family != fpga::Family::Ice40)
-    {
-        return Err(format!(
-            "error: --flow debian --target {}: Debian's tools have no nextpnr-ecp5; use --flow yowasp",
-            o.target
-        ));
-    }
     let board = board_of(o.target, o.board)?;
-    let fpga = match (&board, o.speed) {
-        // The ULX3S carries speed grade 6 parts.
-        (Some(b), None) if b.name == "ulx3s" => fpga::fpga(o.target, Some(6)),
-        _ => fpga,
-    };
+    let (flow, fpga) = fpga_of(o, board.as_ref())?;
     let nodes = pick_nodes(&cfg, o.nodes, o.target)?;
     // A board asked for by name carries what it can; the default board
     // (the breakout on the HX8K) takes the slaves and leaves masters free.
