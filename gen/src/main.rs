@@ -10,6 +10,7 @@ use std::process::ExitCode;
 mod campaign;
 mod dcm;
 mod demo;
+mod prove;
 mod sim;
 mod synth;
 
@@ -149,6 +150,20 @@ enum Cmd {
         /// node-death, sm-fibres, double, repair, double-repair, bit-errors, burst, clock-offset).
         #[arg(long, value_name = "LIST")]
         only: Option<String>,
+    },
+    /// Prove the control blocks' formal properties (SymbiYosys + Boolector, installed by
+    /// scripts/install-tools.sh --synth; docs/verification.md). Exit status 1 when a property
+    /// fails (its counterexample is written as a VCD waveform) or a cover is not reached.
+    Prove {
+        /// Only this proof (repeatable); see --list.
+        #[arg(long, value_name = "NAME")]
+        only: Vec<String>,
+        /// Working directory: every proof's files, logs and counterexamples.
+        #[arg(short, long, value_name = "DIR", default_value = "merkur-prove")]
+        output: PathBuf,
+        /// List the proofs and what each proves, and exit.
+        #[arg(long)]
+        list: bool,
     },
     /// Synthesize a scenario's nodes with the open tools and write the artifacts and a report
     /// (synth.md, synth.json): iCE40 and ECP5 bitstreams and timing, CoolRunner-II mapping,
@@ -542,6 +557,11 @@ fn main() -> ExitCode {
                 Err(e) => Err(e),
             }
         }
+        Cmd::Prove { only, output, list } => match prove::run(only, output, *list) {
+            Ok(true) => Ok(()),
+            Ok(false) => return ExitCode::from(1),
+            Err(e) => Err(e),
+        },
         Cmd::Demo { wave, model_only } => demo::run((!*model_only).then_some(wave.as_path())),
         Cmd::Campaign { .. } => match campaign_cmd(&cli.cmd) {
             Ok(true) => Ok(()),

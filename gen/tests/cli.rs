@@ -56,6 +56,7 @@ fn every_subcommand_has_help() {
         vec!["sim", "--help"],
         vec!["campaign", "--help"],
         vec!["synth", "--help"],
+        vec!["prove", "--help"],
     ] {
         let o = merkur(&sub);
         assert!(o.status.success(), "{sub:?}");
@@ -819,4 +820,37 @@ fn token_bus_scenarios_trace_emit_and_simulate() {
         "is a token-bus scenario",
     );
     let _ = std::fs::remove_dir_all(d);
+}
+
+/// `merkur prove`: the list, one real proof end to end (its table and the
+/// files it leaves), and bad arguments. Every proof runs in
+/// testbenches/tests/formal.rs.
+#[test]
+fn prove_lists_runs_and_refuses() {
+    let o = merkur(&["prove", "--list"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let list = text(&o.stdout);
+    for p in [
+        "switch_ctl",
+        "stream_ctrl",
+        "rmm_fcm",
+        "mdb",
+        "special_master",
+    ] {
+        assert!(list.contains(p), "{list}");
+    }
+    let dir = scratch("prove");
+    let o = merkur(&["prove", "--only", "switchbox", "-o", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("| switchbox | prove | 1 | proved |"), "{out}");
+    assert!(
+        out.contains("| switchbox | cover | 1 | all reached |"),
+        "{out}"
+    );
+    assert!(dir.join("switchbox/switchbox.sby").is_file());
+    refused(
+        &["prove", "--only", "nope"],
+        "--only \"nope\": no such proof; proofs: codec",
+    );
 }

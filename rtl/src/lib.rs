@@ -15,6 +15,7 @@
 //! - [`cdr`]: 8×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
+//! - [`formal`]: the formal proofs of the control blocks (property wrappers in `rtl/formal/`)
 //! - [`fwd`]: cut-through forwarder, the slot shift register (slave and master mode)
 //! - [`master`]: the master node (Figure 7): slave ring logic + database
 //! - [`mdb`]: a master's database: data and configuration memory, Alive check, interrupts, Wishbone
@@ -45,6 +46,7 @@ pub mod dcm;
 pub mod dcm_station;
 pub mod dec5b4b;
 pub mod enc4b5b;
+pub mod formal;
 pub mod fwd;
 pub mod master;
 pub mod mdb;

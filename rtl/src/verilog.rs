@@ -113,6 +113,30 @@ pub fn size_memories(verilog: &str, depth: usize) -> String {
     out
 }
 
+/// Renames the top module of [`block_verilog`]'s text from `top` to `name`
+/// (and its children `top$x` to `name$x`), so that several blocks can be
+/// read into one tool run (the formal proofs, [`crate::formal`]). Only
+/// module headers, instantiations and `endmodule` comments change.
+pub fn rename_top(verilog: &str, name: &str) -> String {
+    let mut out = String::with_capacity(verilog.len() + 256);
+    for line in verilog.lines() {
+        let t = line.trim_start();
+        let indent = &line[..line.len() - t.len()];
+        let l = if let Some(rest) = t.strip_prefix("module top") {
+            format!("{indent}module {name}{rest}")
+        } else if let Some(rest) = t.strip_prefix("endmodule // top") {
+            format!("{indent}endmodule // {name}{rest}")
+        } else if let Some(rest) = t.strip_prefix("top$") {
+            format!("{indent}{name}${rest}")
+        } else {
+            line.to_string()
+        };
+        out.push_str(&l);
+        out.push('\n');
+    }
+    out
+}
+
 /// Every memory of a Verilog text: (width in bits, depth), in order.
 pub fn memories(verilog: &str) -> Vec<(usize, usize)> {
     verilog
@@ -181,6 +205,20 @@ pub const WAIVERS: &str = include_str!("../lint/waivers.vlt");
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rename_top_renames_modules_and_instances_only() {
+        let v = block_verilog(crate::switch_ctl::SwitchCtl::default());
+        let r = rename_top(&v, "switch_ctl");
+        assert!(r.contains("module switch_ctl(clock,"));
+        assert!(r.contains("module switch_ctl$settle(d,q,clock);"));
+        assert!(r.contains("    switch_ctl$settle settle("));
+        assert!(!r.contains("module top"), "{r}");
+        assert!(!r.lines().any(|l| l.trim_start().starts_with("top$")));
+        // Signals are not touched.
+        assert_eq!(r.matches("settle$q").count(), v.matches("settle$q").count());
+        assert_eq!(r.lines().count(), v.lines().count());
+    }
 
     #[test]
     fn memories_are_resized_with_every_access_guarded() {

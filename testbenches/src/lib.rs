@@ -59,6 +59,7 @@ pub fn pinned_tools() -> Result<Vec<PinnedTool>, String> {
 }
 
 pub mod dcm_sim;
+pub mod formal;
 pub mod ring_sim;
 pub mod stim;
 pub mod verilator;

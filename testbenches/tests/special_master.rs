@@ -145,3 +145,79 @@ fn the_secondary_relay_passes_frames_only() {
         so.packets.iter().map(|p| &p.0).collect::<Vec<_>>()
     );
 }
+
+/// The CS timeout (protocol §12 item 4): after a frame has come back (the
+/// special master is armed), the special master enters failsafe when no
+/// packet other than a TST has come back for `i_cs_timeout` clocks —
+/// counted from its last returned header word, so not before
+/// `i_cs_timeout` clocks after that word's last bit was on the line and
+/// within the receiver's latency after that. The formal proof
+/// (rtl/formal/special_master.sv) shows the count is exact for every input;
+/// this run shows the timeout's trigger happens (a bounded model check to
+/// a returned frame is too deep for the solver).
+#[test]
+fn the_cs_timeout_fires_on_time() {
+    const CS: u64 = 600;
+    let seed = Rng::seed(0xc5);
+    let mut rng = Rng::new(seed);
+    // The first frame arms the special master (it counts only once armed);
+    // the second one's header is the last packet back.
+    let mut pi = vec![];
+    idle(&mut pi, 40);
+    data_frame(&mut pi, 1, &mut rng);
+    idle(&mut pi, 20);
+    let before = pi.len();
+    data_frame(&mut pi, 2, &mut rng);
+    // J K (10 code bits) and H0 (one word) end here.
+    let h0_end_bit = before + 10 + word_code_bits(&Word::default(), false).len();
+    idle(&mut pi, 400);
+    let samples = |code: &[u8], rng: &mut Rng| {
+        sample_words(&line_samples(
+            &nrzi_encode(code, &mut 0),
+            0.0,
+            0.5,
+            0.0,
+            rng,
+        ))
+    };
+    let pi = samples(&pi, &mut rng);
+    let si = samples(&vec![1; pi.len() / 2 + 8], &mut rng);
+
+    let mut m = Model::build(&block_verilog(SpecialMaster::default())).unwrap();
+    for (name, v) in [
+        ("i_address", 0),
+        ("i_slots_m1", SLOTS as u64 - 1),
+        ("i_period", 400),
+        ("i_cs_timeout", CS),
+    ] {
+        let i = m.port(name);
+        m.set(i, v);
+    }
+    let (clk, ipi, isi, ofs) = (
+        m.port("clock"),
+        m.port("i_pi"),
+        m.port("i_si"),
+        m.port("o_failsafe"),
+    );
+    let mut fs_at = None;
+    for t in 0..pi.len().min(si.len()) {
+        m.set(ipi, pi[t]);
+        m.set(isi, si[t]);
+        m.tick(clk);
+        if fs_at.is_none() && m.get(ofs) == 1 {
+            fs_at = Some(t as u64);
+        }
+    }
+    // Two clocks per bit time (protocol §16).
+    let h0_end = 2 * h0_end_bit as u64;
+    let fs_at = fs_at.unwrap_or_else(|| panic!("seed {seed}: no failsafe at all"));
+    eprintln!(
+        "failsafe {} clocks after the returned H0 ended",
+        fs_at - h0_end
+    );
+    assert!(
+        fs_at >= h0_end + CS && fs_at <= h0_end + CS + 16,
+        "seed {seed}: failsafe {} clocks after the returned H0 ended, CS timeout {CS}",
+        fs_at as i64 - h0_end as i64
+    );
+}

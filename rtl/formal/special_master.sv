@@ -1,0 +1,96 @@
+// Formal properties of the special master's clock base and CS timeout
+// (protocol §8, §12). The whole special master is under proof (its
+// memories 256 deep, as for a ring of up to 256 slots); every input is
+// free in every clock but the static configuration. Proved by k-induction.
+//
+// - one_frame_per_period: once the host has started the ring, the frame
+//   generator is started (`ftx`'s start, the period tick) exactly once
+//   every P bit times of the node's clock (P = i_period; a bit time is 2
+//   clocks, §16): never sooner, and never more than P bit times without
+//   one while running;
+// - cs_timeout: after its first returned frame, the special master
+//   counts the clocks since the last returned packet other than a TST
+//   (a header word back on INPUT, good or damaged, that is not a good
+//   TST H0); when the count reaches the CS timeout it enters failsafe in
+//   the next clock (§12 item 4), and the count, which is the only way the
+//   timeout is decided, cannot reach it sooner (inv_quiet).
+//
+// The covers show a second period tick. The CS timeout's trigger (armed:
+// a frame has come back) is not covered here: a bounded search to a
+// returned frame (about 130 clocks of the whole special master) runs the
+// solver out of memory (Boolector in WebAssembly: 4 GiB). Its trigger is
+// shown in simulation instead: testbenches/tests/special_master.rs,
+// `the_cs_timeout_fires_on_time` (failsafe CS + 3 clocks after the last
+// returned header word).
+module special_master_props (
+    input wire clock,
+    input wire [3:0] i_pi, input wire [3:0] i_si,
+    input wire [11:0] i_address, input wire [11:0] i_slots_m1,
+    input wire [19:0] i_period, input wire [19:0] i_cs_timeout,
+    input wire i_wb_cyc, input wire i_wb_stb, input wire i_wb_we,
+    input wire [13:0] i_wb_adr, input wire [15:0] i_wb_dat,
+    input wire i_irq1, input wire i_irq2, input wire i_fs_req
+);
+    // Period limits of protocol §8 (a frame of at least one slot fits; at
+    // most 149,796 bit times).
+    localparam [19:0] P_MAX = 20'd149796;
+
+    wire tick, running, half_q, armed_q, failsafe_q, rx_wvalid, rx_ok;
+    wire [1:0] rx_kind, rx_ptype;
+    wire [19:0] bcnt_q, quiet_q;
+    special_master dut (
+        .clock(clock), .i_pi(i_pi), .i_si(i_si), .i_address(i_address),
+        .i_slots_m1(i_slots_m1), .i_period(i_period),
+        .i_cs_timeout(i_cs_timeout), .i_wb_cyc(i_wb_cyc),
+        .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),
+        .i_wb_dat(i_wb_dat), .i_irq1(i_irq1), .i_irq2(i_irq2),
+        .i_fs_req(i_fs_req),
+        .ftx$i_start(tick), .mdb$o_running(running), .half$q(half_q),
+        .bcnt$q(bcnt_q), .quiet$q(quiet_q), .armed$q(armed_q),
+        .failsafe$q(failsafe_q), .rx_in$o_wvalid(rx_wvalid),
+        .rx_in$o_kind(rx_kind), .rx_in$o_ok(rx_ok), .rx_in$o_ptype(rx_ptype)
+    );
+
+    reg past_valid = 1'b0;
+    always @(posedge clock) past_valid <= 1'b1;
+    always @(posedge clock) if (past_valid) begin
+        static_cfg: assume (i_period == $past(i_period) && i_cs_timeout == $past(i_cs_timeout)
+                            && i_slots_m1 == $past(i_slots_m1) && i_address == $past(i_address));
+    end
+    always @(*) period_range: assume (i_period >= 20'd2 && i_period <= P_MAX);
+
+    // ---- the period --------------------------------------------------------
+    // Bit times counted while running since the last tick (1 at the tick's
+    // own bit), and whether there was one.
+    reg [19:0] bits = 20'd0;
+    reg ticked = 1'b0;
+    wire bit_time = running & half_q;
+    always @(posedge clock) begin
+        if (tick) begin
+            bits <= 20'd1;
+            ticked <= 1'b1;
+        end else if (bit_time) bits <= bits + 20'd1;
+    end
+    always @(*) begin
+        if (tick && ticked) one_frame_per_period: assert (bits == i_period);
+        if (ticked) at_most_one_period: assert (bits <= i_period);
+        if (tick) tick_on_a_bit: assert (bit_time);
+        inv_bits: assert (!ticked || bits != 0);
+        inv_bcnt: assert (ticked ? bcnt_q == (bits == i_period ? 20'd0 : bits) : bcnt_q == 20'd0);
+        cover_second_tick: cover (tick && ticked && i_period == 20'd5);
+    end
+
+    // ---- the CS timeout ------------------------------------------------------
+    wire returned = rx_wvalid & (rx_kind == 2'd0) & ~(rx_ok & (rx_ptype == 2'd2));
+    reg [19:0] quiet = 20'd0;
+    always @(posedge clock) begin
+        if (returned) quiet <= 20'd0;
+        else if (armed_q && quiet != 20'hfffff) quiet <= quiet + 20'd1;
+    end
+    reg timeout_due = 1'b0;
+    always @(posedge clock) timeout_due <= armed_q && quiet == i_cs_timeout;
+    always @(*) begin
+        inv_quiet: assert (quiet_q == quiet);
+        if (timeout_due) cs_timeout: assert (failsafe_q);
+    end
+endmodule
