@@ -180,7 +180,7 @@ pub fn run(p: &Proof, dir: &Path, tools: &Tools) -> Result<ProofResult, String> 
     write(&work.join(format!("{}.sv", p.name)), p.props)?;
     write(&work.join(format!("{}.sby", p.name)), &sby_config(p))?;
     shim(&bin, &tools.boolector)?;
-    warm_up(&tools.boolector)?;
+    tools.warm_up()?;
     let mut path = std::ffi::OsString::from(&bin);
     if let Some(old) = std::env::var_os("PATH") {
         path.push(":");
@@ -221,8 +221,16 @@ fn shim(bin: &Path, boolector: &Path) -> Result<(), String> {
         .map_err(|e| format!("error: cannot make {} executable: {e}", path.display()))
 }
 
-/// YoWASP compiles a tool on its first run and says so on stdout, which
-/// yosys-smtbmc would take for the solver's answer: run it once first.
+impl Tools {
+    /// Runs the solver once: YoWASP compiles a tool on its first run and
+    /// says so on stdout, which yosys-smtbmc would take for the solver's
+    /// answer. Cheap once compiled; call it before running proofs in
+    /// parallel, so that they do not all compile it at once.
+    pub fn warm_up(&self) -> Result<(), String> {
+        warm_up(&self.boolector)
+    }
+}
+
 fn warm_up(boolector: &Path) -> Result<(), String> {
     let out = Command::new(boolector)
         .arg("--version")

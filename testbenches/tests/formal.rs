@@ -18,6 +18,7 @@ fn out_dir(name: &str) -> PathBuf {
 fn every_proof_holds() {
     let tools = Tools::for_tests().unwrap();
     let dir = out_dir("all");
+    tools.warm_up().unwrap();
     let ps = proofs();
     // Two at a time (the machine has two cores; one SymbiYosys task each).
     let results: Vec<_> = std::thread::scope(|s| {
