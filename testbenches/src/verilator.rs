@@ -179,6 +179,9 @@ fn cache_root() -> PathBuf {
     crate::repo_root().join("target/verilator-cache")
 }
 
+/// g++ flags of the Verilated model's objects (part of the cache key).
+const CXXFLAGS: &[&str] = &["-fPIC", "-O2", "-std=c++17", "-w"];
+
 const VFLAGS: &[&str] = &[
     "--cc",
     "-O3",
@@ -250,6 +253,7 @@ pub fn build_library_top(
         &wrapper,
         &version,
         &VFLAGS.join(" "),
+        &CXXFLAGS.join(" "),
         &vlt,
         trace_flag,
     ] {
@@ -355,7 +359,7 @@ fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> R
         &["-DVM_TRACE=0"]
     };
     let flags = |c: &mut Command| {
-        c.args(["-fPIC", "-O2", "-std=c++17", "-w"])
+        c.args(CXXFLAGS)
             .args(trace_defs)
             .arg(format!("-I{}", inc.display()))
             .arg(format!("-I{}", inc.join("vltstd").display()))
