@@ -31,8 +31,9 @@ module special_master_props (
     input wire [13:0] i_wb_adr, input wire [15:0] i_wb_dat,
     input wire i_irq1, input wire i_irq2, input wire i_fs_req
 );
-    // Period limits of protocol §8 (a frame of at least one slot fits; at
-    // most 149,796 bit times).
+    // Periods: from 2 bit times (wider than protocol §8, whose shortest
+    // period holds a whole frame: the tick logic must not care) up to §8's
+    // longest, 149,796 bit times.
     localparam [19:0] P_MAX = 20'd149796;
 
     wire tick, running, half_q, armed_q, failsafe_q, rx_wvalid, rx_ok;
