@@ -90,13 +90,11 @@ pub struct Cdr {
     rx_valid: DFF<Bit>,
     rx_bit: DFF<Bit>,
     los_flag: DFF<Bit>,
-    c0: Signal<Local, Bits<3>>,
-    c1: Signal<Local, Bits<3>>,
-    c2: Signal<Local, Bits<3>>,
-    c3: Signal<Local, Bits<3>>,
     prior: Signal<Local, Bits<4>>,
     edges: Signal<Local, Bits<4>>,
     live: Signal<Local, Bit>,
+    clean: Signal<Local, Bit>,
+    take_at: Signal<Local, Bits<2>>,
 }
 
 impl Default for Cdr {
@@ -118,13 +116,11 @@ impl Default for Cdr {
             rx_valid: Default::default(),
             rx_bit: Default::default(),
             los_flag: Default::default(),
-            c0: Default::default(),
-            c1: Default::default(),
-            c2: Default::default(),
-            c3: Default::default(),
             prior: Default::default(),
             edges: Default::default(),
             live: Default::default(),
+            clean: Default::default(),
+            take_at: Default::default(),
         }
     }
 }
@@ -140,51 +136,51 @@ impl Logic for Cdr {
         }
         self.edges.next = self.i_samples.val() ^ self.prior.val();
         // The sample counter through the clock's four samples: 0 on the
-        // first sample of a new level, else one more than before.
-        self.c0.next = self.count.q.val() + 1;
+        // first sample of a new level, else one more than before (modulo
+        // 8). Written without adders, so it maps to a few levels of LUTs
+        // (issue 20): after the clock the counter is 3 − j when the last
+        // edge of the clock is at sample j, and 4 more than before (bit 2
+        // flipped) when the clock has no edge.
+        self.count.d.next = self.count.q.val() ^ 4;
         if self.edges.val().get_bit(0) {
-            self.c0.next = 0.into();
+            self.count.d.next = 3.into();
         }
-        self.c1.next = self.c0.val() + 1;
         if self.edges.val().get_bit(1) {
-            self.c1.next = 0.into();
+            self.count.d.next = 2.into();
         }
-        self.c2.next = self.c1.val() + 1;
         if self.edges.val().get_bit(2) {
-            self.c2.next = 0.into();
+            self.count.d.next = 1.into();
         }
-        self.c3.next = self.c2.val() + 1;
         if self.edges.val().get_bit(3) {
-            self.c3.next = 0.into();
+            self.count.d.next = 0.into();
         }
         self.last.d.next = self.i_samples.val().get_bit(3);
-        self.count.d.next = self.c3.val();
-        // Take the sample at count 4 (the bit's centre); takes are at least
-        // 5 samples apart, so at most one per clock.
-        self.rx_valid.d.next = false;
+        // Take the sample at count 4 (the bit's centre). A sample after an
+        // edge of this clock counts at most 3, so the take is at sample
+        // k = 3 − count (count 0 … 3, the two low bits inverted), when no
+        // edge comes before it: at most one per clock.
         // (A line without an edge for 8 bit times is dead, not a run of
         // zeros: legal streams toggle at least every 4, one line-bit error
         // leaves at most 7; no bits from it.)
         self.live.next = self.quiet.q.val() < self.mute_after.val();
-        if (self.c0.val() == 4) & self.live.val() {
-            self.rx_valid.d.next = true;
-            self.rx_bit.d.next = self.i_samples.val().get_bit(0);
-            self.phase.d.next = 0.into();
+        self.clean.next = !self.edges.val().get_bit(0);
+        if self.count.q.val().get_bits::<2>(0) == 2 {
+            self.clean.next = !self.edges.val().get_bit(0) & !self.edges.val().get_bit(1);
         }
-        if (self.c1.val() == 4) & self.live.val() {
-            self.rx_valid.d.next = true;
-            self.rx_bit.d.next = self.i_samples.val().get_bit(1);
-            self.phase.d.next = 1.into();
+        if self.count.q.val().get_bits::<2>(0) == 1 {
+            self.clean.next = !self.edges.val().get_bit(0)
+                & !self.edges.val().get_bit(1)
+                & !self.edges.val().get_bit(2);
         }
-        if (self.c2.val() == 4) & self.live.val() {
-            self.rx_valid.d.next = true;
-            self.rx_bit.d.next = self.i_samples.val().get_bit(2);
-            self.phase.d.next = 2.into();
+        if self.count.q.val().get_bits::<2>(0) == 0 {
+            self.clean.next = !self.edges.val().any();
         }
-        if (self.c3.val() == 4) & self.live.val() {
+        self.take_at.next = !self.count.q.val().get_bits::<2>(0);
+        self.rx_valid.d.next = false;
+        if !self.count.q.val().get_bit(2) & self.clean.val() & self.live.val() {
             self.rx_valid.d.next = true;
-            self.rx_bit.d.next = self.i_samples.val().get_bit(3);
-            self.phase.d.next = 3.into();
+            self.rx_bit.d.next = self.i_samples.val().get_bit(self.take_at.val().index());
+            self.phase.d.next = self.take_at.val();
         }
         // Loss of signal: LOS_SAMPLES samples without an edge.
         if self.edges.val().any() {

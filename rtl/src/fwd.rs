@@ -58,10 +58,18 @@
 //! | `o_toggle` | out | 1 | clock | the Alive flip-flop |
 //! | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
 //!
-//! Latency: 5 bit times (one group) from INPUT bit to the retime buffer,
-//! which sends it 2.5 ± 0.5 bit times after its receive clock; with the
-//! CDR 8–9.5 bit times from line to line (measured at the fibres of rings
-//! of 8 to 100 nodes: mean 8.3–8.6, docs/benchmarks.md).
+//! Pipeline (issue 20: every stage a few levels of logic at 2 × the line
+//! rate): stage A decodes a group in the clock its last bit arrives (and
+//! the action of a word's first group); stage B, the next clock, decides
+//! the rewrite from registers (the word flags and the fresh word with its
+//! parities are prepared a clock ahead, `pre_*`, `f_*`); stage C, the
+//! clock after, encodes it into the delay line and sums the delta parity.
+//!
+//! Latency: 6 bit times (one group and one bit, so that stage C's rewrite
+//! is in place before the group's first bit leaves) from INPUT bit to the
+//! retime buffer, which sends it 2.5 ± 0.5 bit times after its receive
+//! clock; with the CDR 9.5–10.5 bit times from line to line (measured at
+//! the fibres, docs/benchmarks.md).
 //!
 //! ```text
 //! in code   | N0 | N1 | N2 | N3 | N4 | ...
@@ -142,7 +150,24 @@ pub struct Fwd {
     dead_after: Constant<Bits<4>>,
     prev: DFF<Bit>,
     window: DFF<Bits<10>>,
-    delay: DFF<Bits<5>>,
+    delay: DFF<Bits<6>>,
+    // Stage B → C: the group as it leaves (`c_nib`, written when
+    // `c_write`, or the mark T when `c_mark`), as it came (`c_orig`), the
+    // word's first group (`c_first`), a bit arrived in stage B (`c_shift`).
+    c_pend: DFF<Bit>,
+    c_nib: DFF<Bits<4>>,
+    c_orig: DFF<Bits<4>>,
+    c_write: DFF<Bit>,
+    c_mark: DFF<Bit>,
+    c_first: DFF<Bit>,
+    c_shift: DFF<Bit>,
+    // The group that completed in the clock before, decoded (stage A → B).
+    g_pend: DFF<Bit>,
+    g_cut: DFF<Bit>,
+    g_nib: DFF<Bits<4>>,
+    g_dat: DFF<Bit>,
+    g_sym_s: DFF<Bit>,
+    g_act: DFF<Bits<3>>,
     inpkt: DFF<Bit>,
     idles: DFF<Bits<2>>,
     quiet: DFF<Bits<4>>,
@@ -165,6 +190,13 @@ pub struct Fwd {
     f_data: DFF<Bits<16>>,
     f_alive: DFF<Bit>,
     f_alarm: DFF<Bit>,
+    f_reason: DFF<Bits<4>>,
+    f_pa: DFF<Bit>,
+    f_pb: DFF<Bit>,
+    pre_home: DFF<Bit>,
+    fs_r: DFF<Bit>,
+    wr_r: DFF<Bit>,
+    pre_own: DFF<Bit>,
     toggle: DFF<Bit>,
     prev_alarm: DFF<Bit>,
     out: Retime,
@@ -175,11 +207,18 @@ pub struct Fwd {
     code: Signal<Local, Bit>,
     shifted: Signal<Local, Bits<10>>,
     group: Signal<Local, Bits<5>>,
+    dec_nib: Signal<Local, Bits<4>>,
+    dec_data: Signal<Local, Bit>,
+    dec_s: Signal<Local, Bit>,
     nib: Signal<Local, Bits<4>>,
     g_data: Signal<Local, Bit>,
     g_s: Signal<Local, Bit>,
+    code_w: Signal<Local, Bits<5>>,
+    code_w6: Signal<Local, Bits<6>>,
+    in_code: Signal<Local, Bit>,
     code_out: Signal<Local, Bits<5>>,
     act_now: Signal<Local, Bits<3>>,
+    act_c: Signal<Local, Bits<3>>,
     nib_out: Signal<Local, Bits<4>>,
     recode: Signal<Local, Bit>,
     diff: Signal<Local, Bits<4>>,
@@ -190,10 +229,17 @@ pub struct Fwd {
     p_b: Signal<Local, Bit>,
     send_alarm: Signal<Local, Bit>,
     own: Signal<Local, Bit>,
+    home_c: Signal<Local, Bit>,
+    own_c: Signal<Local, Bit>,
+    send_c: Signal<Local, Bit>,
+    fresh_data: Signal<Local, Bits<16>>,
+    fresh_alive: Signal<Local, Bit>,
     home: Signal<Local, Bit>,
     cut: Signal<Local, Bit>,
-    pre_b2: Signal<Local, Bit>,
-    pre_b1: Signal<Local, Bit>,
+    pa_fix: Signal<Local, Bit>,
+    pb_fix: Signal<Local, Bit>,
+    inc2: Signal<Local, Bits<4>>,
+    inc4: Signal<Local, Bits<4>>,
     out_bit: Signal<Local, Bit>,
     arrived_bad: Signal<Local, Bit>,
 }
@@ -239,6 +285,19 @@ impl Fwd {
             prev: Default::default(),
             window: Default::default(),
             delay: Default::default(),
+            c_pend: Default::default(),
+            c_nib: Default::default(),
+            c_orig: Default::default(),
+            c_write: Default::default(),
+            c_mark: Default::default(),
+            c_first: Default::default(),
+            c_shift: Default::default(),
+            g_pend: Default::default(),
+            g_cut: Default::default(),
+            g_nib: Default::default(),
+            g_dat: Default::default(),
+            g_sym_s: Default::default(),
+            g_act: Default::default(),
             inpkt: Default::default(),
             idles: Default::default(),
             quiet: Default::default(),
@@ -259,6 +318,13 @@ impl Fwd {
             f_data: Default::default(),
             f_alive: Default::default(),
             f_alarm: Default::default(),
+            f_reason: Default::default(),
+            f_pa: Default::default(),
+            f_pb: Default::default(),
+            pre_home: Default::default(),
+            fs_r: Default::default(),
+            wr_r: Default::default(),
+            pre_own: Default::default(),
             toggle: Default::default(),
             prev_alarm: Default::default(),
             out: Default::default(),
@@ -269,11 +335,18 @@ impl Fwd {
             code: Default::default(),
             shifted: Default::default(),
             group: Default::default(),
+            dec_nib: Default::default(),
+            dec_data: Default::default(),
+            dec_s: Default::default(),
             nib: Default::default(),
             g_data: Default::default(),
             g_s: Default::default(),
+            code_w: Default::default(),
+            code_w6: Default::default(),
+            in_code: Default::default(),
             code_out: Default::default(),
             act_now: Default::default(),
+            act_c: Default::default(),
             nib_out: Default::default(),
             recode: Default::default(),
             diff: Default::default(),
@@ -284,10 +357,17 @@ impl Fwd {
             p_b: Default::default(),
             send_alarm: Default::default(),
             own: Default::default(),
+            home_c: Default::default(),
+            own_c: Default::default(),
+            send_c: Default::default(),
+            fresh_data: Default::default(),
+            fresh_alive: Default::default(),
             home: Default::default(),
             cut: Default::default(),
-            pre_b2: Default::default(),
-            pre_b1: Default::default(),
+            pa_fix: Default::default(),
+            pb_fix: Default::default(),
+            inc2: Default::default(),
+            inc4: Default::default(),
             out_bit: Default::default(),
             arrived_bad: Default::default(),
         }
@@ -303,6 +383,19 @@ impl Logic for Fwd {
             prev,
             window,
             delay,
+            c_pend,
+            c_nib,
+            c_orig,
+            c_write,
+            c_mark,
+            c_first,
+            c_shift,
+            g_pend,
+            g_cut,
+            g_nib,
+            g_dat,
+            g_sym_s,
+            g_act,
             inpkt,
             idles,
             quiet,
@@ -318,6 +411,13 @@ impl Logic for Fwd {
             f_data,
             f_alive,
             f_alarm,
+            f_reason,
+            f_pa,
+            f_pb,
+            pre_home,
+            fs_r,
+            wr_r,
+            pre_own,
             toggle,
             prev_alarm,
             sent,
@@ -339,187 +439,224 @@ impl Logic for Fwd {
         self.group.next = self.shifted.val().get_bits::<5>(0);
         // 4B/5B decode, written out: a ROM instance here would be read in the
         // same always block that addresses it, which Verilator cannot order.
-        self.nib.next = 0.into();
-        self.g_data.next = false;
+        self.dec_nib.next = 0.into();
+        self.dec_data.next = false;
         if self.group.val() == 0b11110 {
-            self.nib.next = 0.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 0.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b01001 {
-            self.nib.next = 1.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 1.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b10100 {
-            self.nib.next = 2.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 2.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b10101 {
-            self.nib.next = 3.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 3.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b01010 {
-            self.nib.next = 4.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 4.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b01011 {
-            self.nib.next = 5.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 5.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b01110 {
-            self.nib.next = 6.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 6.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b01111 {
-            self.nib.next = 7.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 7.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b10010 {
-            self.nib.next = 8.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 8.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b10011 {
-            self.nib.next = 9.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 9.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b10110 {
-            self.nib.next = 10.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 10.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b10111 {
-            self.nib.next = 11.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 11.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b11010 {
-            self.nib.next = 12.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 12.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b11011 {
-            self.nib.next = 13.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 13.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b11100 {
-            self.nib.next = 14.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 14.into();
+            self.dec_data.next = true;
         }
         if self.group.val() == 0b11101 {
-            self.nib.next = 15.into();
-            self.g_data.next = true;
+            self.dec_nib.next = 15.into();
+            self.dec_data.next = true;
         }
-        self.g_s.next = self.group.val() == 0b11001;
+        self.dec_s.next = self.group.val() == 0b11001;
+        // Stage B works on the group stage A registered (issue 20: the
+        // group's decode and its rewrite are a clock apart).
+        self.nib.next = self.g_nib.q.val();
+        self.g_data.next = self.g_dat.q.val();
+        self.g_s.next = self.g_sym_s.q.val();
 
         // What to do with the word that starts with this group. A slave
         // writes its home slot; a master every slot its configuration marks
         // LOCAL or ACT (its home slot is one of its LOCAL slots).
-        self.home.next = (self.wcount.q.val() == 2)
+        // The node's failsafe and wrap, registered here (issue 20: they come
+        // from the far side of the node; a header shows them a clock later).
+        self.fs_r.d.next = self.i_fs.val();
+        self.wr_r.d.next = self.i_wrapped.val();
+        // Decided a clock ahead, from the word counters (issue 20: stage B
+        // reads registers): whether the next word is the node's.
+        self.home_c.next = (self.wcount.q.val() == 2)
             & (self.slot.q.val() == self.i_address.val())
             & !self.dead.q.val()
-            & !self.i_fs.val();
-        self.own.next = self.home.val();
+            & !self.fs_r.q.val();
+        self.own_c.next = self.home_c.val();
         if self.i_master.val() {
-            self.own.next = (self.wcount.q.val() == 2)
+            self.own_c.next = (self.wcount.q.val() == 2)
                 & (self.i_slot_cfg.val() != 0)
                 & !self.dead.q.val()
-                & !self.i_fs.val();
+                & !self.fs_r.q.val();
         }
-        self.send_alarm.next = self.home.val() & self.i_alarm_req.val() & !self.prev_alarm.q.val();
-        self.act_now.next = self.action.q.val();
+        self.pre_home.d.next = self.home_c.val();
+        self.pre_own.d.next = self.own_c.val();
+        self.send_c.next = self.home_c.val() & self.i_alarm_req.val() & !self.prev_alarm.q.val();
+        self.home.next = self.pre_home.q.val();
+        self.own.next = self.pre_own.q.val();
+        self.send_alarm.next = self.f_alarm.q.val();
+        // The word's action, decided in stage A from the group as it
+        // completes (its first group decides; the others keep `action`),
+        // registered for stage B (`act_now`).
+        self.act_c.next = self.action.q.val();
         if self.gidx.q.val() == 0 {
-            self.act_now.next = 0.into();
+            self.act_c.next = 0.into();
             if !self.dead.q.val() {
                 if self.wcount.q.val() == 0 {
-                    self.act_now.next = 1.into();
+                    self.act_c.next = 1.into();
                 }
                 if self.wcount.q.val() == 1 {
-                    self.act_now.next = 2.into();
+                    self.act_c.next = 2.into();
                 }
             }
-            if self.own.val() {
+            if self.own_c.val() {
                 // Sensor, LOCAL slot: always fresh. Actuator (from the first
                 // group): its alarm, VOID (S) or an alarm coming back ->
                 // fresh; data -> replace ALIVE; anything else -> leaves bad.
                 // Master, ACT slot: data -> replace the data, keep ALIVE;
                 // VOID -> fresh with the Alive the actuator would send;
                 // anything else (an alarm, an invalid group) passes.
-                self.act_now.next = 3.into();
-                if self.i_actuator.val() & !self.i_master.val() & !self.send_alarm.val() {
-                    if self.g_data.val() & !self.nib.val().get_bit(3) {
-                        self.act_now.next = 4.into();
+                self.act_c.next = 3.into();
+                if self.i_actuator.val() & !self.i_master.val() & !self.send_c.val() {
+                    if self.dec_data.val() & !self.dec_nib.val().get_bit(3) {
+                        self.act_c.next = 4.into();
                     }
-                    if !self.g_data.val() & !self.g_s.val() {
-                        self.act_now.next = 0.into();
+                    if !self.dec_data.val() & !self.dec_s.val() {
+                        self.act_c.next = 0.into();
                     }
                 }
-                if self.i_master.val() & self.i_slot_cfg.val().get_bit(1) & !self.send_alarm.val() {
-                    self.act_now.next = 0.into();
-                    if self.g_data.val() & !self.nib.val().get_bit(3) {
-                        self.act_now.next = 5.into();
+                if self.i_master.val() & self.i_slot_cfg.val().get_bit(1) & !self.send_c.val() {
+                    self.act_c.next = 0.into();
+                    if self.dec_data.val() & !self.dec_nib.val().get_bit(3) {
+                        self.act_c.next = 5.into();
                     }
-                    if self.g_s.val() {
-                        self.act_now.next = 3.into();
+                    if self.dec_s.val() {
+                        self.act_c.next = 3.into();
                     }
                 }
             }
         }
-        // The fresh word (own slot): decided at its first group.
+        self.act_now.next = self.g_act.q.val();
+        // The fresh word (own slot) and its parities (protocol §4): the f_*
+        // registers follow it between words and hold it from the word's
+        // first group to its last (stage B reads registers, issue 20).
+        self.fresh_alive.next = self.toggle.q.val();
+        self.fresh_data.next = self.i_sensor_data.val();
+        if self.i_actuator.val() {
+            self.fresh_data.next = self.i_act_out.val();
+        }
+        if self.i_master.val() {
+            self.fresh_data.next = self.i_slot_data.val();
+            if self.i_slot_cfg.val().get_bit(1) {
+                self.fresh_alive.next = !self.i_slot_alive.val();
+            }
+        }
+        if self.send_c.val() {
+            self.fresh_data.next = 0.into();
+            if self.i_alarm_reason.val().get_bit(0) {
+                self.fresh_data.next = self.fresh_data.val() | 0x1000;
+            }
+            if self.i_alarm_reason.val().get_bit(1) {
+                self.fresh_data.next = self.fresh_data.val() | 0x2000;
+            }
+            if self.i_alarm_reason.val().get_bit(2) {
+                self.fresh_data.next = self.fresh_data.val() | 0x4000;
+            }
+            if self.i_alarm_reason.val().get_bit(3) {
+                self.fresh_data.next = self.fresh_data.val() | 0x8000;
+            }
+        }
+        if (self.gidx.q.val() == 0) & !self.g_pend.q.val() {
+            self.f_data.d.next = self.fresh_data.val();
+            self.f_alive.d.next = self.fresh_alive.val();
+            self.f_alarm.d.next = self.send_c.val();
+            self.f_reason.d.next = self.i_alarm_reason.val();
+            self.f_pa.d.next = !(self.send_c.val()
+                ^ self.fresh_alive.val()
+                ^ self.fresh_data.val().get_bit(5)
+                ^ self.fresh_data.val().get_bit(4)
+                ^ self.fresh_data.val().get_bit(9)
+                ^ self.fresh_data.val().get_bit(8)
+                ^ self.fresh_data.val().get_bit(13)
+                ^ self.fresh_data.val().get_bit(12)
+                ^ self.fresh_data.val().get_bit(15));
+            self.f_pb.d.next = !(self.fresh_alive.val()
+                ^ self.fresh_data.val().get_bit(1)
+                ^ self.fresh_data.val().get_bit(0)
+                ^ self.fresh_data.val().get_bit(4)
+                ^ self.fresh_data.val().get_bit(3)
+                ^ self.fresh_data.val().get_bit(2)
+                ^ self.fresh_data.val().get_bit(8)
+                ^ self.fresh_data.val().get_bit(7)
+                ^ self.fresh_data.val().get_bit(6)
+                ^ self.fresh_data.val().get_bit(12)
+                ^ self.fresh_data.val().get_bit(11)
+                ^ self.fresh_data.val().get_bit(10)
+                ^ self.fresh_data.val().get_bit(15)
+                ^ self.fresh_data.val().get_bit(14));
+        }
         self.n_data.next = self.f_data.q.val();
         self.n_alive.next = self.f_alive.q.val();
         self.n_alarm.next = self.f_alarm.q.val();
-        if self.gidx.q.val() == 0 {
-            self.n_alive.next = self.toggle.q.val();
-            self.n_alarm.next = self.send_alarm.val();
-            self.n_data.next = self.i_sensor_data.val();
-            if self.i_actuator.val() {
-                self.n_data.next = self.i_act_out.val();
-            }
-            if self.i_master.val() {
-                self.n_data.next = self.i_slot_data.val();
-                if self.i_slot_cfg.val().get_bit(1) {
-                    self.n_alive.next = !self.i_slot_alive.val();
-                }
-            }
-            if self.send_alarm.val() {
-                self.n_data.next = 0.into();
-                if self.i_alarm_reason.val().get_bit(0) {
-                    self.n_data.next = self.n_data.val() | 0x1000;
-                }
-                if self.i_alarm_reason.val().get_bit(1) {
-                    self.n_data.next = self.n_data.val() | 0x2000;
-                }
-                if self.i_alarm_reason.val().get_bit(2) {
-                    self.n_data.next = self.n_data.val() | 0x4000;
-                }
-                if self.i_alarm_reason.val().get_bit(3) {
-                    self.n_data.next = self.n_data.val() | 0x8000;
-                }
+        self.p_a.next = self.f_pa.q.val();
+        self.p_b.next = self.f_pb.q.val();
+
+        self.pa_fix.next = false;
+        self.pb_fix.next = false;
+        self.inc2.next = self.nib.val() ^ 1;
+        if self.nib.val().get_bit(0) {
+            self.inc2.next = self.nib.val() ^ 3;
+        }
+        self.inc4.next = self.inc2.val();
+        if self.nib.val().get_bits::<2>(0) == 3 {
+            self.inc4.next = self.nib.val() ^ 7;
+            if self.nib.val().get_bit(2) {
+                self.inc4.next = self.nib.val() ^ 15;
             }
         }
-        // Parities of the fresh word (protocol §4).
-        self.p_a.next = !(self.n_alarm.val()
-            ^ self.n_alive.val()
-            ^ self.n_data.val().get_bit(5)
-            ^ self.n_data.val().get_bit(4)
-            ^ self.n_data.val().get_bit(9)
-            ^ self.n_data.val().get_bit(8)
-            ^ self.n_data.val().get_bit(13)
-            ^ self.n_data.val().get_bit(12)
-            ^ self.n_data.val().get_bit(15));
-        self.p_b.next = !(self.n_alive.val()
-            ^ self.n_data.val().get_bit(1)
-            ^ self.n_data.val().get_bit(0)
-            ^ self.n_data.val().get_bit(4)
-            ^ self.n_data.val().get_bit(3)
-            ^ self.n_data.val().get_bit(2)
-            ^ self.n_data.val().get_bit(8)
-            ^ self.n_data.val().get_bit(7)
-            ^ self.n_data.val().get_bit(6)
-            ^ self.n_data.val().get_bit(12)
-            ^ self.n_data.val().get_bit(11)
-            ^ self.n_data.val().get_bit(10)
-            ^ self.n_data.val().get_bit(15)
-            ^ self.n_data.val().get_bit(14));
-
-        self.pre_b2.next = false;
-        self.pre_b1.next = false;
         // The outgoing nibble, and whether the group is re-encoded.
         self.nib_out.next = self.nib.val();
         self.recode.next = false;
@@ -556,30 +693,26 @@ impl Logic for Fwd {
             if (self.act_now.val() == 1) & (self.gidx.q.val() == 3) {
                 // FS: a node in failsafe sets it, but not in a CLR header
                 // (whose FS, arriving 0, says the node leaves failsafe).
-                if self.i_fs.val() & !self.clr_h0.q.val() {
+                if self.fs_r.q.val() & !self.clr_h0.q.val() {
                     self.nib_out.next = self.nib_out.val() | 8;
                 }
-                if self.i_wrapped.val() {
+                if self.wr_r.q.val() {
                     self.nib_out.next = self.nib_out.val() | 4;
                 }
             }
+            // HOP + 1 (without adders, issue 20): the first nibble's two HOP
+            // bits wrap into the last one's (carry), the others are whole.
             if (self.act_now.val() == 2) & (self.gidx.q.val() == 0) {
-                self.nib_out.next = self.nib.val() + 1;
-                if self.nib.val().get_bits::<2>(0) == 3 {
-                    self.nib_out.next = self.nib.val() & 12;
-                }
+                self.nib_out.next = self.inc2.val();
             }
             if (self.act_now.val() == 2)
                 & ((self.gidx.q.val() == 1) | (self.gidx.q.val() == 2))
                 & self.carry.q.val()
             {
-                self.nib_out.next = self.nib.val() + 1;
+                self.nib_out.next = self.inc4.val();
             }
             if (self.act_now.val() == 2) & (self.gidx.q.val() == 3) & self.carry.q.val() {
-                self.nib_out.next = self.nib.val() + 1;
-                if self.nib.val().get_bits::<2>(0) == 3 {
-                    self.nib_out.next = self.nib.val() & 12;
-                }
+                self.nib_out.next = self.inc2.val();
             }
             if (self.act_now.val() == 4) & (self.gidx.q.val() == 0) {
                 self.nib_out.next = self.nib.val() & 11;
@@ -602,25 +735,35 @@ impl Logic for Fwd {
                 if self.gidx.q.val() == 3 {
                     self.nib_out.next = self.n_data.val().get_bits::<4>(10);
                 }
-                if self.gidx.q.val() == 4 {
+            }
+            // Delta parity in the last group: the changes of groups 0..3
+            // (d_a, d_b) and, in an ACT slot, of this group's data bits
+            // (D15, D14); the other actions leave the last group's data
+            // bits as they came.
+            if self.gidx.q.val() == 4 {
+                self.pa_fix.next = self.d_a.q.val();
+                self.pb_fix.next = self.d_b.q.val();
+                if self.act_now.val() == 5 {
                     self.nib_out.next =
                         (self.nib.val() & 9) | ((self.n_data.val().get_bits::<4>(12) >> 1) & 6);
+                    self.pa_fix.next = self.d_a.q.val()
+                        ^ self.nib.val().get_bit(2)
+                        ^ self.n_data.val().get_bit(15);
+                    self.pb_fix.next = self.d_b.q.val()
+                        ^ self.nib.val().get_bit(2)
+                        ^ self.n_data.val().get_bit(15)
+                        ^ self.nib.val().get_bit(1)
+                        ^ self.n_data.val().get_bit(14);
                 }
-            }
-            // Delta parity: the changes of groups 0..3 and of this group's
-            // data bits (D15, D14).
-            self.pre_b2.next = self.nib.val().get_bit(2) ^ self.nib_out.val().get_bit(2);
-            self.pre_b1.next = self.nib.val().get_bit(1) ^ self.nib_out.val().get_bit(1);
-            if self.gidx.q.val() == 4 {
-                if self.d_a.q.val() ^ self.pre_b2.val() {
+                if self.pa_fix.val() {
                     self.nib_out.next = self.nib_out.val() ^ 8;
                 }
-                if self.d_b.q.val() ^ self.pre_b2.val() ^ self.pre_b1.val() {
+                if self.pb_fix.val() {
                     self.nib_out.next = self.nib_out.val() ^ 1;
                 }
             }
         }
-        self.diff.next = self.nib.val() ^ self.nib_out.val();
+        self.diff.next = self.c_orig.q.val() ^ self.c_nib.q.val();
         // The word that completes with this group arrived bad (not five
         // data groups with both parities odd, not a VOID): its last group
         // leaves as the mark T (protocol §4), unless the node wrote a fresh
@@ -636,158 +779,93 @@ impl Logic for Fwd {
             & !(self.in_s.q.val() & self.g_s.val());
         // 4B/5B encode, written out (see the decoder above).
         self.code_out.next = 0b11110.into();
-        if self.nib_out.val() == 1 {
+        if self.c_nib.q.val() == 1 {
             self.code_out.next = 0b01001.into();
         }
-        if self.nib_out.val() == 2 {
+        if self.c_nib.q.val() == 2 {
             self.code_out.next = 0b10100.into();
         }
-        if self.nib_out.val() == 3 {
+        if self.c_nib.q.val() == 3 {
             self.code_out.next = 0b10101.into();
         }
-        if self.nib_out.val() == 4 {
+        if self.c_nib.q.val() == 4 {
             self.code_out.next = 0b01010.into();
         }
-        if self.nib_out.val() == 5 {
+        if self.c_nib.q.val() == 5 {
             self.code_out.next = 0b01011.into();
         }
-        if self.nib_out.val() == 6 {
+        if self.c_nib.q.val() == 6 {
             self.code_out.next = 0b01110.into();
         }
-        if self.nib_out.val() == 7 {
+        if self.c_nib.q.val() == 7 {
             self.code_out.next = 0b01111.into();
         }
-        if self.nib_out.val() == 8 {
+        if self.c_nib.q.val() == 8 {
             self.code_out.next = 0b10010.into();
         }
-        if self.nib_out.val() == 9 {
+        if self.c_nib.q.val() == 9 {
             self.code_out.next = 0b10011.into();
         }
-        if self.nib_out.val() == 10 {
+        if self.c_nib.q.val() == 10 {
             self.code_out.next = 0b10110.into();
         }
-        if self.nib_out.val() == 11 {
+        if self.c_nib.q.val() == 11 {
             self.code_out.next = 0b10111.into();
         }
-        if self.nib_out.val() == 12 {
+        if self.c_nib.q.val() == 12 {
             self.code_out.next = 0b11010.into();
         }
-        if self.nib_out.val() == 13 {
+        if self.c_nib.q.val() == 13 {
             self.code_out.next = 0b11011.into();
         }
-        if self.nib_out.val() == 14 {
+        if self.c_nib.q.val() == 14 {
             self.code_out.next = 0b11100.into();
         }
-        if self.nib_out.val() == 15 {
+        if self.c_nib.q.val() == 15 {
             self.code_out.next = 0b11101.into();
         }
 
-        // Shift the bit through the one-group delay line.
-        self.out_bit.next = self.delay.q.val().get_bit(4);
+        // The delay line: one group and one bit. A group's code bits are
+        // in bits 4:0 once its last bit has arrived (stage A); stage C, two
+        // clocks later, writes the rewritten group over them (where the bit
+        // of stage B's clock, if one came, has moved them), and when a bit
+        // arrives in that clock too, the rewritten first bit goes out
+        // directly (a group's first bit leaves at the second bit after it).
+        self.out_bit.next = self.delay.q.val().get_bit(5);
+        self.in_code.next = self.code.val() | self.i_mute.val();
         self.sent.d.next = false;
         self.done.d.next = false;
         self.cut.next = false;
         self.regen.d.next = false;
+        self.g_pend.d.next = false;
+        // Stage A: the recovered bit.
         if self.i_bvalid.val() {
             self.prev.d.next = self.i_level.val();
             self.window.d.next = self.shifted.val();
             self.delay.d.next = self.delay.q.val() << 1;
-            if self.code.val() | self.i_mute.val() {
+            if self.in_code.val() {
                 self.delay.d.next = (self.delay.q.val() << 1) | 1;
             }
             if self.inpkt.q.val() {
-                if (self.bitc.q.val() == 4) & (self.group.val() == 31) & (self.idles.q.val() == 2) {
-                    // The third idle group in a row: the packet was cut
-                    // short upstream (as rx_word); pass the rest unchanged.
-                    self.cut.next = true;
-                } else if self.bitc.q.val() == 4 {
-                    // A group is complete.
+                if self.bitc.q.val() == 4 {
+                    // A group is complete: stage B takes it next clock,
+                    // unless it is the third idle group in a row: then the
+                    // packet was cut short upstream (as rx_word), and the
+                    // rest passes unchanged.
                     self.bitc.d.next = 0.into();
                     self.idles.d.next = 0.into();
                     if self.group.val() == 31 {
                         self.idles.d.next = self.idles.q.val() + 1;
                     }
-                    if self.recode.val() {
-                        self.delay.d.next = self.code_out.val();
+                    self.g_pend.d.next = true;
+                    self.g_cut.d.next = (self.group.val() == 31) & (self.idles.q.val() == 2);
+                    if (self.group.val() == 31) & (self.idles.q.val() == 2) {
+                        self.cut.next = true;
                     }
-                    if (self.gidx.q.val() == 4)
-                        & self.arrived_bad.val()
-                        & !self.dead.q.val()
-                        & (self.action.q.val() != 3)
-                    {
-                        // T (merkur_model::line::CODE_T).
-                        self.delay.d.next = 0b01101.into();
-                    }
-                    // The incoming word so far.
-                    self.in_pa.d.next =
-                        self.in_pa.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
-                    self.in_pb.d.next = self.in_pb.q.val()
-                        ^ self.nib.val().get_bit(2)
-                        ^ self.nib.val().get_bit(1)
-                        ^ self.nib.val().get_bit(0);
-                    self.in_data.d.next = self.in_data.q.val() & self.g_data.val();
-                    self.in_s.d.next = self.in_s.q.val() & self.g_s.val();
-                    if self.gidx.q.val() == 0 {
-                        self.in_pa.d.next = self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
-                        self.in_pb.d.next = self.nib.val().get_bit(2)
-                            ^ self.nib.val().get_bit(1)
-                            ^ self.nib.val().get_bit(0);
-                        self.in_data.d.next = self.g_data.val();
-                        self.in_s.d.next = self.g_s.val();
-                        if self.wcount.q.val() == 0 {
-                            self.clr_h0.d.next = self.nib.val().get_bit(2);
-                        }
-                    }
-                    if self.gidx.q.val() == 0 {
-                        self.action.d.next = self.act_now.val();
-                        self.d_a.d.next = false;
-                        self.d_b.d.next = false;
-                        self.carry.d.next = false;
-                        self.f_data.d.next = self.n_data.val();
-                        self.f_alive.d.next = self.n_alive.val();
-                        self.f_alarm.d.next = self.n_alarm.val();
-                        self.regen.d.next = self.own.val()
-                            & self.i_master.val()
-                            & self.i_slot_cfg.val().get_bit(1)
-                            & (self.act_now.val() == 3);
-                        if self.home.val() {
-                            self.prev_alarm.d.next = self.send_alarm.val();
-                            self.sent.d.next = self.send_alarm.val();
-                            self.sent_reason.d.next = self.i_alarm_reason.val();
-                        }
-                    }
-                    self.d_a.d.next =
-                        self.d_a.q.val() ^ self.diff.val().get_bit(3) ^ self.diff.val().get_bit(2);
-                    self.d_b.d.next = self.d_b.q.val()
-                        ^ self.diff.val().get_bit(2)
-                        ^ self.diff.val().get_bit(1)
-                        ^ self.diff.val().get_bit(0);
-                    if self.gidx.q.val() == 0 {
-                        self.d_a.d.next = self.diff.val().get_bit(3) ^ self.diff.val().get_bit(2);
-                        self.d_b.d.next = self.diff.val().get_bit(2)
-                            ^ self.diff.val().get_bit(1)
-                            ^ self.diff.val().get_bit(0);
-                        self.carry.d.next = self.nib.val().get_bits::<2>(0) == 3;
-                    } else {
-                        self.carry.d.next = self.carry.q.val() & (self.nib.val() == 15);
-                    }
-                    self.gidx.d.next = self.gidx.q.val() + 1;
-                    if self.gidx.q.val() == 4 {
-                        // A word is complete.
-                        self.gidx.d.next = 0.into();
-                        if self.wcount.q.val() == 2 {
-                            self.slot.d.next = self.slot.q.val() + 1;
-                            if self.slot.q.val() == self.i_slots_m1.val() {
-                                self.inpkt.d.next = false;
-                                if !self.dead.q.val() {
-                                    self.done.d.next = true;
-                                    self.toggle.d.next = !self.toggle.q.val();
-                                }
-                            }
-                        } else {
-                            self.wcount.d.next = self.wcount.q.val() + 1;
-                        }
-                    }
+                    self.g_nib.d.next = self.dec_nib.val();
+                    self.g_dat.d.next = self.dec_data.val();
+                    self.g_sym_s.d.next = self.dec_s.val();
+                    self.g_act.d.next = self.act_c.val();
                 } else {
                     self.bitc.d.next = self.bitc.q.val() + 1;
                 }
@@ -799,6 +877,123 @@ impl Logic for Fwd {
                 self.slot.d.next = 0.into();
                 self.dead.d.next = false;
                 self.idles.d.next = 0.into();
+            }
+        }
+        // Stage B: the group completed in the clock before (groups complete
+        // at least 5 clocks apart, so stage B never meets stage A's next
+        // group, a cut or a J K; a bit may arrive in the same clock).
+        self.c_pend.d.next = false;
+        if self.g_pend.q.val() & !self.g_cut.q.val() {
+            // To stage C: the group as it leaves, and what it came as.
+            self.c_pend.d.next = true;
+            self.c_nib.d.next = self.nib_out.val();
+            self.c_orig.d.next = self.nib.val();
+            self.c_write.d.next = self.recode.val();
+            self.c_first.d.next = self.gidx.q.val() == 0;
+            self.c_shift.d.next = self.i_bvalid.val();
+            // The mark: T (merkur_model::line::CODE_T) in the last group.
+            self.c_mark.d.next = (self.gidx.q.val() == 4)
+                & self.arrived_bad.val()
+                & !self.dead.q.val()
+                & (self.action.q.val() != 3);
+            // The incoming word so far.
+            self.in_pa.d.next =
+                self.in_pa.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
+            self.in_pb.d.next = self.in_pb.q.val()
+                ^ self.nib.val().get_bit(2)
+                ^ self.nib.val().get_bit(1)
+                ^ self.nib.val().get_bit(0);
+            self.in_data.d.next = self.in_data.q.val() & self.g_data.val();
+            self.in_s.d.next = self.in_s.q.val() & self.g_s.val();
+            if self.gidx.q.val() == 0 {
+                self.in_pa.d.next = self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
+                self.in_pb.d.next = self.nib.val().get_bit(2)
+                    ^ self.nib.val().get_bit(1)
+                    ^ self.nib.val().get_bit(0);
+                self.in_data.d.next = self.g_data.val();
+                self.in_s.d.next = self.g_s.val();
+                if self.wcount.q.val() == 0 {
+                    self.clr_h0.d.next = self.nib.val().get_bit(2);
+                }
+            }
+            if self.gidx.q.val() == 0 {
+                self.action.d.next = self.act_now.val();
+                self.carry.d.next = false;
+                self.regen.d.next = self.own.val()
+                    & self.i_master.val()
+                    & self.i_slot_cfg.val().get_bit(1)
+                    & (self.act_now.val() == 3);
+                if self.home.val() {
+                    self.prev_alarm.d.next = self.send_alarm.val();
+                    self.sent.d.next = self.send_alarm.val();
+                    self.sent_reason.d.next = self.f_reason.q.val();
+                }
+            }
+            if self.gidx.q.val() == 0 {
+                self.carry.d.next = self.nib.val().get_bits::<2>(0) == 3;
+            } else {
+                self.carry.d.next = self.carry.q.val() & (self.nib.val() == 15);
+            }
+            self.gidx.d.next = self.gidx.q.val() + 1;
+            if self.gidx.q.val() == 4 {
+                // A word is complete.
+                self.gidx.d.next = 0.into();
+                if self.wcount.q.val() == 2 {
+                    self.slot.d.next = self.slot.q.val() + 1;
+                    if self.slot.q.val() == self.i_slots_m1.val() {
+                        self.inpkt.d.next = false;
+                        if !self.dead.q.val() {
+                            self.done.d.next = true;
+                            self.toggle.d.next = !self.toggle.q.val();
+                        }
+                    }
+                } else {
+                    self.wcount.d.next = self.wcount.q.val() + 1;
+                }
+            }
+        }
+        // Stage C, the clock after stage B: the group is encoded and
+        // written over its code bits in the delay line, which the bits of
+        // the two clocks since (`c_shift`, `i_bvalid`) have moved on; and
+        // the changes made (delta parity, protocol §4) are summed for the
+        // word's last group.
+        self.code_w.next = self.code_out.val();
+        if self.c_mark.q.val() {
+            self.code_w.next = 0b01101.into();
+        }
+        self.code_w6.next = bit_cast::<6, 5>(self.code_w.val()) | 0;
+        if self.c_pend.q.val() & (self.c_write.q.val() | self.c_mark.q.val()) {
+            if self.c_shift.q.val() {
+                // The group is in bits 5:1, the bit since in bit 0; a bit
+                // arriving now sends the group's first bit, rewritten.
+                self.delay.d.next = (self.delay.q.val() & 1) | (self.code_w6.val() << 1);
+                self.out_bit.next = self.code_w.val().get_bit(4);
+                if self.i_bvalid.val() {
+                    self.delay.d.next = (self.code_w6.val() << 2)
+                        | ((self.delay.q.val() & 1) << 1)
+                        | (bit_cast::<6, 1>(self.in_code.val().into()) | 0);
+                }
+            } else {
+                // The group is in bits 4:0.
+                self.delay.d.next = (self.delay.q.val() & 32) | self.code_w6.val();
+                if self.i_bvalid.val() {
+                    self.delay.d.next = (self.code_w6.val() << 1)
+                        | (bit_cast::<6, 1>(self.in_code.val().into()) | 0);
+                }
+            }
+        }
+        if self.c_pend.q.val() {
+            self.d_a.d.next =
+                self.d_a.q.val() ^ self.diff.val().get_bit(3) ^ self.diff.val().get_bit(2);
+            self.d_b.d.next = self.d_b.q.val()
+                ^ self.diff.val().get_bit(2)
+                ^ self.diff.val().get_bit(1)
+                ^ self.diff.val().get_bit(0);
+            if self.c_first.q.val() {
+                self.d_a.d.next = self.diff.val().get_bit(3) ^ self.diff.val().get_bit(2);
+                self.d_b.d.next = self.diff.val().get_bit(2)
+                    ^ self.diff.val().get_bit(1)
+                    ^ self.diff.val().get_bit(0);
             }
         }
         // Out on the node's own timing.
@@ -816,7 +1011,7 @@ impl Logic for Fwd {
             self.quiet.d.next = self.quiet.q.val() + 1;
         }
         if self.quiet.q.val() == self.dead_after.val() {
-            self.delay.d.next = 31.into();
+            self.delay.d.next = 63.into();
             self.cut.next = true;
         }
         // A packet cut short ends here; a frame whose header was processed

@@ -31,8 +31,8 @@
 //! | `o_perr`, `o_ferr`, `o_aerr` | out | 16 | clock | error counters |
 //! | `o_running` | out | 1 | clock | the host started the ring |
 //!
-//! Latency: as [`Slave`] (INPUT to OUTPUT 8–9.5 bit times); a received word
-//! is in the data memory ≈ 3.5 bit times after its last line bit.
+//! Latency: as [`Slave`] (INPUT to OUTPUT 9.5–10.5 bit times); a received
+//! word is in the data memory ≈ 4 bit times after its last line bit.
 //!
 //! ```text
 //! PI/SI ─ switchbox ─ port_rx ─ fwd (master mode) ─ switchbox ─ PO/SO

@@ -211,7 +211,10 @@ pub struct Mdb {
     hstate: DFF<Bits<3>>,
     ack: DFF<Bit>,
     rdat: DFF<Bits<16>>,
-    perm: DFF<Bit>,
+    // The slot's configuration read for a host write (LOCAL or ACT may
+    // be written), checked the clock after the read.
+    perm: DFF<Bits<4>>,
+    aerr_inc: DFF<Bit>,
     stat: Signal<Local, Bits<16>>,
     irq_word: Signal<Local, Bits<16>>,
     s2_cfg: Signal<Local, Bits<4>>,
@@ -258,6 +261,7 @@ impl Logic for Mdb {
             ack,
             rdat,
             perm,
+            aerr_inc,
             cur_cyc,
             fs_frame,
             unread,
@@ -306,6 +310,12 @@ impl Logic for Mdb {
         self.s2_ast.next = self.ast.read_data.val();
         self.irq1.d.next = false;
         self.irq2.d.next = false;
+        // An Alive-check failure counts a clock after it is found (issue
+        // 20: the block RAM read and the 16-bit count are a clock apart).
+        self.aerr_inc.d.next = false;
+        if self.aerr_inc.q.val() & (self.aerr.q.val() != 0xffff) {
+            self.aerr.d.next = self.aerr.q.val() + 1;
+        }
         self.irq_fs.d.next = false;
         // Failsafe entered or left: one clock.
         self.fs_was.d.next = self.i_fs.val();
@@ -402,9 +412,7 @@ impl Logic for Mdb {
                     if self.ast_valid.val() {
                         if self.s2_ast.val().get_bit(1) == self.s2_alive.q.val() {
                             self.new_ast.next = self.new_ast.val() | 4;
-                            if self.aerr.q.val() != 0xffff {
-                                self.aerr.d.next = self.aerr.q.val() + 1;
-                            }
+                            self.aerr_inc.d.next = true;
                         } else {
                             self.new_ast.next = self.new_ast.val() & 3;
                         }
@@ -535,11 +543,11 @@ impl Logic for Mdb {
             self.hstate.d.next = 7.into();
         } else if self.hstate.q.val() == 3 {
             // The slot's configuration: LOCAL or ACT may be written.
-            self.perm.d.next = (self.cfg_rx.read_data.val() & 10) != 0;
+            self.perm.d.next = self.cfg_rx.read_data.val();
             self.hstate.d.next = 4.into();
         } else if self.hstate.q.val() == 4 {
             // Write when the receive side does not.
-            if !self.perm.q.val() {
+            if (self.perm.q.val() & 10) == 0 {
                 self.err_wr.d.next = true;
                 self.ack.d.next = true;
                 self.hstate.d.next = 7.into();

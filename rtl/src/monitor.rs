@@ -31,8 +31,8 @@
 //! confirm it either.
 //!
 //! Latency from a word's last line bit to `o_wvalid`: CDR 2–3 clocks +
-//! framer 1 + word 1 ≈ 2.5 bit times, plus up to 2 bit times until the
-//! confirming edge.
+//! framer 1 + word 1 + the registered outputs 1 ≈ 3 bit times, plus up to
+//! 2 bit times until the confirming edge.
 //!
 //! ```text
 //! line      ~~~| J K | H0 | H1 | slot 0 | ... | slot S-1 |~~~ idle
@@ -102,6 +102,8 @@ pub struct Monitor {
     word: RxWord,
     last_lvl: DFF<Bit>,
     quiet: DFF<Bits<3>>,
+    // A confirmed word is on the outputs (they show the p_* registers).
+    emit: DFF<Bit>,
     p_valid: DFF<Bit>,
     p_kind: DFF<Bits<2>>,
     p_slot: DFF<Bits<12>>,
@@ -155,6 +157,7 @@ impl Monitor {
             word: RxWord::new(ext),
             last_lvl: Default::default(),
             quiet: Default::default(),
+            emit: Default::default(),
             p_valid: Default::default(),
             p_kind: Default::default(),
             p_slot: Default::default(),
@@ -177,7 +180,7 @@ impl Logic for Monitor {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, last_lvl, quiet, p_valid, p_kind, p_slot, p_data, p_alive, p_alarm,
+            self, clock, last_lvl, quiet, emit, p_valid, p_kind, p_slot, p_data, p_alive, p_alarm,
             p_reason, p_ok, p_void, p_marked, p_own, p_ptype
         );
         self.cdr.clock.next = self.clock.val();
@@ -214,9 +217,11 @@ impl Logic for Monitor {
         } else if self.quiet.q.val() != 7 {
             self.quiet.d.next = self.quiet.q.val() + 1;
         }
-        // The word on the outputs: the held one, or the new one when the
-        // edge comes in its own clock.
-        self.o_wvalid.next = false;
+        // The word on the outputs: the held one, the clock after its
+        // confirming edge (registered outputs: the receive chain and what
+        // a node decides on a word are a clock apart, issue 20).
+        self.emit.d.next = false;
+        self.o_wvalid.next = self.emit.q.val();
         self.o_kind.next = self.p_kind.q.val();
         self.o_slot.next = self.p_slot.q.val();
         self.o_data.next = self.p_data.q.val();
@@ -229,7 +234,7 @@ impl Logic for Monitor {
         self.o_own.next = self.p_own.q.val();
         self.o_ptype.next = self.p_ptype.q.val();
         if self.p_valid.q.val() & self.conf_edge.val() {
-            self.o_wvalid.next = true;
+            self.emit.d.next = true;
             self.p_valid.d.next = false;
         }
         if self.p_valid.q.val()
@@ -239,6 +244,7 @@ impl Logic for Monitor {
         }
         if self.word.o_wvalid.val() {
             self.p_valid.d.next = !self.conf_edge.val();
+            self.emit.d.next = self.conf_edge.val();
             self.p_kind.d.next = self.word.o_kind.val();
             self.p_slot.d.next = self.word.o_slot.val();
             self.p_data.d.next = self.word.o_data.val();
@@ -250,20 +256,6 @@ impl Logic for Monitor {
             self.p_marked.d.next = self.word.o_marked.val();
             self.p_own.d.next = self.word.o_own.val();
             self.p_ptype.d.next = self.word.o_ptype.val();
-            if self.conf_edge.val() {
-                self.o_wvalid.next = true;
-                self.o_kind.next = self.word.o_kind.val();
-                self.o_slot.next = self.word.o_slot.val();
-                self.o_data.next = self.word.o_data.val();
-                self.o_alive.next = self.word.o_alive.val();
-                self.o_alarm.next = self.word.o_alarm.val();
-                self.o_reason.next = self.word.o_reason.val();
-                self.o_ok.next = self.word.o_ok.val();
-                self.o_void.next = self.word.o_void.val();
-                self.o_marked.next = self.word.o_marked.val();
-                self.o_own.next = self.word.o_own.val();
-                self.o_ptype.next = self.word.o_ptype.val();
-            }
         }
     }
 }

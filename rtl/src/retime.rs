@@ -86,6 +86,10 @@ pub const GAP: u64 = 8;
 /// Bits the buffer holds.
 pub const DEPTH: u64 = 8;
 
+// The phase decision (`late`, `early` in `update`) is written out for a
+// band of 16 … 24 samples and 8 samples per buffered bit.
+const _: () = assert!(TARGET + BAND == 24 && TARGET - BAND == 16);
+
 /// Elastic output buffer with its own bit timing.
 #[derive(LogicBlock)]
 pub struct Retime {
@@ -102,8 +106,6 @@ pub struct Retime {
     /// The buffer under- or overflowed.
     pub o_slip: Signal<Out, Bit>,
     quiet_bits: Constant<Bits<5>>,
-    hi_limit: Constant<Bits<8>>,
-    lo_limit: Constant<Bits<8>>,
     votes: Constant<Bits<3>>,
     gap_min: Constant<Bits<4>>,
     depth: Constant<Bits<4>>,
@@ -124,11 +126,25 @@ pub struct Retime {
     take: Signal<Local, Bit>,
     under: Signal<Local, Bit>,
     oldest: Signal<Local, Bit>,
+    sr_shift: Signal<Local, Bits<8>>,
+    wpos: Signal<Local, Bits<3>>,
+    wmask: Signal<Local, Bits<8>>,
+    one: Constant<Bits<8>>,
     new_lvl: Signal<Local, Bit>,
     len: Signal<Local, Bits<3>>,
     cnt_next: Signal<Local, Bits<4>>,
     rem_next: Signal<Local, Bits<3>>,
-    lag: Signal<Local, Bits<8>>,
+    t_neg: Signal<Local, Bit>,
+    t_pos: Signal<Local, Bit>,
+    t_lt8: Signal<Local, Bit>,
+    t_gt8: Signal<Local, Bit>,
+    c_is0: Signal<Local, Bit>,
+    c_is1: Signal<Local, Bit>,
+    c_is2: Signal<Local, Bit>,
+    c_is3: Signal<Local, Bit>,
+    c_ge4: Signal<Local, Bit>,
+    late: Signal<Local, Bit>,
+    early: Signal<Local, Bit>,
 }
 
 impl Default for Retime {
@@ -141,8 +157,6 @@ impl Default for Retime {
             o_line: Default::default(),
             o_slip: Default::default(),
             quiet_bits: Constant::new((QUIET_BITS - 2).to_bits()),
-            hi_limit: Constant::new((TARGET + BAND).to_bits()),
-            lo_limit: Constant::new((TARGET - BAND).to_bits()),
             votes: Constant::new(VOTES.to_bits()),
             gap_min: Constant::new(GAP.to_bits()),
             depth: Constant::new(DEPTH.to_bits()),
@@ -163,11 +177,25 @@ impl Default for Retime {
             take: Default::default(),
             under: Default::default(),
             oldest: Default::default(),
+            sr_shift: Default::default(),
+            wpos: Default::default(),
+            wmask: Default::default(),
+            one: Constant::new(1.into()),
             new_lvl: Default::default(),
             len: Default::default(),
             cnt_next: Default::default(),
             rem_next: Default::default(),
-            lag: Default::default(),
+            t_neg: Default::default(),
+            t_pos: Default::default(),
+            t_lt8: Default::default(),
+            t_gt8: Default::default(),
+            c_is0: Default::default(),
+            c_is1: Default::default(),
+            c_is2: Default::default(),
+            c_is3: Default::default(),
+            c_ge4: Default::default(),
+            late: Default::default(),
+            early: Default::default(),
         }
     }
 }
@@ -182,29 +210,10 @@ impl Logic for Retime {
         self.send1.next = self.rem.q.val() == 1;
         self.take.next =
             (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() != 0);
-        // The oldest buffered bit: written cnt − 1 writes ago.
+        // The buffer is a FIFO with the oldest bit in bit 0 (a send shifts
+        // it out, a write goes in behind the unsent bits): the bit to send
+        // is one flip-flop, not a mux by the count (issue 20).
         self.oldest.next = self.sr.q.val().get_bit(0);
-        if self.cnt.q.val() == 2 {
-            self.oldest.next = self.sr.q.val().get_bit(1);
-        }
-        if self.cnt.q.val() == 3 {
-            self.oldest.next = self.sr.q.val().get_bit(2);
-        }
-        if self.cnt.q.val() == 4 {
-            self.oldest.next = self.sr.q.val().get_bit(3);
-        }
-        if self.cnt.q.val() == 5 {
-            self.oldest.next = self.sr.q.val().get_bit(4);
-        }
-        if self.cnt.q.val() == 6 {
-            self.oldest.next = self.sr.q.val().get_bit(5);
-        }
-        if self.cnt.q.val() == 7 {
-            self.oldest.next = self.sr.q.val().get_bit(6);
-        }
-        if self.cnt.q.val() == 8 {
-            self.oldest.next = self.sr.q.val().get_bit(7);
-        }
         // Underflow: a bit boundary while running with nothing buffered.
         self.under.next =
             (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0);
@@ -264,7 +273,12 @@ impl Logic for Retime {
                 self.len.next = 5.into();
             }
         }
-        self.rem_next.next = self.rem.q.val() - 2;
+        // (rem − 2, len − 2 and len − 1 written without subtractors: this
+        // is on the core clock's critical path, issue 20.)
+        self.rem_next.next = self.rem.q.val() ^ 2;
+        if !self.rem.q.val().get_bit(1) {
+            self.rem_next.next = self.rem.q.val() ^ 6;
+        }
         if self.send0.val() | self.send1.val() {
             if self.gap.q.val() != 15 {
                 self.gap.d.next = self.gap.q.val() + 1;
@@ -276,37 +290,95 @@ impl Logic for Retime {
             }
         }
         if self.send0.val() {
-            self.rem_next.next = self.len.val() - 2;
+            self.rem_next.next = 2.into();
+            if self.len.val() == 3 {
+                self.rem_next.next = 1.into();
+            }
+            if self.len.val() == 5 {
+                self.rem_next.next = 3.into();
+            }
         }
         if self.send1.val() {
-            self.rem_next.next = self.len.val() - 1;
+            self.rem_next.next = 3.into();
+            if self.len.val() == 3 {
+                self.rem_next.next = 2.into();
+            }
+            if self.len.val() == 5 {
+                self.rem_next.next = 4.into();
+            }
         }
-        // Buffer: shift in at the write, count what is unsent.
-        self.cnt_next.next = self.cnt.q.val();
+        // Buffer: a send shifts the oldest bit out, a write goes in behind
+        // the unsent ones; count what is unsent.
+        self.sr_shift.next = self.sr.q.val();
         if self.take.val() {
+            self.sr_shift.next = self.sr.q.val() >> 1;
+        }
+        self.sr.d.next = self.sr_shift.val();
+        // Behind the cnt unsent bits (cnt − 1 after a send now).
+        self.wpos.next = self.cnt.q.val().get_bits::<3>(0);
+        if self.take.val() {
+            self.wpos.next = self.cnt.q.val().get_bits::<3>(0) - 1;
+        }
+        self.wmask.next = self.one.val() << self.wpos.val();
+        self.cnt_next.next = self.cnt.q.val();
+        if self.take.val() & !self.i_valid.val() {
             self.cnt_next.next = self.cnt.q.val() - 1;
         }
         if self.i_valid.val() {
-            self.sr.d.next = self.sr.q.val() << 1;
+            self.sr.d.next = self.sr_shift.val() & !self.wmask.val();
             if self.i_code.val() {
-                self.sr.d.next = (self.sr.q.val() << 1) | 1;
+                self.sr.d.next = self.sr_shift.val() | self.wmask.val();
             }
-            self.cnt_next.next = self.cnt_next.val() + 1;
+            if !self.take.val() {
+                self.cnt_next.next = self.cnt.q.val() + 1;
+            }
         }
-        // The wait of the bit written now, in receive samples:
-        // 2 per half clock to its boundary, 8 per buffered bit, less the
-        // sample of its clock it was taken from (one add and one subtract,
-        // not a chain: this is on the core clock's critical path).
-        self.lag.next = ((bit_cast::<8, 4>(self.cnt_next.val()) | 0) << 3)
-            + ((bit_cast::<8, 3>(self.rem_next.val()) | 0) << 1)
-            - bit_cast::<8, 2>(self.i_phase.val());
+        // The wait of the bit written now, in receive samples, against the
+        // band: lag = 8·cnt_next + 2·rem_next − i_phase (modulo 256, as an
+        // 8-bit sum would give it) above TARGET + BAND (`late`) or below
+        // TARGET − BAND (`early`). Decided per buffered-bit count without
+        // an adder (issue 20: this is on the core clock's critical path);
+        // with t = 2·rem_next − i_phase (−3 … 14): 0 bits: late when t < 0
+        // (the sum wraps), else early; 1: early when t < 8; 2: late when
+        // t > 8, early when t < 0; 3: late when t > 0; 4 or more: late.
+        self.t_neg.next = ((self.rem_next.val() == 0) & (self.i_phase.val() != 0))
+            | ((self.rem_next.val() == 1) & (self.i_phase.val() == 3));
+        self.t_pos.next = (self.rem_next.val() >= 2)
+            | ((self.rem_next.val() == 1) & !self.i_phase.val().get_bit(1));
+        self.t_lt8.next = (self.rem_next.val() <= 3)
+            | ((self.rem_next.val() == 4) & (self.i_phase.val() != 0))
+            | ((self.rem_next.val() == 5) & (self.i_phase.val() == 3));
+        self.t_gt8.next = (self.rem_next.val() >= 6)
+            | ((self.rem_next.val() == 5) & !self.i_phase.val().get_bit(1));
+        // (Only read when a bit is written: then cnt_next is cnt when a bit
+        // is also sent, else cnt + 1, which wraps to 0 only from 15, a
+        // count the buffer never holds.)
+        self.c_is0.next = self.cnt.q.val() == 15;
+        self.c_is1.next = self.cnt.q.val() == 0;
+        self.c_is2.next = self.cnt.q.val() == 1;
+        self.c_is3.next = self.cnt.q.val() == 2;
+        self.c_ge4.next = (self.cnt.q.val() >= 3) & (self.cnt.q.val() != 15);
+        if self.take.val() {
+            self.c_is1.next = self.cnt.q.val() == 1;
+            self.c_is2.next = self.cnt.q.val() == 2;
+            self.c_is3.next = self.cnt.q.val() == 3;
+            self.c_ge4.next = self.cnt.q.val() >= 4;
+            self.c_is0.next = false;
+        }
+        self.late.next = self.c_ge4.val()
+            | (self.c_is0.val() & self.t_neg.val())
+            | (self.c_is2.val() & self.t_gt8.val())
+            | (self.c_is3.val() & self.t_pos.val());
+        self.early.next = (self.c_is0.val() & !self.t_neg.val())
+            | (self.c_is1.val() & self.t_lt8.val())
+            | (self.c_is2.val() & self.t_neg.val());
         if self.run.q.val() & self.i_valid.val() {
-            if self.lag.val() > self.hi_limit.val() {
+            if self.late.val() {
                 if self.hi.q.val() != 7 {
                     self.hi.d.next = self.hi.q.val() + 1;
                 }
                 self.lo.d.next = 0.into();
-            } else if self.lag.val() < self.lo_limit.val() {
+            } else if self.early.val() {
                 if self.lo.q.val() != 7 {
                     self.lo.d.next = self.lo.q.val() + 1;
                 }

@@ -35,7 +35,9 @@
 //! | `o_hdr_bad` | out | 1 | clock | DATA header rejected; packet dropped |
 //! | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST) |
 //!
-//! Latency: outputs are registered, one clock after the word's last group.
+//! Latency: outputs are registered, one clock after the word's last group;
+//! `o_end` and `o_hdr_bad` one clock later (the header is checked on the
+//! registered word).
 //!
 //! ```text
 //! i_start   _/‾\__________________________________________________
@@ -117,6 +119,8 @@ pub struct RxWord {
     slot: DFF<Bits<12>>,
     ptype: DFF<Bits<2>>,
     // Registered outputs.
+    // A word was published in the clock before: check its header.
+    check: DFF<Bit>,
     end_r: DFF<Bit>,
     wvalid_r: DFF<Bit>,
     kind_r: DFF<Bits<2>>,
@@ -196,6 +200,7 @@ impl RxWord {
             wcount: Default::default(),
             slot: Default::default(),
             ptype: Default::default(),
+            check: Default::default(),
             end_r: Default::default(),
             wvalid_r: Default::default(),
             kind_r: Default::default(),
@@ -225,8 +230,8 @@ impl Logic for RxWord {
     fn update(&mut self) {
         dff_setup!(
             self, clock, gcount, data, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
-            active, wcount, slot, ptype, end_r, wvalid_r, kind_r, slot_r, data_r, alive_r, alarm_r,
-            reason_r, ok_r, void_r, marked_r, own_r, hdr_bad_r, idles
+            active, wcount, slot, ptype, check, end_r, wvalid_r, kind_r, slot_r, data_r, alive_r,
+            alarm_r, reason_r, ok_r, void_r, marked_r, own_r, hdr_bad_r, idles
         );
         self.dec.i_code.next = self.i_group.val();
         self.nib.next = self.dec.o_nibble.val();
@@ -258,6 +263,7 @@ impl Logic for RxWord {
         self.end_r.d.next = false;
         self.wvalid_r.d.next = false;
         self.hdr_bad_r.d.next = false;
+        self.check.d.next = false;
         if self.i_start.val() {
             self.active.d.next = true;
             self.gcount.d.next = 0.into();
@@ -321,37 +327,46 @@ impl Logic for RxWord {
                 self.marked_r.d.next = self.i_group.val() == 0b01101;
                 self.own_r.d.next =
                     (self.wcount.q.val() == 2) & (self.slot.q.val() == self.i_address.val());
+                self.check.d.next = true;
                 if self.wcount.q.val() == 0 {
-                    // H0: type and slot count.
+                    // H0: its type; checked the next clock.
                     self.wcount.d.next = 1.into();
                     self.ptype.d.next = self.w_data.val().get_bits::<2>(14);
-                    if !self.w_ok.val()
-                        | self.alarm0.q.val()
-                        | ((self.w_data.val().get_bits::<2>(14) == 0)
-                            & (self.w_data.val().get_bits::<12>(0) != self.i_slots_m1.val()))
-                    {
-                        self.hdr_bad_r.d.next = true;
-                        self.end_r.d.next = true;
-                        self.active.d.next = false;
-                    }
                 } else if self.wcount.q.val() == 1 {
-                    // H1; SEC and TST packets end here.
                     self.wcount.d.next = 2.into();
-                    if !self.w_ok.val() | self.alarm0.q.val() {
-                        self.hdr_bad_r.d.next = self.ptype.q.val() == 0;
-                        self.end_r.d.next = true;
-                        self.active.d.next = false;
-                    } else if self.ptype.q.val() != 0 {
-                        self.end_r.d.next = true;
-                        self.active.d.next = false;
-                    }
                 } else {
                     self.slot.d.next = self.slot.q.val() + 1;
-                    if self.slot.q.val() == self.i_slots_m1.val() {
-                        self.end_r.d.next = true;
-                        self.active.d.next = false;
-                    }
                 }
+            }
+        }
+        // The word published in the clock before, checked (issue 20: a
+        // word's decode and what its header decides are a clock apart; the
+        // next group is at least 5 clocks away).
+        if self.check.q.val() {
+            if self.kind_r.q.val() == 0 {
+                // H0: type and slot count.
+                if !self.ok_r.q.val()
+                    | self.alarm_r.q.val()
+                    | ((self.data_r.q.val().get_bits::<2>(14) == 0)
+                        & (self.data_r.q.val().get_bits::<12>(0) != self.i_slots_m1.val()))
+                {
+                    self.hdr_bad_r.d.next = true;
+                    self.end_r.d.next = true;
+                    self.active.d.next = false;
+                }
+            } else if self.kind_r.q.val() == 1 {
+                // H1; SEC and TST packets end here.
+                if !self.ok_r.q.val() | self.alarm_r.q.val() {
+                    self.hdr_bad_r.d.next = self.ptype.q.val() == 0;
+                    self.end_r.d.next = true;
+                    self.active.d.next = false;
+                } else if self.ptype.q.val() != 0 {
+                    self.end_r.d.next = true;
+                    self.active.d.next = false;
+                }
+            } else if self.slot_r.q.val() == self.i_slots_m1.val() {
+                self.end_r.d.next = true;
+                self.active.d.next = false;
             }
         }
         self.o_end.next = self.end_r.q.val();

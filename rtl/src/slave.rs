@@ -32,8 +32,10 @@
 //! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
 //! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words and rejected headers, for a master's memories |
 //!
-//! Latency: INPUT to OUTPUT 8–9.5 bit times (CDR + one group + retime
-//! buffer, [`Fwd`]); BSR to BSS ≈ 3.5 bit times (CDR + [`Retime`]).
+//! Latency: INPUT to OUTPUT 9.5–10.5 bit times (the CDR, one group and a
+//! bit, the retime buffer: [`Fwd`]); BSR to BSS ≈ 3.5 bit times (the CDR
+//! and [`Retime`]). A switch decision acts two clocks after the receivers'
+//! report ([`SwitchPipe`]).
 //!
 //! ```text
 //! PI ─┐            ┌─ port_rx (INPUT) ── fwd ── OUTPUT ─┐            ┌─ sw_dark ─ PO
@@ -45,7 +47,7 @@ use crate::fwd::Fwd;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
 use crate::sw_dark::SwDark;
-use crate::switch_ctl::SwitchCtl;
+use crate::switch_ctl::SwitchPipe;
 use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
 use rust_hdl::prelude::*;
@@ -127,7 +129,7 @@ pub struct Slave {
     pub o_ferr: Signal<Out, Bits<16>>,
     sbox: Switchbox,
     dark: SwDark,
-    swc: SwitchCtl,
+    swc: SwitchPipe,
     rx_in: PortRx,
     rx_bsr: PortRx,
     fwd: Fwd,

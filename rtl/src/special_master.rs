@@ -89,7 +89,7 @@ use crate::pkt_tx::PktTx;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
 use crate::sw_dark::SwDark;
-use crate::switch_ctl::SwitchCtl;
+use crate::switch_ctl::SwitchPipe;
 use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
 use rust_hdl::prelude::*;
@@ -182,7 +182,7 @@ pub struct SpecialMaster {
     sbox: Switchbox,
     dark: SwDark,
     tst: TstTx,
-    swc: SwitchCtl,
+    swc: SwitchPipe,
     pend_rc: DFF<Bit>,
     ret_rwp: DFF<Bit>,
     sw_flush: DFF<Bit>,
@@ -206,6 +206,8 @@ pub struct SpecialMaster {
     st_used_slot: DFF<Bits<12>>,
     sent_alarm: RAM<Bit, 12>,
     aact: RAM<Bit, 12>,
+    st_r: DFF<Bits<22>>,
+    aact_r: DFF<Bit>,
     half: DFF<Bit>,
     bcnt: DFF<Bits<20>>,
     cyc: DFF<Bits<12>>,
@@ -329,6 +331,8 @@ impl Default for SpecialMaster {
             st_used_slot: Default::default(),
             sent_alarm: Default::default(),
             aact: Default::default(),
+            st_r: Default::default(),
+            aact_r: Default::default(),
             half: Default::default(),
             bcnt: Default::default(),
             cyc: Default::default(),
@@ -395,6 +399,8 @@ impl Logic for SpecialMaster {
         dff_setup!(
             self,
             clock,
+            st_r,
+            aact_r,
             half,
             bcnt,
             cyc,
@@ -527,7 +533,13 @@ impl Logic for SpecialMaster {
         self.mdb.i_tx_slot.next = self.ftx.o_slot.val();
         self.store.read_address.next = self.ftx.o_slot.val();
         self.aact.read_address.next = self.ftx.o_slot.val();
-        self.st.next = self.store.read_data.val();
+        // The store's and the Alive memory's read data, registered (issue
+        // 20: block RAM outputs go to one flip-flop, not through logic);
+        // the slot is set 60 bit times before its word is taken and
+        // advances when it is, 25 bit times before the next is due.
+        self.st_r.d.next = self.store.read_data.val();
+        self.aact_r.d.next = self.aact.read_data.val();
+        self.st.next = self.st_r.q.val();
         // Returned last cycle: valid bit and the previous cycle's CYC.
         // (CYC − 1 in 3 bits: rust-hdl literals are 32 bits wide, so the
         // subtraction is truncated in its own signal before comparing.)
@@ -577,7 +589,7 @@ impl Logic for SpecialMaster {
                 // ACT.
                 if !self.st_ok.val() {
                     self.w_data.next = self.mdb.o_tx_data.val();
-                    self.w_alive.next = !self.aact.read_data.val();
+                    self.w_alive.next = !self.aact_r.q.val();
                     self.w_alarm.next = false;
                     self.w_void.next = false;
                 } else if !self.w_alarm.val() {

@@ -105,17 +105,27 @@ pub struct SwitchCtl {
     /// Grace period over.
     pub o_grace_over: Signal<Out, Bit>,
     reintegrate: Constant<Bits<9>>,
+    reint_m1: Constant<Bits<9>>,
     settle_start: Constant<Bits<7>>,
     mode: DFF<Bits<2>>,
     settle: DFF<Bits<7>>,
+    busy: DFF<Bit>,
     grace: DFF<Bits<20>>,
     ack_time: DFF<Bits<9>>,
+    ack_done: DFF<Bit>,
     seen_ack: DFF<Bit>,
     pend_up: DFF<Bit>,
     new_mode: Signal<Local, Bits<2>>,
     fail_in: Signal<Local, Bit>,
     fail_bsr: Signal<Local, Bit>,
     up_ok: Signal<Local, Bit>,
+    acting: Signal<Local, Bit>,
+    in_n: Signal<Local, Bit>,
+    go_wu: Signal<Local, Bit>,
+    go_wd: Signal<Local, Bit>,
+    unwrap: Signal<Local, Bit>,
+    bsr_ok: Signal<Local, Bit>,
+    ack_inc: Signal<Local, Bit>,
 }
 
 impl Default for SwitchCtl {
@@ -143,17 +153,27 @@ impl Default for SwitchCtl {
             o_fs_set: Default::default(),
             o_grace_over: Default::default(),
             reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
+            reint_m1: Constant::new((REINTEGRATE_CLOCKS - 1).to_bits()),
             settle_start: Constant::new(SETTLE_CLOCKS.to_bits()),
             mode: Default::default(),
             settle: Default::default(),
+            busy: Default::default(),
             grace: Default::default(),
             ack_time: Default::default(),
+            ack_done: Default::default(),
             seen_ack: Default::default(),
             pend_up: Default::default(),
             new_mode: Default::default(),
             fail_in: Default::default(),
             fail_bsr: Default::default(),
             up_ok: Default::default(),
+            acting: Default::default(),
+            in_n: Default::default(),
+            go_wu: Default::default(),
+            go_wd: Default::default(),
+            unwrap: Default::default(),
+            bsr_ok: Default::default(),
+            ack_inc: Default::default(),
         }
     }
 }
@@ -161,74 +181,223 @@ impl Default for SwitchCtl {
 impl Logic for SwitchCtl {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, mode, settle, grace, ack_time, seen_ack, pend_up);
+        dff_setup!(self, clock, mode, settle, busy, grace, ack_time, ack_done, seen_ack, pend_up);
         if self.grace.q.val() != 0 {
             self.grace.d.next = self.grace.q.val() - 1;
         }
         if self.settle.q.val() != 0 {
             self.settle.d.next = self.settle.q.val() - 1;
         }
-        self.o_fs_set.next = false;
-        self.new_mode.next = self.mode.q.val();
+        // `busy` is `settle != 0`, kept in its own register (issue 20: the
+        // decisions read one flip-flop, not a 7-bit compare).
+        self.busy.d.next = self.settle.q.val() > 1;
+        // The decisions as flat expressions (issue 20: a few levels of
+        // logic from registered inputs to the change).
+        self.acting.next = self.i_armed.val() & !self.busy.q.val();
         // In failsafe a DATA header on BSR is as good as the ACK (§12).
         self.up_ok.next = self.seen_ack.q.val() | self.i_fs.val();
         // A run of bad words wraps only a ring not known to be wrapped.
         self.fail_in.next = self.i_hard_in.val() | (self.i_run_in.val() & !self.i_rw.val());
         self.fail_bsr.next = self.i_hard_bsr.val() | (self.i_run_bsr.val() & !self.i_rw.val());
-        if !self.i_armed.val() | (self.settle.q.val() != 0) {
-        } else if self.mode.q.val() == 0 {
-            if self.fail_in.val() {
-                self.new_mode.next = 1.into();
-            } else if self.fail_bsr.val() {
-                self.new_mode.next = 2.into();
-            }
-            // The second structural fault; or both lines dark at once.
-            if ((self.i_hard_in.val() | self.i_hard_bsr.val()) & self.i_rw.val())
-                | (self.i_los_in.val() & self.i_los_bsr.val())
-            {
-                self.o_fs_set.next = true;
-            }
-        } else {
-            if self.i_los_in.val() {
-                self.o_fs_set.next = true;
-            }
-            if self.i_tst_ack.val() {
-                self.seen_ack.d.next = true;
-                if self.ack_time.q.val() != 511 {
-                    self.ack_time.d.next = self.ack_time.q.val() + 1;
-                }
-            }
-            if (self.mode.q.val() == 2)
-                & (self.ack_time.q.val() >= self.reintegrate.val())
-                & self.i_frame_start.val()
-            {
-                self.new_mode.next = 0.into();
-            }
-            if (self.mode.q.val() == 1) & self.up_ok.val() & self.i_bsr_data.val() {
-                self.pend_up.d.next = true;
-            }
-            if (self.mode.q.val() == 1)
-                & (self.pend_up.q.val() | (self.up_ok.val() & self.i_bsr_data.val()))
-                & !self.i_in_pkt.val()
-            {
-                self.new_mode.next = 0.into();
-            }
+        self.in_n.next = self.mode.q.val() == 0;
+        self.go_wu.next = self.acting.val() & self.in_n.val() & self.fail_in.val();
+        self.go_wd.next =
+            self.acting.val() & self.in_n.val() & !self.fail_in.val() & self.fail_bsr.val();
+        self.bsr_ok.next = self.up_ok.val() & self.i_bsr_data.val();
+        self.unwrap.next = self.acting.val()
+            & (((self.mode.q.val() == 2) & self.ack_done.q.val() & self.i_frame_start.val())
+                | ((self.mode.q.val() == 1)
+                    & (self.pend_up.q.val() | self.bsr_ok.val())
+                    & !self.i_in_pkt.val()));
+        self.new_mode.next = self.mode.q.val();
+        if self.unwrap.val() {
+            self.new_mode.next = 0.into();
         }
-        self.o_change.next = self.new_mode.val() != self.mode.q.val();
-        self.o_relink.next =
-            self.o_change.val() & ((self.mode.q.val() == 1) != (self.new_mode.val() == 1));
-        self.o_tst_start.next = self.o_change.val() & (self.mode.q.val() == 0);
-        if self.new_mode.val() != self.mode.q.val() {
+        if self.go_wd.val() {
+            self.new_mode.next = 2.into();
+        }
+        if self.go_wu.val() {
+            self.new_mode.next = 1.into();
+        }
+        self.o_change.next = self.go_wu.val() | self.go_wd.val() | self.unwrap.val();
+        self.o_relink.next = self.go_wu.val() | (self.unwrap.val() & (self.mode.q.val() == 1));
+        self.o_tst_start.next = self.go_wu.val() | self.go_wd.val();
+        // Mode N: the second structural fault; or both lines dark at once.
+        // Wrapped: INPUT dark.
+        self.o_fs_set.next = self.acting.val()
+            & ((self.in_n.val()
+                & (((self.i_hard_in.val() | self.i_hard_bsr.val()) & self.i_rw.val())
+                    | (self.i_los_in.val() & self.i_los_bsr.val())))
+                | (!self.in_n.val() & self.i_los_in.val()));
+        // Wrapped: the partner's ACKed TST, and a WU node's DATA header on
+        // BSR after it.
+        self.ack_inc.next = self.acting.val()
+            & !self.in_n.val()
+            & self.i_tst_ack.val()
+            & (self.ack_time.q.val() != 511);
+        if self.acting.val() & !self.in_n.val() & self.i_tst_ack.val() {
+            self.seen_ack.d.next = true;
+        }
+        if self.ack_inc.val() {
+            self.ack_time.d.next = self.ack_time.q.val() + 1;
+        }
+        if self.acting.val() & (self.mode.q.val() == 1) & self.bsr_ok.val() {
+            self.pend_up.d.next = true;
+        }
+        // `ack_done` is `ack_time >= REINTEGRATE_CLOCKS`, in its own
+        // register (cleared with `ack_time` at a change, below).
+        self.ack_done.d.next = (self.ack_time.q.val() >= self.reintegrate.val())
+            | ((self.ack_time.q.val() == self.reint_m1.val()) & self.ack_inc.val());
+        if self.o_change.val() {
             self.mode.d.next = self.new_mode.val();
             self.settle.d.next = self.settle_start.val();
+            self.busy.d.next = true;
             self.ack_time.d.next = 0.into();
+            self.ack_done.d.next = false;
             self.seen_ack.d.next = false;
             self.pend_up.d.next = false;
-            if self.new_mode.val() == 0 {
+            if self.unwrap.val() {
                 self.grace.d.next = self.i_cs_timeout.val() >> 1;
             }
         }
         self.o_mode.next = self.mode.q.val();
         self.o_grace_over.next = self.grace.q.val() == 0;
+    }
+}
+
+/// [`SwitchCtl`] between two rows of flip-flops, as the nodes use it: the
+/// receivers' reports (loss of signal, channel failures, ACKed TST, frame
+/// boundaries, DATA headers on BSR) are registered on the way in and the
+/// decisions on the way out, so that a recovered bit, the decision it
+/// leads to and what the node does with it (switchbox, dark time, TST
+/// generator, failsafe, RECONFIG alarm) are three clocks, not one long
+/// path (issue 20). The mode, the change and its companions leave
+/// together, so the node sees one consistent decision, two clocks (one bit
+/// time) after the report that caused it. Ports as [`SwitchCtl`];
+/// `i_armed`, `i_rw`, `i_fs` and `i_cs_timeout` (node registers and a
+/// static value) go in directly.
+#[derive(LogicBlock, Default)]
+pub struct SwitchPipe {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// The node has received its first good frame.
+    pub i_armed: Signal<In, Bit>,
+    /// Structural failure on INPUT.
+    pub i_hard_in: Signal<In, Bit>,
+    /// Structural failure on BSR.
+    pub i_hard_bsr: Signal<In, Bit>,
+    /// Run of bad words on INPUT.
+    pub i_run_in: Signal<In, Bit>,
+    /// Run of bad words on BSR.
+    pub i_run_bsr: Signal<In, Bit>,
+    /// Loss of signal on INPUT.
+    pub i_los_in: Signal<In, Bit>,
+    /// Loss of signal on BSR.
+    pub i_los_bsr: Signal<In, Bit>,
+    /// The node knows the ring is wrapped.
+    pub i_rw: Signal<In, Bit>,
+    /// The node is in failsafe.
+    pub i_fs: Signal<In, Bit>,
+    /// An ACKed TST is heard on BSR.
+    pub i_tst_ack: Signal<In, Bit>,
+    /// A frame boundary.
+    pub i_frame_start: Signal<In, Bit>,
+    /// A good DATA H0 on BSR.
+    pub i_bsr_data: Signal<In, Bit>,
+    /// A packet is arriving on INPUT.
+    pub i_in_pkt: Signal<In, Bit>,
+    /// CS timeout, clocks.
+    pub i_cs_timeout: Signal<In, Bits<20>>,
+    /// Switchbox mode.
+    pub o_mode: Signal<Out, Bits<2>>,
+    /// The mode changed at this clock's edge.
+    pub o_change: Signal<Out, Bit>,
+    /// … and INPUT and BSR moved to other lines.
+    pub o_relink: Signal<Out, Bit>,
+    /// … and the TST generator went onto an output.
+    pub o_tst_start: Signal<Out, Bit>,
+    /// Enter failsafe.
+    pub o_fs_set: Signal<Out, Bit>,
+    /// A TST on a mode-N input counts as failure again.
+    pub o_grace_over: Signal<Out, Bit>,
+    ctl: SwitchCtl,
+    hard_in: DFF<Bit>,
+    hard_bsr: DFF<Bit>,
+    run_in: DFF<Bit>,
+    run_bsr: DFF<Bit>,
+    los_in: DFF<Bit>,
+    los_bsr: DFF<Bit>,
+    tst_ack: DFF<Bit>,
+    frame_start: DFF<Bit>,
+    bsr_data: DFF<Bit>,
+    in_pkt: DFF<Bit>,
+    mode: DFF<Bits<2>>,
+    change: DFF<Bit>,
+    relink: DFF<Bit>,
+    tst_start: DFF<Bit>,
+    fs_set: DFF<Bit>,
+    grace_over: DFF<Bit>,
+}
+
+impl Logic for SwitchPipe {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clock,
+            hard_in,
+            hard_bsr,
+            run_in,
+            run_bsr,
+            los_in,
+            los_bsr,
+            tst_ack,
+            frame_start,
+            bsr_data,
+            in_pkt,
+            mode,
+            change,
+            relink,
+            tst_start,
+            fs_set,
+            grace_over
+        );
+        self.ctl.clock.next = self.clock.val();
+        self.hard_in.d.next = self.i_hard_in.val();
+        self.hard_bsr.d.next = self.i_hard_bsr.val();
+        self.run_in.d.next = self.i_run_in.val();
+        self.run_bsr.d.next = self.i_run_bsr.val();
+        self.los_in.d.next = self.i_los_in.val();
+        self.los_bsr.d.next = self.i_los_bsr.val();
+        self.tst_ack.d.next = self.i_tst_ack.val();
+        self.frame_start.d.next = self.i_frame_start.val();
+        self.bsr_data.d.next = self.i_bsr_data.val();
+        self.in_pkt.d.next = self.i_in_pkt.val();
+        self.ctl.i_armed.next = self.i_armed.val();
+        self.ctl.i_hard_in.next = self.hard_in.q.val();
+        self.ctl.i_hard_bsr.next = self.hard_bsr.q.val();
+        self.ctl.i_run_in.next = self.run_in.q.val();
+        self.ctl.i_run_bsr.next = self.run_bsr.q.val();
+        self.ctl.i_los_in.next = self.los_in.q.val();
+        self.ctl.i_los_bsr.next = self.los_bsr.q.val();
+        self.ctl.i_rw.next = self.i_rw.val();
+        self.ctl.i_fs.next = self.i_fs.val();
+        self.ctl.i_tst_ack.next = self.tst_ack.q.val();
+        self.ctl.i_frame_start.next = self.frame_start.q.val();
+        self.ctl.i_bsr_data.next = self.bsr_data.q.val();
+        self.ctl.i_in_pkt.next = self.in_pkt.q.val();
+        self.ctl.i_cs_timeout.next = self.i_cs_timeout.val();
+        self.mode.d.next = self.ctl.o_mode.val();
+        self.change.d.next = self.ctl.o_change.val();
+        self.relink.d.next = self.ctl.o_relink.val();
+        self.tst_start.d.next = self.ctl.o_tst_start.val();
+        self.fs_set.d.next = self.ctl.o_fs_set.val();
+        self.grace_over.d.next = self.ctl.o_grace_over.val();
+        self.o_mode.next = self.mode.q.val();
+        self.o_change.next = self.change.q.val();
+        self.o_relink.next = self.relink.q.val();
+        self.o_tst_start.next = self.tst_start.q.val();
+        self.o_fs_set.next = self.fs_set.q.val();
+        self.o_grace_over.next = self.grace_over.q.val();
     }
 }

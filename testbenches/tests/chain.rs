@@ -83,8 +83,9 @@ fn eight_slaves_carry_the_models_frames() {
         let mut reader = PacketReader::new(&mo);
         for (t, &pair) in pairs.iter().enumerate() {
             // Node k's inputs belong to the frame that has reached it: the
-            // frame enters the chain at `starts[c]` and needs about 8 bit
-            // times per node (the slave's latency is 8–9.5).
+            // frame enters the chain at `starts[c]` and needs at least 8
+            // bit times per node (the slave's latency is 9.5–10.5), so a
+            // value is set before the frame reaches the node.
             for k in 0..8 {
                 let node = k + 1;
                 let here = (t / 2).saturating_sub(8 * (k + 1));
