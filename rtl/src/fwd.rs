@@ -222,19 +222,11 @@ pub struct Fwd {
     nib_out: Signal<Local, Bits<4>>,
     recode: Signal<Local, Bit>,
     diff: Signal<Local, Bits<4>>,
-    n_data: Signal<Local, Bits<16>>,
-    n_alive: Signal<Local, Bit>,
-    n_alarm: Signal<Local, Bit>,
-    p_a: Signal<Local, Bit>,
-    p_b: Signal<Local, Bit>,
-    send_alarm: Signal<Local, Bit>,
-    own: Signal<Local, Bit>,
     home_c: Signal<Local, Bit>,
     own_c: Signal<Local, Bit>,
     send_c: Signal<Local, Bit>,
     fresh_data: Signal<Local, Bits<16>>,
     fresh_alive: Signal<Local, Bit>,
-    home: Signal<Local, Bit>,
     cut: Signal<Local, Bit>,
     pa_fix: Signal<Local, Bit>,
     pb_fix: Signal<Local, Bit>,
@@ -350,19 +342,11 @@ impl Fwd {
             nib_out: Default::default(),
             recode: Default::default(),
             diff: Default::default(),
-            n_data: Default::default(),
-            n_alive: Default::default(),
-            n_alarm: Default::default(),
-            p_a: Default::default(),
-            p_b: Default::default(),
-            send_alarm: Default::default(),
-            own: Default::default(),
             home_c: Default::default(),
             own_c: Default::default(),
             send_c: Default::default(),
             fresh_data: Default::default(),
             fresh_alive: Default::default(),
-            home: Default::default(),
             cut: Default::default(),
             pa_fix: Default::default(),
             pb_fix: Default::default(),
@@ -535,9 +519,6 @@ impl Logic for Fwd {
         self.pre_home.d.next = self.home_c.val();
         self.pre_own.d.next = self.own_c.val();
         self.send_c.next = self.home_c.val() & self.i_alarm_req.val() & !self.prev_alarm.q.val();
-        self.home.next = self.pre_home.q.val();
-        self.own.next = self.pre_own.q.val();
-        self.send_alarm.next = self.f_alarm.q.val();
         // The word's action, decided in stage A from the group as it
         // completes (its first group decides; the others keep `action`),
         // registered for stage B (`act_now`).
@@ -638,11 +619,6 @@ impl Logic for Fwd {
                 ^ self.fresh_data.val().get_bit(15)
                 ^ self.fresh_data.val().get_bit(14));
         }
-        self.n_data.next = self.f_data.q.val();
-        self.n_alive.next = self.f_alive.q.val();
-        self.n_alarm.next = self.f_alarm.q.val();
-        self.p_a.next = self.f_pa.q.val();
-        self.p_b.next = self.f_pb.q.val();
 
         self.pa_fix.next = false;
         self.pb_fix.next = false;
@@ -662,28 +638,28 @@ impl Logic for Fwd {
         self.recode.next = false;
         if self.act_now.val() == 3 {
             self.recode.next = true;
-            self.nib_out.next = self.n_data.val().get_bits::<4>(0) & 3;
-            if self.n_alarm.val() {
+            self.nib_out.next = self.f_data.q.val().get_bits::<4>(0) & 3;
+            if self.f_alarm.q.val() {
                 self.nib_out.next = self.nib_out.val() | 8;
             }
-            if self.n_alive.val() {
+            if self.f_alive.q.val() {
                 self.nib_out.next = self.nib_out.val() | 4;
             }
             if self.gidx.q.val() == 1 {
-                self.nib_out.next = self.n_data.val().get_bits::<4>(2);
+                self.nib_out.next = self.f_data.q.val().get_bits::<4>(2);
             }
             if self.gidx.q.val() == 2 {
-                self.nib_out.next = self.n_data.val().get_bits::<4>(6);
+                self.nib_out.next = self.f_data.q.val().get_bits::<4>(6);
             }
             if self.gidx.q.val() == 3 {
-                self.nib_out.next = self.n_data.val().get_bits::<4>(10);
+                self.nib_out.next = self.f_data.q.val().get_bits::<4>(10);
             }
             if self.gidx.q.val() == 4 {
-                self.nib_out.next = (self.n_data.val().get_bits::<4>(12) >> 1) & 6;
-                if self.p_a.val() {
+                self.nib_out.next = (self.f_data.q.val().get_bits::<4>(12) >> 1) & 6;
+                if self.f_pa.q.val() {
                     self.nib_out.next = self.nib_out.val() | 8;
                 }
-                if self.p_b.val() {
+                if self.f_pb.q.val() {
                     self.nib_out.next = self.nib_out.val() | 1;
                 }
             }
@@ -724,16 +700,16 @@ impl Logic for Fwd {
             if self.act_now.val() == 5 {
                 if self.gidx.q.val() == 0 {
                     self.nib_out.next =
-                        (self.nib.val() & 12) | (self.n_data.val().get_bits::<4>(0) & 3);
+                        (self.nib.val() & 12) | (self.f_data.q.val().get_bits::<4>(0) & 3);
                 }
                 if self.gidx.q.val() == 1 {
-                    self.nib_out.next = self.n_data.val().get_bits::<4>(2);
+                    self.nib_out.next = self.f_data.q.val().get_bits::<4>(2);
                 }
                 if self.gidx.q.val() == 2 {
-                    self.nib_out.next = self.n_data.val().get_bits::<4>(6);
+                    self.nib_out.next = self.f_data.q.val().get_bits::<4>(6);
                 }
                 if self.gidx.q.val() == 3 {
-                    self.nib_out.next = self.n_data.val().get_bits::<4>(10);
+                    self.nib_out.next = self.f_data.q.val().get_bits::<4>(10);
                 }
             }
             // Delta parity in the last group: the changes of groups 0..3
@@ -745,15 +721,15 @@ impl Logic for Fwd {
                 self.pb_fix.next = self.d_b.q.val();
                 if self.act_now.val() == 5 {
                     self.nib_out.next =
-                        (self.nib.val() & 9) | ((self.n_data.val().get_bits::<4>(12) >> 1) & 6);
+                        (self.nib.val() & 9) | ((self.f_data.q.val().get_bits::<4>(12) >> 1) & 6);
                     self.pa_fix.next = self.d_a.q.val()
                         ^ self.nib.val().get_bit(2)
-                        ^ self.n_data.val().get_bit(15);
+                        ^ self.f_data.q.val().get_bit(15);
                     self.pb_fix.next = self.d_b.q.val()
                         ^ self.nib.val().get_bit(2)
-                        ^ self.n_data.val().get_bit(15)
+                        ^ self.f_data.q.val().get_bit(15)
                         ^ self.nib.val().get_bit(1)
-                        ^ self.n_data.val().get_bit(14);
+                        ^ self.f_data.q.val().get_bit(14);
                 }
                 if self.pa_fix.val() {
                     self.nib_out.next = self.nib_out.val() ^ 8;
@@ -919,13 +895,13 @@ impl Logic for Fwd {
             if self.gidx.q.val() == 0 {
                 self.action.d.next = self.act_now.val();
                 self.carry.d.next = false;
-                self.regen.d.next = self.own.val()
+                self.regen.d.next = self.pre_own.q.val()
                     & self.i_master.val()
                     & self.i_slot_cfg.val().get_bit(1)
                     & (self.act_now.val() == 3);
-                if self.home.val() {
-                    self.prev_alarm.d.next = self.send_alarm.val();
-                    self.sent.d.next = self.send_alarm.val();
+                if self.pre_home.q.val() {
+                    self.prev_alarm.d.next = self.f_alarm.q.val();
+                    self.sent.d.next = self.f_alarm.q.val();
                     self.sent_reason.d.next = self.f_reason.q.val();
                 }
             }
