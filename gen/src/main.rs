@@ -168,14 +168,15 @@ enum Cmd {
     /// Synthesize a scenario's nodes with the open tools and write the artifacts and a report
     /// (synth.md, synth.json): iCE40 and ECP5 bitstreams and timing, CoolRunner-II mapping,
     /// Spartan-6 resources, or the XEM6010 board top. Exit status 1 when an FPGA node misses
-    /// timing at the design clock or does not fit the device (CPLD and Spartan-6 overflows are
-    /// reported); 2 when the ring's memories cannot fit the device at all.
+    /// timing at the design clock; 2 when a node cannot fit the device (its memories, logic
+    /// cells, I/O, or a CPLD's macrocells and product terms: nothing is written).
     Synth {
         /// Scenario file (TOML): the ring whose nodes are built (home slots, slots, period).
         scenario: PathBuf,
-        /// ice40-hx8k, ecp5-85, ecp5-45 (bitstreams, nextpnr timing), xc2c256 (CPLD mapping),
-        /// xc6s (Spartan-6 resources) or xem6010 (board top, UCF, ISE script; bitstream with
-        /// --features xem6010).
+        /// ice40-hx8k, ice40-hx1k, ice40-up5k, ecp5-85, ecp5-45 (bitstreams, nextpnr timing),
+        /// xc2c32a, xc2c64a, xc2c128, xc2c256, xc2c384, xc2c512 (CoolRunner-II mapping against
+        /// the device), xc6s (Spartan-6 resources) or xem6010 (board top, UCF, ISE script;
+        /// bitstream with --features xem6010).
         #[arg(long, value_name = "TARGET")]
         target: String,
         /// Build this node (ring index; repeatable). Default: the special master, the first
@@ -207,6 +208,11 @@ enum Cmd {
         /// placed freely.
         #[arg(long, value_name = "BOARD")]
         board: Option<String>,
+        /// The diagnostic mux (i_diag_sel, o_diag) and the error counters behind it: on, or
+        /// off for a lean top (a sensor's i_sensor, an actuator's register on o_act, I/O
+        /// placed freely; the counters are left out). Boards need it on.
+        #[arg(long, default_value = "on", value_parser = ["on", "off"], value_name = "ON|OFF")]
+        diag: String,
     },
     /// Run the built-in 8-node ring with one line break through the model (explained cycle
     /// by cycle) and through the RTL in Verilator, and show that they agree.
@@ -539,6 +545,7 @@ fn main() -> ExitCode {
             flow,
             speed,
             board,
+            diag,
         } => {
             let o = synth::Opts {
                 target,
@@ -550,6 +557,7 @@ fn main() -> ExitCode {
                 flow,
                 speed: *speed,
                 board: board.as_deref(),
+                diag: diag == "on",
             };
             match synth::run(scenario, &o) {
                 Ok(true) => Ok(()),

@@ -408,8 +408,10 @@ fn campaign_refuses_bad_arguments() {
 /// (50 Mbit/s, a 100 MHz core clock; the best of three placement seeds,
 /// docs/benchmarks.md), the masters' memories sized to the ring's 9 slots (256
 /// deep: one 256 × 16 block RAM per memory, two for the special master's
-/// 22-bit return store); and the slave maps to the CoolRunner-II (its
-/// macrocell count is reported, not required).
+/// 22-bit return store); and the slave is mapped to the CoolRunner-II and,
+/// as it does not fit the largest one yet (issue 21), refused with what it
+/// needs and what the device has (exit status 2, nothing written), like a
+/// lean slave on the smallest iCE40.
 #[test]
 fn synth_makes_a_ring_of_bitstreams_and_maps_the_slave_to_the_cpld() {
     let dir = scratch("synth");
@@ -455,25 +457,41 @@ fn synth_makes_a_ring_of_bitstreams_and_maps_the_slave_to_the_cpld() {
         std::fs::read_to_string(root().join("constraints/ice40-hx8k-breakout.pcf")).unwrap()
     );
 
-    let out = dir.join("cpld");
-    let o = merkur(&[
-        "synth",
-        "tb-data/ring8.toml",
-        "--target",
-        "xc2c256",
-        "--node",
-        "1",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
-    let n = &json["nodes"][0];
-    assert!(n["macrocells"].as_u64().unwrap() > 0, "{n}");
-    assert!(n["pterms"].as_u64().unwrap() > 0, "{n}");
-    assert!(n["status"] == "ok" || n["status"] == "does not fit", "{n}");
-    assert!(out.join("node1-slave/top.edif").exists());
+    for (target, diag, device, needs) in [
+        ("xc2c512", "on", "XC2C512", "macrocells"),
+        ("ice40-hx1k", "off", "iCE40-HX1K", "ICESTORM_LC of 1280"),
+    ] {
+        let out = dir.join(target);
+        let o = merkur(&[
+            "synth",
+            "tb-data/ring8.toml",
+            "--target",
+            target,
+            "--node",
+            "1",
+            "--diag",
+            diag,
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{target}: {err}");
+        assert!(
+            err.contains(&format!(
+                "node 1 (sensor) does not fit the {device}: it needs "
+            )) && err.contains(needs),
+            "{target}: {err}"
+        );
+        // The need is a measured count, not a word.
+        let n: u64 = err
+            .split("it needs ")
+            .nth(1)
+            .and_then(|s| s.split_whitespace().next())
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(0);
+        assert!(n > 100, "{target}: {err}");
+        assert!(!out.exists(), "{target}: nothing may be written");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -676,6 +694,41 @@ fn synth_refuses_bad_arguments() {
                 "arty",
             ][..],
             "--board arty: unknown board; boards: ice40-hx8k-breakout (--target ice40-hx8k), ulx3s",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "ice40-hx8k",
+                "--board",
+                "ice40-hx8k-breakout",
+                "--diag",
+                "off",
+            ][..],
+            "--board ice40-hx8k-breakout --diag off",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "xem6010",
+                "--diag",
+                "off",
+            ][..],
+            "--target xem6010 --diag off",
+        ),
+        (
+            &[
+                "synth",
+                "tb-data/ring8.toml",
+                "--target",
+                "xc6s",
+                "--diag",
+                "maybe",
+            ][..],
+            "--diag",
         ),
     ] {
         refused(args, want);

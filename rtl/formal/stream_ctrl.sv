@@ -10,10 +10,11 @@
 //   a flush (the input moved to another line) restarts it;
 // - hard: o_hard is loss of signal, or a test signal where it counts as a
 //   failure, one clock later; o_cf is o_hard or o_run;
-// - tst_hold: a good TST (H0 good, H1 good with packet type TST and
-//   H1 = NOT H0) raises o_tst in the next clock and holds it for 2 TST
-//   periods, 130 bit times = 260 clocks (§9), after the last one; o_ack
-//   is the ACK bit (H0 bit 12) of the last one.
+// - tst_hold: a good TST (H1 good with packet type TST and H1 = NOT H0,
+//   which the word decoder reports as `i_compl`; an H1 always follows a
+//   good H0 of its packet) raises o_tst in the next clock and holds it
+//   for 2 TST periods, 130 bit times = 260 clocks (§9), after the last
+//   one; o_ack is the ACK bit (H0 bit 12 = NOT H1 bit 12) of the last one.
 module stream_ctrl_props (
     input wire clock,
     input wire i_los,
@@ -22,7 +23,8 @@ module stream_ctrl_props (
     input wire i_ok,
     input wire i_void,
     input wire i_marked,
-    input wire [15:0] i_data,
+    input wire i_d12,
+    input wire i_compl,
     input wire [1:0] i_ptype,
     input wire i_tst_fail,
     input wire i_flush
@@ -34,13 +36,12 @@ module stream_ctrl_props (
     wire o_cf, o_hard, o_run, o_tst, o_ack;
     wire [3:0] bad_q;
     wire [8:0] hold_q;
-    wire [15:0] h0_q;
     stream_ctrl dut (
         .clock(clock), .i_los(i_los), .i_wvalid(i_wvalid), .i_kind(i_kind),
-        .i_ok(i_ok), .i_void(i_void), .i_marked(i_marked), .i_data(i_data),
+        .i_ok(i_ok), .i_void(i_void), .i_marked(i_marked), .i_d12(i_d12), .i_compl(i_compl),
         .i_ptype(i_ptype), .i_tst_fail(i_tst_fail), .i_flush(i_flush),
         .o_cf(o_cf), .o_hard(o_hard), .o_run(o_run), .o_tst(o_tst),
-        .o_ack(o_ack), .bad$q(bad_q), .hold$q(hold_q), .h0$q(h0_q)
+        .o_ack(o_ack), .bad$q(bad_q), .hold$q(hold_q)
     );
 
     reg past_valid = 1'b0;
@@ -52,19 +53,17 @@ module stream_ctrl_props (
     wire bad = i_wvalid & ~i_ok & ~i_void & ~i_marked;
     // Bad words of the current run so far (saturating at RUN).
     reg [3:0] run = 4'd0;
-    // The last good H0, and the TST decision.
-    reg [15:0] h0 = 16'd0;
-    wire tst_now = good & (i_kind == H1) & (i_ptype == PT_TST) & (i_data == ~h0);
+    // The TST decision.
+    wire tst_now = good & (i_kind == H1) & (i_ptype == PT_TST) & i_compl;
     // Clocks since the last good TST (0: none yet).
     reg [9:0] age = 10'd0;
     reg ack = 1'b0;
     always @(posedge clock) begin
         if (i_flush | good) run <= 4'd0;
         else if (bad & (run != RUN)) run <= run + 4'd1;
-        if (good & (i_kind == H0)) h0 <= i_data;
         if (tst_now) begin
             age <= 10'd1;
-            ack <= h0[12];
+            ack <= ~i_d12;
         end else if (age != 0 && age != 10'd1023) age <= age + 10'd1;
     end
 
@@ -80,7 +79,6 @@ module stream_ctrl_props (
         tst_ack: assert (o_ack == ack);
         // Induction invariants.
         inv_bad: assert (bad_q == run);
-        inv_h0: assert (h0_q == h0);
         inv_hold: assert (age == 0 || age > HOLD ? hold_q == 0 : hold_q == HOLD - age);
 
         cover_run: cover (o_run);

@@ -30,6 +30,12 @@
 //! dark after such a stop ([`crate::retime::QUIET_BITS`]), so no idle can
 //! confirm it either.
 //!
+//! The held word is not copied: the outputs are the word decoder's
+//! registers, which keep it until the next group is complete — 3 bit
+//! times or more after the confirming edge, which must come within the
+//! next group's first two bits. Consumers take a word in the clock of
+//! `o_wvalid` (issue 21: one copy of a word instead of three).
+//!
 //! Latency from a word's last line bit to `o_wvalid`: CDR 2–3 clocks +
 //! framer 1 + word 1 + the registered outputs 1 ≈ 3 bit times, plus up to
 //! 2 bit times until the confirming edge.
@@ -87,6 +93,8 @@ pub struct Monitor {
     pub o_reason: Signal<Out, Bits<4>>,
     /// Word good.
     pub o_ok: Signal<Out, Bit>,
+    /// Data = NOT the previous word's.
+    pub o_compl: Signal<Out, Bit>,
     /// VOID word.
     pub o_void: Signal<Out, Bit>,
     /// Marked word (last group T, protocol §4).
@@ -102,20 +110,9 @@ pub struct Monitor {
     word: RxWord,
     last_lvl: DFF<Bit>,
     quiet: DFF<Bits<3>>,
-    // A confirmed word is on the outputs (they show the p_* registers).
+    // A held word waits for its confirming edge.
     emit: DFF<Bit>,
     p_valid: DFF<Bit>,
-    p_kind: DFF<Bits<2>>,
-    p_slot: DFF<Bits<12>>,
-    p_data: DFF<Bits<16>>,
-    p_alive: DFF<Bit>,
-    p_alarm: DFF<Bit>,
-    p_reason: DFF<Bits<4>>,
-    p_ok: DFF<Bit>,
-    p_void: DFF<Bit>,
-    p_marked: DFF<Bit>,
-    p_own: DFF<Bit>,
-    p_ptype: DFF<Bits<2>>,
     conf_edge: Signal<Local, Bit>,
     drop_after: Constant<Bits<3>>,
 }
@@ -147,6 +144,7 @@ impl Monitor {
             o_alarm: Default::default(),
             o_reason: Default::default(),
             o_ok: Default::default(),
+            o_compl: Default::default(),
             o_void: Default::default(),
             o_marked: Default::default(),
             o_own: Default::default(),
@@ -159,17 +157,6 @@ impl Monitor {
             quiet: Default::default(),
             emit: Default::default(),
             p_valid: Default::default(),
-            p_kind: Default::default(),
-            p_slot: Default::default(),
-            p_data: Default::default(),
-            p_alive: Default::default(),
-            p_alarm: Default::default(),
-            p_reason: Default::default(),
-            p_ok: Default::default(),
-            p_void: Default::default(),
-            p_marked: Default::default(),
-            p_own: Default::default(),
-            p_ptype: Default::default(),
             conf_edge: Default::default(),
             drop_after: Constant::new(DROP_CLOCKS.to_bits()),
         }
@@ -179,10 +166,7 @@ impl Monitor {
 impl Logic for Monitor {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, last_lvl, quiet, emit, p_valid, p_kind, p_slot, p_data, p_alive, p_alarm,
-            p_reason, p_ok, p_void, p_marked, p_own, p_ptype
-        );
+        dff_setup!(self, clock, last_lvl, quiet, emit, p_valid);
         self.cdr.clock.next = self.clock.val();
         self.framer.clock.next = self.clock.val();
         self.word.clock.next = self.clock.val();
@@ -199,6 +183,7 @@ impl Logic for Monitor {
         self.word.i_start.next = self.framer.o_start.val();
         self.word.i_gvalid.next = self.framer.o_gvalid.val();
         self.word.i_group.next = self.framer.o_group.val();
+        self.word.i_idle.next = self.framer.o_idle.val();
         self.word.i_slots_m1.next = self.i_slots_m1.val();
         self.word.i_address.next = self.i_address.val();
         self.o_los.next = self.cdr.o_los.val();
@@ -222,17 +207,18 @@ impl Logic for Monitor {
         // a node decides on a word are a clock apart, issue 20).
         self.emit.d.next = false;
         self.o_wvalid.next = self.emit.q.val();
-        self.o_kind.next = self.p_kind.q.val();
-        self.o_slot.next = self.p_slot.q.val();
-        self.o_data.next = self.p_data.q.val();
-        self.o_alive.next = self.p_alive.q.val();
-        self.o_alarm.next = self.p_alarm.q.val();
-        self.o_reason.next = self.p_reason.q.val();
-        self.o_ok.next = self.p_ok.q.val();
-        self.o_void.next = self.p_void.q.val();
-        self.o_marked.next = self.p_marked.q.val();
-        self.o_own.next = self.p_own.q.val();
-        self.o_ptype.next = self.p_ptype.q.val();
+        self.o_kind.next = self.word.o_kind.val();
+        self.o_slot.next = self.word.o_slot.val();
+        self.o_data.next = self.word.o_data.val();
+        self.o_alive.next = self.word.o_alive.val();
+        self.o_alarm.next = self.word.o_alarm.val();
+        self.o_reason.next = self.word.o_reason.val();
+        self.o_ok.next = self.word.o_ok.val();
+        self.o_compl.next = self.word.o_compl.val();
+        self.o_void.next = self.word.o_void.val();
+        self.o_marked.next = self.word.o_marked.val();
+        self.o_own.next = self.word.o_own.val();
+        self.o_ptype.next = self.word.o_ptype.val();
         if self.p_valid.q.val() & self.conf_edge.val() {
             self.emit.d.next = true;
             self.p_valid.d.next = false;
@@ -245,17 +231,6 @@ impl Logic for Monitor {
         if self.word.o_wvalid.val() {
             self.p_valid.d.next = !self.conf_edge.val();
             self.emit.d.next = self.conf_edge.val();
-            self.p_kind.d.next = self.word.o_kind.val();
-            self.p_slot.d.next = self.word.o_slot.val();
-            self.p_data.d.next = self.word.o_data.val();
-            self.p_alive.d.next = self.word.o_alive.val();
-            self.p_alarm.d.next = self.word.o_alarm.val();
-            self.p_reason.d.next = self.word.o_reason.val();
-            self.p_ok.d.next = self.word.o_ok.val();
-            self.p_void.d.next = self.word.o_void.val();
-            self.p_marked.d.next = self.word.o_marked.val();
-            self.p_own.d.next = self.word.o_own.val();
-            self.p_ptype.d.next = self.word.o_ptype.val();
         }
     }
 }

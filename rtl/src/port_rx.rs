@@ -148,7 +148,8 @@ impl Logic for PortRx {
         self.ctrl.i_ok.next = self.mon.o_ok.val();
         self.ctrl.i_void.next = self.mon.o_void.val();
         self.ctrl.i_marked.next = self.mon.o_marked.val();
-        self.ctrl.i_data.next = self.mon.o_data.val();
+        self.ctrl.i_d12.next = self.mon.o_data.val().get_bit(12);
+        self.ctrl.i_compl.next = self.mon.o_compl.val();
         self.ctrl.i_ptype.next = self.mon.o_ptype.val();
         self.ctrl.i_tst_fail.next = self.i_tst_fail.val();
         self.ctrl.i_flush.next = self.i_flush.val();

@@ -89,6 +89,8 @@ pub const DEPTH: u64 = 8;
 // The phase decision (`late`, `early` in `update`) is written out for a
 // band of 16 … 24 samples and 8 samples per buffered bit.
 const _: () = assert!(TARGET + BAND == 24 && TARGET - BAND == 16);
+// The overflow decision (`over`) is written out for a buffer of 8 bits.
+const _: () = assert!(DEPTH == 8);
 
 /// Elastic output buffer with its own bit timing.
 #[derive(LogicBlock)]
@@ -108,7 +110,6 @@ pub struct Retime {
     quiet_bits: Constant<Bits<5>>,
     votes: Constant<Bits<3>>,
     gap_min: Constant<Bits<4>>,
-    depth: Constant<Bits<4>>,
     sr: DFF<Bits<8>>,
     cnt: DFF<Bits<4>>,
     rem: DFF<Bits<3>>,
@@ -145,6 +146,8 @@ pub struct Retime {
     c_ge4: Signal<Local, Bit>,
     late: Signal<Local, Bit>,
     early: Signal<Local, Bit>,
+    start2: Signal<Local, Bit>,
+    over: Signal<Local, Bit>,
 }
 
 impl Default for Retime {
@@ -159,7 +162,6 @@ impl Default for Retime {
             quiet_bits: Constant::new((QUIET_BITS - 2).to_bits()),
             votes: Constant::new(VOTES.to_bits()),
             gap_min: Constant::new(GAP.to_bits()),
-            depth: Constant::new(DEPTH.to_bits()),
             sr: Default::default(),
             cnt: Default::default(),
             rem: Default::default(),
@@ -196,6 +198,8 @@ impl Default for Retime {
             c_ge4: Default::default(),
             late: Default::default(),
             early: Default::default(),
+            start2: Default::default(),
+            over: Default::default(),
         }
     }
 }
@@ -395,7 +399,22 @@ impl Logic for Retime {
             // Dark after an underflow: what arrives is not sent.
             self.cnt_next.next = 0.into();
         }
-        if !self.run.q.val() & self.i_valid.val() & (self.cnt_next.val() == 2) {
+        // (The start and the overflow are read from the count itself, not
+        // from `cnt_next`'s arithmetic: this is the slave's critical path,
+        // issue 20. Not running nothing is sent, so the count after a write
+        // is 2 when it was 1. The count after this clock is cnt + 1, cnt − 1
+        // or cnt (4 bits, wrapping), 0 in the dark; writes in the dark still
+        // count, so cnt can exceed DEPTH there.)
+        self.start2.next =
+            !self.run.q.val() & self.i_valid.val() & !self.dark.q.val() & (self.cnt.q.val() == 1);
+        self.over.next = !self.dark.q.val()
+            & ((self.i_valid.val()
+                & !self.take.val()
+                & (self.cnt.q.val() >= 8)
+                & (self.cnt.q.val() != 15))
+                | (self.take.val() & !self.i_valid.val() & (self.cnt.q.val() >= 10))
+                | ((self.i_valid.val() == self.take.val()) & (self.cnt.q.val() >= 9)));
+        if self.start2.val() {
             // The second bit: send from the next bit boundary on (the grid
             // keeps its phase, so the line has no short bit; the wait is
             // 13–22, and the band pulls it to the target).
@@ -404,7 +423,7 @@ impl Logic for Retime {
             self.lo.d.next = 0.into();
             self.gap.d.next = 0.into();
         }
-        if self.under.val() | (self.cnt_next.val() > self.depth.val()) {
+        if self.under.val() | self.over.val() {
             // Underflow or overflow: start again with the next bit.
             self.slip.d.next = true;
             self.run.d.next = false;

@@ -19,6 +19,7 @@
 //! | `o_start` | out | 1 | clock | J K found; the next group is the packet's first |
 //! | `o_gvalid` | out | 1 | clock | `o_group` holds a group of the packet |
 //! | `o_group` | out | 5 | clock | code group, bit 4 first on the line |
+//! | `o_idle` | out | 1 | clock | `o_group` is the idle group 11111 (decided with it, so the word layer's packet-end check starts from a flip-flop) |
 //! | `o_inpkt` | out | 1 | clock | aligned inside a packet |
 //!
 //! Latency: registered outputs, one clock after the `i_valid` that completes
@@ -55,6 +56,8 @@ pub struct RxFramer {
     pub o_gvalid: Signal<Out, Bit>,
     /// The group.
     pub o_group: Signal<Out, Bits<5>>,
+    /// The group is an idle (11111).
+    pub o_idle: Signal<Out, Bit>,
     /// Inside a packet.
     pub o_inpkt: Signal<Out, Bit>,
     prev: DFF<Bit>,
@@ -64,6 +67,7 @@ pub struct RxFramer {
     start: DFF<Bit>,
     gvalid: DFF<Bit>,
     group: DFF<Bits<5>>,
+    idle: DFF<Bit>,
     shifted: Signal<Local, Bits<10>>,
     jk: Constant<Bits<10>>,
 }
@@ -79,6 +83,7 @@ impl RxFramer {
             o_start: Default::default(),
             o_gvalid: Default::default(),
             o_group: Default::default(),
+            o_idle: Default::default(),
             o_inpkt: Default::default(),
             prev: Default::default(),
             window: Default::default(),
@@ -87,6 +92,7 @@ impl RxFramer {
             start: Default::default(),
             gvalid: Default::default(),
             group: Default::default(),
+            idle: Default::default(),
             shifted: Default::default(),
             jk: Constant::new(JK_BITS.to_bits()),
         }
@@ -102,7 +108,7 @@ impl Default for RxFramer {
 impl Logic for RxFramer {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, prev, window, inpkt, count, start, gvalid, group);
+        dff_setup!(self, clock, prev, window, inpkt, count, start, gvalid, group, idle);
         self.start.d.next = false;
         self.gvalid.d.next = false;
         self.shifted.next = self.window.q.val() << 1;
@@ -117,6 +123,7 @@ impl Logic for RxFramer {
                     self.count.d.next = 0.into();
                     self.gvalid.d.next = true;
                     self.group.d.next = self.shifted.val().get_bits::<5>(0);
+                    self.idle.d.next = self.shifted.val().get_bits::<5>(0) == 31;
                 } else {
                     self.count.d.next = self.count.q.val() + 1;
                 }
@@ -132,6 +139,7 @@ impl Logic for RxFramer {
         self.o_start.next = self.start.q.val();
         self.o_gvalid.next = self.gvalid.q.val();
         self.o_group.next = self.group.q.val();
+        self.o_idle.next = self.idle.q.val();
         self.o_inpkt.next = self.inpkt.q.val();
     }
 }

@@ -19,6 +19,7 @@
 //! | `i_start` | in | 1 | clock | packet start (J K found) |
 //! | `i_gvalid` | in | 1 | clock | `i_group` is valid |
 //! | `i_group` | in | 5 | clock | code group |
+//! | `i_idle` | in | 1 | clock | `i_group` is the idle group 11111 (from [`crate::rx_framer`]'s register) |
 //! | `i_slots_m1` | in | 12 | static | configured slot count − 1 |
 //! | `i_address` | in | 12 | static | node address (home slot) |
 //! | `o_end` | out | 1 | clock | packet over (to the framer's `i_end`) |
@@ -29,6 +30,7 @@
 //! | `o_alive`, `o_alarm` | out | 1 | clock | flag bits |
 //! | `o_reason` | out | 4 | clock | reason nibble (ext only, else 0) |
 //! | `o_ok` | out | 1 | clock | all groups data, both parities odd |
+//! | `o_compl` | out | 1 | clock | its 16 data bits are the complement of the previous word's (a TST's H1 = NOT H0, protocol §9; meaningful for a good word whose predecessor in the packet was good) |
 //! | `o_void` | out | 1 | clock | all groups S (VOID word) |
 //! | `o_marked` | out | 1 | clock | bad, its last group T: a forwarder marked it (damaged on an earlier fibre, protocol §4) |
 //! | `o_own` | out | 1 | clock | slot word of `i_address` |
@@ -36,6 +38,10 @@
 //! | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST) |
 //!
 //! Latency: outputs are registered, one clock after the word's last group;
+//! the word's fields (`o_kind` … `o_ptype`) are the decoder's own registers,
+//! not copies: they hold from `o_wvalid` until the next group arrives (on a
+//! line at least 5 bit times later), and a consumer takes them before that
+//! (issue 21: no second copy of a word in the slave);
 //! `o_end` and `o_hdr_bad` one clock later (the header is checked on the
 //! registered word).
 //!
@@ -63,6 +69,8 @@ pub struct RxWord {
     pub i_gvalid: Signal<In, Bit>,
     /// Code group.
     pub i_group: Signal<In, Bits<5>>,
+    /// The group is an idle.
+    pub i_idle: Signal<In, Bit>,
     /// Slot count − 1.
     pub i_slots_m1: Signal<In, Bits<12>>,
     /// Node address.
@@ -85,6 +93,8 @@ pub struct RxWord {
     pub o_reason: Signal<Out, Bits<4>>,
     /// Word good.
     pub o_ok: Signal<Out, Bit>,
+    /// Data bits = NOT the previous word's.
+    pub o_compl: Signal<Out, Bit>,
     /// VOID word.
     pub o_void: Signal<Out, Bit>,
     /// Marked word (last group T).
@@ -124,12 +134,11 @@ pub struct RxWord {
     end_r: DFF<Bit>,
     wvalid_r: DFF<Bit>,
     kind_r: DFF<Bits<2>>,
-    slot_r: DFF<Bits<12>>,
-    data_r: DFF<Bits<16>>,
-    alive_r: DFF<Bit>,
-    alarm_r: DFF<Bit>,
+    adv: DFF<Bit>,
     reason_r: DFF<Bits<4>>,
     ok_r: DFF<Bit>,
+    compl: DFF<Bit>,
+    compl_r: DFF<Bit>,
     void_r: DFF<Bit>,
     marked_r: DFF<Bit>,
     own_r: DFF<Bit>,
@@ -142,6 +151,7 @@ pub struct RxWord {
     w_all_data: Signal<Local, Bit>,
     w_all_s: Signal<Local, Bit>,
     w_ok: Signal<Local, Bit>,
+    w_compl: Signal<Local, Bit>,
 }
 
 impl RxWord {
@@ -153,6 +163,7 @@ impl RxWord {
             i_start: Default::default(),
             i_gvalid: Default::default(),
             i_group: Default::default(),
+            i_idle: Default::default(),
             i_slots_m1: Default::default(),
             i_address: Default::default(),
             o_end: Default::default(),
@@ -164,6 +175,7 @@ impl RxWord {
             o_alarm: Default::default(),
             o_reason: Default::default(),
             o_ok: Default::default(),
+            o_compl: Default::default(),
             o_void: Default::default(),
             o_marked: Default::default(),
             o_own: Default::default(),
@@ -204,12 +216,11 @@ impl RxWord {
             end_r: Default::default(),
             wvalid_r: Default::default(),
             kind_r: Default::default(),
-            slot_r: Default::default(),
-            data_r: Default::default(),
-            alive_r: Default::default(),
-            alarm_r: Default::default(),
+            adv: Default::default(),
             reason_r: Default::default(),
             ok_r: Default::default(),
+            compl: Default::default(),
+            compl_r: Default::default(),
             void_r: Default::default(),
             marked_r: Default::default(),
             own_r: Default::default(),
@@ -221,6 +232,7 @@ impl RxWord {
             w_all_data: Default::default(),
             w_all_s: Default::default(),
             w_ok: Default::default(),
+            w_compl: Default::default(),
         }
     }
 }
@@ -230,8 +242,8 @@ impl Logic for RxWord {
     fn update(&mut self) {
         dff_setup!(
             self, clock, gcount, data, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
-            active, wcount, slot, ptype, check, end_r, wvalid_r, kind_r, slot_r, data_r, alive_r,
-            alarm_r, reason_r, ok_r, void_r, marked_r, own_r, hdr_bad_r, idles
+            active, wcount, slot, ptype, check, end_r, wvalid_r, kind_r, adv, reason_r, ok_r,
+            compl, compl_r, void_r, marked_r, own_r, hdr_bad_r, idles
         );
         self.dec.i_code.next = self.i_group.val();
         self.nib.next = self.dec.o_nibble.val();
@@ -259,6 +271,23 @@ impl Logic for RxWord {
         self.w_all_data.next = self.all_data.q.val() & self.dec.o_data.val();
         self.w_all_s.next = self.all_s.q.val() & self.dec.o_s.val();
         self.w_ok.next = self.w_all_data.val() & self.w_pa.val() & self.w_pb.val();
+        // The bits a group shifts out of the bottom of `data` are the
+        // previous word's at the places this group's bits take: comparing
+        // them group by group tells whether this word's data is the
+        // complement of the previous one's, without a copy of that word.
+        self.w_compl.next =
+            self.compl.q.val() & (self.nib.val() == !self.data.q.val().get_bits::<4>(0));
+        if self.gcount.q.val() == 0 {
+            self.w_compl.next =
+                self.nib.val().get_bits::<2>(0) == !self.data.q.val().get_bits::<2>(0);
+        }
+        if self.gcount.q.val() == self.last_group.val() {
+            self.w_compl.next = self.compl.q.val()
+                & (self.nib.val().get_bits::<2>(1) == !self.data.q.val().get_bits::<2>(0));
+        }
+        if (self.gcount.q.val() == 1) & (self.last_group.val() == 5) {
+            self.w_compl.next = self.compl.q.val();
+        }
 
         self.end_r.d.next = false;
         self.wvalid_r.d.next = false;
@@ -269,6 +298,7 @@ impl Logic for RxWord {
             self.gcount.d.next = 0.into();
             self.wcount.d.next = 0.into();
             self.slot.d.next = 0.into();
+            self.adv.d.next = false;
             self.ptype.d.next = 0.into();
             self.par_a.d.next = false;
             self.par_b.d.next = false;
@@ -277,7 +307,7 @@ impl Logic for RxWord {
             self.idles.d.next = 0.into();
         } else if self.i_gvalid.val()
             & self.active.q.val()
-            & (self.i_group.val() == 31)
+            & self.i_idle.val()
             & (self.idles.q.val() == 2)
         {
             // The third idle group in a row: the packet was cut short (a
@@ -288,13 +318,19 @@ impl Logic for RxWord {
             self.idles.d.next = 0.into();
         } else if self.i_gvalid.val() & self.active.q.val() {
             self.idles.d.next = 0.into();
-            if self.i_group.val() == 31 {
+            if self.i_idle.val() {
                 self.idles.d.next = self.idles.q.val() + 1;
             }
             self.data.d.next = self.w_data.val();
             if self.gcount.q.val() == 0 {
                 self.alarm0.d.next = self.nib.val().get_bit(3);
                 self.alive0.d.next = self.nib.val().get_bit(2);
+                // The slot number moves on as the next slot word begins,
+                // so the one just published stays on `o_slot` until then.
+                if self.adv.q.val() {
+                    self.slot.d.next = self.slot.q.val() + 1;
+                    self.adv.d.next = false;
+                }
             }
             if self.gcount.q.val() == 1 {
                 self.reason.d.next = self.nib.val();
@@ -303,6 +339,7 @@ impl Logic for RxWord {
             self.par_b.d.next = self.w_pb.val();
             self.all_data.d.next = self.w_all_data.val();
             self.all_s.d.next = self.w_all_s.val();
+            self.compl.d.next = self.w_compl.val();
             self.gcount.d.next = self.gcount.q.val() + 1;
             if self.gcount.q.val() == self.last_group.val() {
                 // Word complete: publish it and start the next one.
@@ -313,15 +350,12 @@ impl Logic for RxWord {
                 self.all_s.d.next = true;
                 self.wvalid_r.d.next = true;
                 self.kind_r.d.next = self.wcount.q.val();
-                self.slot_r.d.next = self.slot.q.val();
-                self.data_r.d.next = self.w_data.val();
-                self.alive_r.d.next = self.alive0.q.val();
-                self.alarm_r.d.next = self.alarm0.q.val();
                 self.reason_r.d.next = 0.into();
                 if self.last_group.val() == 5 {
                     self.reason_r.d.next = self.reason.q.val();
                 }
                 self.ok_r.d.next = self.w_ok.val();
+                self.compl_r.d.next = self.w_compl.val();
                 self.void_r.d.next = self.w_all_s.val();
                 // The forwarder's mark, T (merkur_model::line::CODE_T).
                 self.marked_r.d.next = self.i_group.val() == 0b01101;
@@ -335,7 +369,7 @@ impl Logic for RxWord {
                 } else if self.wcount.q.val() == 1 {
                     self.wcount.d.next = 2.into();
                 } else {
-                    self.slot.d.next = self.slot.q.val() + 1;
+                    self.adv.d.next = true;
                 }
             }
         }
@@ -346,9 +380,9 @@ impl Logic for RxWord {
             if self.kind_r.q.val() == 0 {
                 // H0: type and slot count.
                 if !self.ok_r.q.val()
-                    | self.alarm_r.q.val()
-                    | ((self.data_r.q.val().get_bits::<2>(14) == 0)
-                        & (self.data_r.q.val().get_bits::<12>(0) != self.i_slots_m1.val()))
+                    | self.alarm0.q.val()
+                    | ((self.data.q.val().get_bits::<2>(14) == 0)
+                        & (self.data.q.val().get_bits::<12>(0) != self.i_slots_m1.val()))
                 {
                     self.hdr_bad_r.d.next = true;
                     self.end_r.d.next = true;
@@ -356,7 +390,7 @@ impl Logic for RxWord {
                 }
             } else if self.kind_r.q.val() == 1 {
                 // H1; SEC and TST packets end here.
-                if !self.ok_r.q.val() | self.alarm_r.q.val() {
+                if !self.ok_r.q.val() | self.alarm0.q.val() {
                     self.hdr_bad_r.d.next = self.ptype.q.val() == 0;
                     self.end_r.d.next = true;
                     self.active.d.next = false;
@@ -364,7 +398,7 @@ impl Logic for RxWord {
                     self.end_r.d.next = true;
                     self.active.d.next = false;
                 }
-            } else if self.slot_r.q.val() == self.i_slots_m1.val() {
+            } else if self.slot.q.val() == self.i_slots_m1.val() {
                 self.end_r.d.next = true;
                 self.active.d.next = false;
             }
@@ -372,12 +406,13 @@ impl Logic for RxWord {
         self.o_end.next = self.end_r.q.val();
         self.o_wvalid.next = self.wvalid_r.q.val();
         self.o_kind.next = self.kind_r.q.val();
-        self.o_slot.next = self.slot_r.q.val();
-        self.o_data.next = self.data_r.q.val();
-        self.o_alive.next = self.alive_r.q.val();
-        self.o_alarm.next = self.alarm_r.q.val();
+        self.o_slot.next = self.slot.q.val();
+        self.o_data.next = self.data.q.val();
+        self.o_alive.next = self.alive0.q.val();
+        self.o_alarm.next = self.alarm0.q.val();
         self.o_reason.next = self.reason_r.q.val();
         self.o_ok.next = self.ok_r.q.val();
+        self.o_compl.next = self.compl_r.q.val();
         self.o_void.next = self.void_r.q.val();
         self.o_marked.next = self.marked_r.q.val();
         self.o_own.next = self.own_r.q.val();

@@ -28,7 +28,8 @@
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_los` | in | 1 | clock | loss of signal |
-//! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_data`, `i_ptype` | in | | clock | word outputs of the receive chain |
+//! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_compl`, `i_ptype` | in | | clock | word outputs of the receive chain (`i_compl`: data = NOT the previous word's, [`crate::rx_word`]) |
+//! | `i_d12` | in | 1 | clock | the word's data bit 12 (a TST's H1 carries NOT ACK there) |
 //! | `i_tst_fail` | in | 1 | static | a test signal counts as channel failure |
 //! | `i_flush` | in | 1 | clock | the input moved to another line: the run of bad words restarts |
 //! | `o_cf` | out | 1 | clock | channel failure (`o_hard` or `o_run`) |
@@ -69,8 +70,10 @@ pub struct StreamCtrl {
     pub i_void: Signal<In, Bit>,
     /// Marked word (damaged on an earlier fibre).
     pub i_marked: Signal<In, Bit>,
-    /// Word data.
-    pub i_data: Signal<In, Bits<16>>,
+    /// The word's data bit 12 (in a TST's H1: NOT ACK).
+    pub i_d12: Signal<In, Bit>,
+    /// The word's data is the complement of the previous word's.
+    pub i_compl: Signal<In, Bit>,
     /// Packet type.
     pub i_ptype: Signal<In, Bits<2>>,
     /// A test signal counts as channel failure.
@@ -89,7 +92,6 @@ pub struct StreamCtrl {
     pub o_ack: Signal<Out, Bit>,
     hold_start: Constant<Bits<9>>,
     bad_max: Constant<Bits<4>>,
-    h0: DFF<Bits<16>>,
     bad: DFF<Bits<4>>,
     hold: DFF<Bits<9>>,
     tst: DFF<Bit>,
@@ -108,7 +110,8 @@ impl Default for StreamCtrl {
             i_ok: Default::default(),
             i_void: Default::default(),
             i_marked: Default::default(),
-            i_data: Default::default(),
+            i_d12: Default::default(),
+            i_compl: Default::default(),
             i_ptype: Default::default(),
             i_tst_fail: Default::default(),
             i_flush: Default::default(),
@@ -119,7 +122,6 @@ impl Default for StreamCtrl {
             o_ack: Default::default(),
             hold_start: Constant::new((TST_HOLD_CLOCKS - 1).to_bits()),
             bad_max: Constant::new(BAD_WORDS.to_bits()),
-            h0: Default::default(),
             bad: Default::default(),
             hold: Default::default(),
             tst: Default::default(),
@@ -133,7 +135,7 @@ impl Default for StreamCtrl {
 impl Logic for StreamCtrl {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, h0, bad, hold, tst, ack, hard, run);
+        dff_setup!(self, clock, bad, hold, tst, ack, hard, run);
         if self.i_wvalid.val() {
             if self.i_ok.val() {
                 self.bad.d.next = 0.into();
@@ -143,14 +145,14 @@ impl Logic for StreamCtrl {
             {
                 self.bad.d.next = self.bad.q.val() + 1;
             }
-            if (self.i_kind.val() == 0) & self.i_ok.val() {
-                self.h0.d.next = self.i_data.val();
-            }
         }
         if self.i_flush.val() {
             self.bad.d.next = 0.into();
         }
-        // A good TST packet: H1 completes good, type 10, H1 = NOT H0.
+        // A good TST packet: H1 completes good, type 10, H1 = NOT H0 (the
+        // word decoder compares them as H1 arrives; H1 follows a good H0,
+        // or the packet would have ended at it). ACK is H0's bit 12, i.e.
+        // NOT H1's.
         if self.hold.q.val() != 0 {
             self.hold.d.next = self.hold.q.val() - 1;
         } else {
@@ -160,10 +162,10 @@ impl Logic for StreamCtrl {
             & (self.i_kind.val() == 1)
             & self.i_ok.val()
             & (self.i_ptype.val() == 2)
-            & (self.i_data.val() == !self.h0.q.val())
+            & self.i_compl.val()
         {
             self.tst.d.next = true;
-            self.ack.d.next = self.h0.q.val().get_bit(12);
+            self.ack.d.next = !self.i_d12.val();
             self.hold.d.next = self.hold_start.val();
         }
         self.hard.d.next = self.i_los.val() | (self.tst.q.val() & self.i_tst_fail.val());

@@ -21,9 +21,10 @@
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | all | user requests (asynchronous; synchronised here) |
 //! | `o_mode` | out | 2 | all | switchbox mode (0 N, 1 WU, 2 WD) |
 //! | `o_failsafe` | out | 1 | all | failsafe |
-//! | `i_diag_sel` | in | 3 | all | which value `o_diag` shows (below) |
-//! | `o_diag` | out | 16 | all | 0 perr, 1 ferr, 2 aerr, 3 serr, 4 hop, 5 frames sent, 6 actuator register (values a kind lacks read 0) |
-//! | `i_sensor` | in | 16 | slave | sensor value (asynchronous; synchronised here) |
+//! | `i_diag_sel` | in | 3 | all (with `diag`) | which value `o_diag` shows (below) |
+//! | `o_diag` | out | 16 | all (with `diag`) | 0 perr, 1 ferr, 2 aerr, 3 serr, 4 hop, 5 frames sent, 6 actuator register (values a kind lacks read 0) |
+//! | `i_sensor` | in | 16 | slave (without `diag`: sensor) | sensor value (asynchronous; synchronised here) |
+//! | `o_act` | out | 16 | actuator without `diag` | actuator output register |
 //! | `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr[13:0]`, `i_wb_dat[15:0]` | in | | master, SM | Wishbone B4 host port on `clk` ([`crate::mdb`]) |
 //! | `o_wb_dat[15:0]`, `o_wb_ack` | out | | master, SM | Wishbone read data, acknowledge |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_running` | out | 1 | master, SM | interrupts received, ring started |
@@ -66,6 +67,11 @@ pub struct NodeStatic {
     pub slots: usize,
     /// Cycle period in bit times (special master only).
     pub period: u32,
+    /// The diagnostic mux (`i_diag_sel`, `o_diag`) and the error counters
+    /// behind it. Without it (`merkur synth --diag off`) the top is lean:
+    /// a sensor has `i_sensor`, an actuator its register on `o_act`, and
+    /// synthesis drops the counters that nothing reads (docs/synthesis.md).
+    pub diag: bool,
 }
 
 /// The device-independent capture and output stages (see the module doc).
@@ -149,6 +155,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
     ));
     v.push_str(&node_verilog(st.kind, st.slots));
     v.push_str(DDR_IO);
+    let act = st.kind == Kind::Actuator;
     let mut ports = vec![
         "clk",
         "clk90",
@@ -161,12 +168,17 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
         "i_fs_req",
         "o_mode",
         "o_failsafe",
-        "i_diag_sel",
-        "o_diag",
     ];
-    if slave {
+    if st.diag {
+        ports.extend(["i_diag_sel", "o_diag"]);
+    }
+    if slave && (st.diag || !act) {
         ports.push("i_sensor");
-    } else {
+    }
+    if act && !st.diag {
+        ports.push("o_act");
+    }
+    if !slave {
         ports.extend([
             "i_wb_cyc",
             "i_wb_stb",
@@ -186,12 +198,18 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
     v.push_str(
         "    input wire clk;\n    input wire clk90;\n    input wire pi;\n    input wire si;\n\
          \x20   output wire po;\n    output wire so;\n    input wire i_irq1;\n    input wire i_irq2;\n\
-         \x20   input wire i_fs_req;\n    output wire [1:0] o_mode;\n    output wire o_failsafe;\n\
-         \x20   input wire [2:0] i_diag_sel;\n    output reg [15:0] o_diag = 16'd0;\n",
+         \x20   input wire i_fs_req;\n    output wire [1:0] o_mode;\n    output wire o_failsafe;\n",
     );
-    if slave {
+    if st.diag {
+        v.push_str("    input wire [2:0] i_diag_sel;\n    output reg [15:0] o_diag = 16'd0;\n");
+    }
+    if ports.contains(&"i_sensor") {
         v.push_str("    input wire [15:0] i_sensor;\n");
-    } else {
+    }
+    if ports.contains(&"o_act") {
+        v.push_str("    output wire [15:0] o_act;\n");
+    }
+    if !slave {
         v.push_str(
             "    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
              \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n\
@@ -208,9 +226,22 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
          \x20   merkur_ddr_out out_so(.clk(clk), .d(so_pair), .q(so));\n\
          \x20   // User requests: two-flip-flop synchronisers.\n\
          \x20   reg [2:0] req_m = 3'd0;\n    reg [2:0] req = 3'd0;\n\
-         \x20   always @(posedge clk) begin\n        req_m <= {i_fs_req, i_irq2, i_irq1};\n        req <= req_m;\n    end\n\
-         \x20   wire [15:0] perr;\n    wire [15:0] ferr;\n",
+         \x20   always @(posedge clk) begin\n        req_m <= {i_fs_req, i_irq2, i_irq1};\n        req <= req_m;\n    end\n",
     );
+    // Values only the diagnostic mux reads: without it, named as unused
+    // (and removed by synthesis).
+    let (lint_off, lint_on) = if st.diag {
+        ("", "")
+    } else {
+        (
+            "    // Read only by the diagnostic mux, which this build leaves out.\n\
+             \x20   /* verilator lint_off UNUSEDSIGNAL */\n",
+            "    /* verilator lint_on UNUSEDSIGNAL */\n",
+        )
+    };
+    v.push_str(&format!(
+        "{lint_off}    wire [15:0] perr;\n    wire [15:0] ferr;\n{lint_on}"
+    ));
     let a = st.address;
     let s1 = st.slots - 1;
     let to = cs_timeout_clocks(st.period as u64);
@@ -221,18 +252,29 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
          \x20       .o_mode(o_mode), .o_failsafe(o_failsafe), .o_perr(perr), .o_ferr(ferr)"
     );
     let diag_tail = if slave {
-        let act = u8::from(st.kind == Kind::Actuator);
+        let actb = u8::from(act);
+        let sensor = if ports.contains(&"i_sensor") {
+            v.push_str(
+                "    reg [15:0] sensor_m = 16'd0;\n    reg [15:0] sensor = 16'd0;\n\
+                 \x20   always @(posedge clk) begin\n        sensor_m <= i_sensor;\n        sensor <= sensor_m;\n    end\n",
+            );
+            "sensor"
+        } else {
+            "16'd0"
+        };
+        if ports.contains(&"o_act") {
+            v.push_str("    wire [15:0] act_data;\n    assign o_act = act_data;\n");
+        } else {
+            v.push_str(&format!("{lint_off}    wire [15:0] act_data;\n{lint_on}"));
+        }
         v.push_str(&format!(
-            "    reg [15:0] sensor_m = 16'd0;\n    reg [15:0] sensor = 16'd0;\n\
-             \x20   always @(posedge clk) begin\n        sensor_m <= i_sensor;\n        sensor <= sensor_m;\n    end\n\
-             \x20   wire [15:0] act_data;\n\
-             \x20   // Master-mode outputs of the slave module, unused in a slave.\n\
+            "    // Master-mode outputs of the slave module, unused in a slave.\n\
              \x20   /* verilator lint_off UNUSEDSIGNAL */\n\
              \x20   wire [11:0] nc_fwd_slot;\n    wire nc_regen;\n    wire nc_wvalid;\n    wire [1:0] nc_kind;\n\
              \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire nc_ok;\n    wire nc_hdr_bad;\n\
              \x20   /* verilator lint_on UNUSEDSIGNAL */\n\
              \x20   {}  node(\n        {common},\n\
-             \x20       .i_actuator(1'b{act}), .i_sensor_data(sensor),\n\
+             \x20       .i_actuator(1'b{actb}), .i_sensor_data({sensor}),\n\
              \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
              \x20       .o_fwd_slot(nc_fwd_slot), .o_regen(nc_regen), .o_wvalid(nc_wvalid), .o_kind(nc_kind),\n\
              \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad),\n\
@@ -241,7 +283,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
         ));
         "            3'd6: o_diag <= act_data;\n"
     } else {
-        v.push_str("    wire [15:0] aerr;\n");
+        v.push_str(&format!("{lint_off}    wire [15:0] aerr;\n"));
         let extra = if sm {
             v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
             format!(
@@ -251,6 +293,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
         } else {
             String::new()
         };
+        v.push_str(lint_on);
         v.push_str(&format!(
             "    {} node(\n        {common},\n\
              \x20       .i_wb_cyc(i_wb_cyc), .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),\n\
@@ -266,10 +309,13 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             "            3'd2: o_diag <= aerr;\n"
         }
     };
-    v.push_str(&format!(
-        "    always @(posedge clk)\n        case (i_diag_sel)\n\
-         \x20           3'd0: o_diag <= perr;\n            3'd1: o_diag <= ferr;\n{diag_tail}\
-         \x20           default: o_diag <= 16'd0;\n        endcase\nendmodule\n"
-    ));
+    if st.diag {
+        v.push_str(&format!(
+            "    always @(posedge clk)\n        case (i_diag_sel)\n\
+             \x20           3'd0: o_diag <= perr;\n            3'd1: o_diag <= ferr;\n{diag_tail}\
+             \x20           default: o_diag <= 16'd0;\n        endcase\n"
+        ));
+    }
+    v.push_str("endmodule\n");
     Ok(v)
 }

@@ -86,6 +86,13 @@ pub fn ulx3s_verilog(st: &NodeStatic) -> Result<String, String> {
             st.kind.name()
         ));
     }
+    if !st.diag {
+        return Err(
+            "the ULX3S top wires the diagnostic mux to the board (its DIP switch and \
+                    header J1): build it with the diagnostic mux"
+                .into(),
+        );
+    }
     let mut v = node_top(st)?;
     v.push_str(TOP);
     Ok(v)

@@ -265,14 +265,20 @@ pub fn xem6010_verilog(st: &NodeStatic) -> Result<String, String> {
             st.kind.name()
         ));
     }
-    let mut v = node_top(st)?;
-    v.push_str(CORE);
+    let mut v = xem6010_core_verilog(st)?;
     v.push_str(TOP);
     Ok(v)
 }
 
 /// The core alone (node + bridge), for simulation tests.
 pub fn xem6010_core_verilog(st: &NodeStatic) -> Result<String, String> {
+    if !st.diag {
+        return Err(
+            "the XEM6010 top reads the diagnostic mux over FrontPanel (WireOut 0x22): \
+                    build it with the diagnostic mux"
+                .into(),
+        );
+    }
     let mut v = node_top(st)?;
     v.push_str(CORE);
     Ok(v)

@@ -99,6 +99,7 @@ fn every_top_level_port_is_constrained() {
         address: 1,
         slots: 9,
         period: 330,
+        diag: true,
     };
     for kind in [Kind::Sensor, Kind::Actuator] {
         check_covers(

@@ -86,6 +86,7 @@ fn frames_are_found_and_grouped_like_the_model() {
         m.port("o_gvalid"),
         m.port("o_group"),
     );
+    let idle = m.port("o_idle");
     let mut got: Vec<Vec<u8>> = vec![];
     let mut expect_groups = 0usize;
     let mut i = 0;
@@ -121,6 +122,12 @@ fn frames_are_found_and_grouped_like_the_model() {
                 "seed {seed}: group after the packet's end"
             );
             cur.push(m.get(grp) as u8);
+            assert_eq!(
+                m.get(idle),
+                u64::from(m.get(grp) == 31),
+                "seed {seed}: o_idle beside group {:05b}",
+                m.get(grp)
+            );
             end_pending = cur.len() == expect_groups;
         }
     }

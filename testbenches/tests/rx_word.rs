@@ -3,7 +3,8 @@
 //! forwarder marked, bad and foreign headers, TST packets) is classified and
 //! decoded as `merkur_model::line::
 //! decode_word` says; the slot counter, own-slot flag and packet end follow
-//! protocol §5.
+//! protocol §5; `o_compl` says whether a good word's data is the
+//! complement of the good word before it (a TST's H1 = NOT H0).
 
 use merkur_model::line::{
     decode_word, mark_code_bits, nrzi_decode, nrzi_encode, push_group, word_code_bits, Lead, Rx,
@@ -37,6 +38,9 @@ fn check(ext: bool) {
         p(&m, "i_group"),
     );
     let marked = m.port("o_marked");
+    let compl = m.port("o_compl");
+    // The framer's idle flag beside the group (rx_framer's test checks it).
+    let idle = m.port("i_idle");
     let (end, wv, kind, slot, data, alive, alarm, reason, ok, void, own, hbad) = (
         p(&m, "o_end"),
         p(&m, "o_wvalid"),
@@ -174,6 +178,7 @@ fn check(ext: bool) {
             .map(|c| c.iter().fold(0u64, |a, &b| a << 1 | b as u64))
             .collect();
         let mut got = vec![];
+        let mut got_compl = vec![];
         let (mut ends, mut hdr_bads) = (0, 0);
         let mut gi = 0;
         let mut tail = 0;
@@ -181,6 +186,7 @@ fn check(ext: bool) {
             let send = gi < groups.len() && rng.below(3) != 0;
             m.set(gv, send as u64);
             m.set(gr, if send { groups[gi] } else { 0 });
+            m.set(idle, u64::from(send && groups[gi] == 31));
             if send {
                 gi += 1;
             }
@@ -203,6 +209,7 @@ fn check(ext: bool) {
                 } else {
                     Rx::Bad(Lead::Other)
                 };
+                got_compl.push(m.get(compl) == 1);
                 // Data bits of a bad word are not specified; compare the class.
                 got.push(Out {
                     kind: m.get(kind),
@@ -215,6 +222,17 @@ fn check(ext: bool) {
             hdr_bads += m.get(hbad);
         }
         assert_eq!(got, expect, "{ctx}");
+        for i in 1..expect.len() {
+            if let (Rx::Ok(a), Rx::Ok(b)) = (expect[i - 1].rx, expect[i].rx) {
+                assert_eq!(
+                    got_compl[i],
+                    b.data == !a.data,
+                    "{ctx}: o_compl of word {i} ({:04x} after {:04x})",
+                    b.data,
+                    a.data
+                );
+            }
+        }
         assert_eq!(ends, 1, "{ctx}: exactly one packet end");
         assert_eq!(hdr_bads, expect_hdr_bad as u64, "{ctx}: header rejection");
     }

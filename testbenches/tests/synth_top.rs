@@ -64,6 +64,7 @@ fn st(kind: Kind) -> NodeStatic {
         address: 3,
         slots: 9,
         period: 330,
+        diag: true,
     }
 }
 
@@ -281,6 +282,31 @@ fn every_synthesis_top_is_lint_clean() {
     ] {
         let v = node_top(&st(kind)).unwrap();
         lint(kind.name(), "merkur_top", &[("top.v", &v)]);
+        // The lean top (`merkur synth --diag off`): no diagnostic mux; a
+        // sensor keeps its input, an actuator shows its register on o_act.
+        let lean = node_top(&NodeStatic {
+            diag: false,
+            ..st(kind)
+        })
+        .unwrap();
+        lint(
+            &format!("lean-{}", kind.name()),
+            "merkur_top",
+            &[("top.v", &lean)],
+        );
+        let head = lean.split("module merkur_top(").nth(1).unwrap();
+        let ports = &head[..head.find(')').unwrap()];
+        assert!(
+            !ports.contains("o_diag") && !ports.contains("i_diag_sel"),
+            "{ports}"
+        );
+        assert_eq!(ports.contains("i_sensor"), kind == Kind::Sensor, "{ports}");
+        assert_eq!(ports.contains("o_act"), kind == Kind::Actuator, "{ports}");
+        if kind == Kind::Actuator {
+            assert!(
+                lean.contains("assign o_act = act_data;") && lean.contains(".o_act_data(act_data)")
+            );
+        }
     }
     for kind in [Kind::Sensor, Kind::Actuator] {
         let v = ulx3s_verilog(&st(kind)).unwrap();
@@ -324,4 +350,14 @@ fn bad_node_configurations_are_refused() {
     assert!(ulx3s_verilog(&st(Kind::Master))
         .unwrap_err()
         .contains("not a master"));
+    let lean = |kind| NodeStatic {
+        diag: false,
+        ..st(kind)
+    };
+    assert!(ulx3s_verilog(&lean(Kind::Sensor))
+        .unwrap_err()
+        .contains("diagnostic mux"));
+    assert!(xem6010_verilog(&lean(Kind::Master))
+        .unwrap_err()
+        .contains("diagnostic mux"));
 }

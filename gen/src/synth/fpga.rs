@@ -1,5 +1,6 @@
 //! The FPGA bitstream flows of `merkur synth`: Yosys → nextpnr → the
-//! bitstream packer for the iCE40 (`ice40-hx8k`) and the ECP5 (`ecp5-85`,
+//! bitstream packer for the iCE40 (`ice40-hx8k`, `ice40-hx1k`,
+//! `ice40-up5k`) and the ECP5 (`ecp5-85`,
 //! `ecp5-45`), over one or more placement seeds, with the results read
 //! from the tools' machine-readable output (Yosys `stat -json`, nextpnr
 //! `--report`), never from their logs.
@@ -89,19 +90,24 @@ pub fn fpga(target: &str, speed: Option<u8>) -> Option<Fpga> {
             bits: 18432,
         },
     };
+    let ice40 = |device_arg, package, device, count| Fpga {
+        family: Family::Ice40,
+        device_arg,
+        package,
+        speed: None,
+        bram: BlockRam {
+            device,
+            cell: "SB_RAM40_4K",
+            count,
+            bits: 4096,
+        },
+    };
     match target {
-        "ice40-hx8k" => Some(Fpga {
-            family: Family::Ice40,
-            device_arg: "--hx8k",
-            package: "ct256",
-            speed: None,
-            bram: BlockRam {
-                device: "iCE40-HX8K",
-                cell: "SB_RAM40_4K",
-                count: 32,
-                bits: 4096,
-            },
-        }),
+        "ice40-hx8k" => Some(ice40("--hx8k", "ct256", "iCE40-HX8K", 32)),
+        // The smallest HX (1,280 logic cells), in its largest package.
+        "ice40-hx1k" => Some(ice40("--hx1k", "tq144", "iCE40-HX1K", 16)),
+        // The UltraPlus (5,280 logic cells, slower), in its QFN-48.
+        "ice40-up5k" => Some(ice40("--up5k", "sg48", "iCE40-UP5K", 30)),
         "ecp5-85" => Some(ecp5("--85k", "LFE5U-85F", 208)),
         "ecp5-45" => Some(ecp5("--45k", "LFE5U-45F", 108)),
         _ => None,
@@ -220,6 +226,20 @@ fn pnr_overfull(log: &str) -> Vec<String> {
             (used > avail).then(|| format!("{used} {name} of {avail}"))
         })
         .collect()
+}
+
+/// A cell type's utilisation line in nextpnr's log, as "1179 of 1280
+/// ICESTORM_LC".
+fn pnr_usage(log: &str, cell: &str) -> Option<String> {
+    log.lines().find_map(|l| {
+        let (name, rest) = l.trim_start_matches("Info:").trim().split_once(':')?;
+        if name.trim() != cell {
+            return None;
+        }
+        let (used, avail) = rest.split_once('/')?;
+        let avail = avail.split_whitespace().next()?;
+        Some(format!("{} of {avail} {cell}", used.trim()))
+    })
 }
 
 /// The core clock's critical path from a nextpnr report (with
@@ -409,15 +429,28 @@ pub fn build(
         r.artifacts.push(log);
         if !placed {
             let over = pnr_overfull(&plog);
-            if over.is_empty() {
-                return Err(format!(
-                    "error: {pnr} failed in {} (log nextpnr-s{seed}.log)",
-                    dir.display()
-                ));
+            let lc = match f.family {
+                Family::Ice40 => "ICESTORM_LC",
+                Family::Ecp5 => "TRELLIS_COMB",
+            };
+            if !over.is_empty() {
+                r.status = "does not fit".into();
+                r.reason = format!("it needs {}", over.join(", "));
+                return Ok(());
             }
-            r.status = "does not fit".into();
-            r.reason = format!("needs {} ({})", over.join(", "), f.bram.device);
-            return Ok(());
+            if plog.contains("Unable to find legal placement") {
+                r.status = "does not fit".into();
+                r.reason = format!(
+                    "nextpnr found no legal placement with {} (\"design is probably at \
+                     utilisation limit\")",
+                    pnr_usage(&plog, lc).unwrap_or_else(|| format!("its {lc}s"))
+                );
+                return Ok(());
+            }
+            return Err(format!(
+                "error: {pnr} failed in {} (log nextpnr-s{seed}.log)",
+                dir.display()
+            ));
         }
         r.artifacts.extend([report.clone(), out_file]);
         let rep = read_json(dir, &report)?;

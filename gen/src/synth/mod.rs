@@ -1,12 +1,14 @@
 //! `merkur synth`: runs the open synthesis tools on a scenario's nodes and
 //! writes the artifacts and a report (docs/synthesis.md).
 //!
-//! Targets: `ice40-hx8k` (Yosys `synth_ice40` → nextpnr-ice40 `--hx8k
-//! --package ct256` → `icepack`: a bitstream, timing at the design clock),
+//! Targets: `ice40-hx8k`, `ice40-hx1k`, `ice40-up5k` (Yosys `synth_ice40` →
+//! nextpnr-ice40 → `icepack`: a bitstream, timing at the design clock),
 //! `ecp5-85` and `ecp5-45` (Yosys `synth_ecp5` → nextpnr-ecp5 → `ecppack`:
 //! a `.bit`; [`fpga`] has both FPGA flows, over placement seeds, read from
-//! the tools' JSON), `xc2c256` (Yosys `synth_coolrunner2`: macrocells and
-//! product terms; no fitter exists in the open tools), `xc6s` (Yosys `synth_xilinx -family
+//! the tools' JSON), the CoolRunner-II CPLDs `xc2c32a` … `xc2c512` (Yosys
+//! `synth_coolrunner2`: macrocells and product terms against the device;
+//! a node that cannot fit is refused, exit status 2, nothing written),
+//! `xc6s` (Yosys `synth_xilinx -family
 //! xc6s`: resource counts), `xem6010` (the board top of a master or the
 //! special master, its `.ucf` and an ISE script; Yosys checks and counts
 //! it; with the `xem6010` cargo feature and Opal Kelly's FrontPanel HDL and
@@ -27,20 +29,97 @@ use std::process::Command;
 mod fpga;
 
 /// Synthesis targets.
-pub const TARGETS: [&str; 6] = [
+pub const TARGETS: [&str; 13] = [
     "ice40-hx8k",
+    "ice40-hx1k",
+    "ice40-up5k",
     "ecp5-85",
     "ecp5-45",
+    "xc2c32a",
+    "xc2c64a",
+    "xc2c128",
     "xc2c256",
+    "xc2c384",
+    "xc2c512",
     "xc6s",
     "xem6010",
 ];
 
-/// XC2C256 limits: macrocells, product terms (16 function blocks × 56),
-/// user I/O in its largest package (FT256).
-const XC2C256_MC: u64 = 256;
-const XC2C256_PT: u64 = 896;
-const XC2C256_IO: u64 = 184;
+/// A CoolRunner-II device: Xilinx DS090 (CoolRunner-II CPLD family data
+/// sheet), its family table: macrocells, function blocks (each with a PLA
+/// of 56 product terms shared by its 16 macrocells) and the user I/O of
+/// the device's largest package.
+#[derive(Clone, Copy, Debug)]
+pub struct Cpld {
+    /// Target name.
+    pub name: &'static str,
+    /// As Xilinx names it.
+    pub device: &'static str,
+    /// Macrocells.
+    pub macrocells: u64,
+    /// Function blocks (16 macrocells, 56 product terms each).
+    pub blocks: u64,
+    /// User I/O, largest package.
+    pub io: u64,
+}
+
+impl Cpld {
+    /// Product terms (56 per function block).
+    pub fn pterms(&self) -> u64 {
+        56 * self.blocks
+    }
+}
+
+/// The CoolRunner-II family.
+pub const CPLDS: [Cpld; 6] = [
+    Cpld {
+        name: "xc2c32a",
+        device: "XC2C32A",
+        macrocells: 32,
+        blocks: 2,
+        io: 33,
+    },
+    Cpld {
+        name: "xc2c64a",
+        device: "XC2C64A",
+        macrocells: 64,
+        blocks: 4,
+        io: 64,
+    },
+    Cpld {
+        name: "xc2c128",
+        device: "XC2C128",
+        macrocells: 128,
+        blocks: 8,
+        io: 100,
+    },
+    Cpld {
+        name: "xc2c256",
+        device: "XC2C256",
+        macrocells: 256,
+        blocks: 16,
+        io: 184,
+    },
+    Cpld {
+        name: "xc2c384",
+        device: "XC2C384",
+        macrocells: 384,
+        blocks: 24,
+        io: 240,
+    },
+    Cpld {
+        name: "xc2c512",
+        device: "XC2C512",
+        macrocells: 512,
+        blocks: 32,
+        io: 270,
+    },
+];
+
+/// The CPLD of a target name.
+pub fn cpld(target: &str) -> Option<Cpld> {
+    CPLDS.iter().copied().find(|c| c.name == target)
+}
 
 /// One node's result.
 #[derive(Serialize, Debug, Default, Clone)]
@@ -130,6 +209,8 @@ pub struct Opts<'a> {
     pub speed: Option<u8>,
     /// `--board`.
     pub board: Option<&'a str>,
+    /// `--diag` (on: the diagnostic mux and the counters behind it).
+    pub diag: bool,
 }
 
 /// Boards a slave can be built for, per FPGA target (`--board`).
@@ -140,13 +221,24 @@ const BOARDS: [(&str, &str); 3] = [
 ];
 
 /// The board of a run: `--board`, checked against the target, or the
-/// iCE40-HX8K breakout by default on that target. Slaves go on it; masters
+/// iCE40-HX8K breakout by default on that target (not for a lean top,
+/// `--diag off`, whose ports no board file names). Slaves go on it; masters
 /// are placed freely (their parallel host port is wider than any of these
 /// boards' headers).
-fn board_of(target: &str, board: Option<&str>) -> Result<Option<boards::Board>, String> {
+fn board_of(
+    target: &str,
+    board: Option<&str>,
+    diag: bool,
+) -> Result<Option<boards::Board>, String> {
     let Some(name) = board else {
-        return Ok((target == "ice40-hx8k").then(boards::ice40_hx8k_breakout));
+        return Ok((target == "ice40-hx8k" && diag).then(boards::ice40_hx8k_breakout));
     };
+    if !diag {
+        return Err(format!(
+            "error: --board {name} --diag off: the boards' pin files wire the diagnostic mux; \
+             a lean top (--diag off) is placed without a board"
+        ));
+    }
     let list = || {
         BOARDS
             .iter()
@@ -294,7 +386,10 @@ const XC2_SCRIPT: &str =
     synth_coolrunner2 -top merkur_top -run map_tff:; write_edif top.edif; \
     tee -q -o stat.json stat -json";
 
-fn xc2c256(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String> {
+/// Maps a slave to a CoolRunner-II; status `does not fit` (which [`run`]
+/// turns into a refusal) when it cannot fit the device, naming what it
+/// needs and what the device has.
+fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(), String> {
     if !matches!(st.kind, Kind::Sensor | Kind::Actuator) {
         r.status = "not attempted".into();
         r.reason = "a master's memories (≥ 64 kbit) cannot map to a CPLD without block RAM".into();
@@ -316,23 +411,24 @@ fn xc2c256(dir: &Path, st: &NodeStatic, r: &mut NodeResult) -> Result<(), String
     r.ios = Some(io);
     r.artifacts
         .extend(["top.v", "top.edif", "stat.json", "yosys.log"].map(String::from));
-    let mut why = vec![];
-    if mc > XC2C256_MC {
-        why.push(format!("{mc} macrocells > {XC2C256_MC}"));
-    }
-    if pt > XC2C256_PT {
-        why.push(format!("{pt} product terms > {XC2C256_PT}"));
-    }
-    if io > XC2C256_IO {
-        why.push(format!("{io} I/O > {XC2C256_IO}"));
-    }
-    if why.is_empty() {
-        r.status = "ok".into();
-        r.reason = "within the device's macrocells, product terms and I/O (no open fitter: routing not checked)".into();
-    } else {
+    let over = mc > c.macrocells || pt > c.pterms() || io > c.io;
+    if over {
         r.status = "does not fit".into();
-        r.reason = why.join(", ");
+        r.reason = format!(
+            "it needs {mc} macrocells, {pt} product terms and {io} I/O; the {} has {} \
+             macrocells, {} product terms ({} function blocks × 56) and at most {} user I/O",
+            c.device,
+            c.macrocells,
+            c.pterms(),
+            c.blocks,
+            c.io
+        );
+        return Ok(());
     }
+    r.status = "ok".into();
+    r.reason = "within the device's macrocells, product terms and I/O (no open fitter places \
+                this device: routing not checked, docs/synthesis.md)"
+        .into();
     Ok(())
 }
 
@@ -608,7 +704,14 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         }
     };
     let clock = 2.0 * rate;
-    let board = board_of(o.target, o.board)?;
+    let board = board_of(o.target, o.board, o.diag)?;
+    if o.target == "xem6010" && !o.diag {
+        return Err(
+            "error: --target xem6010 --diag off: the XEM6010 top reads the diagnostic \
+                    mux over FrontPanel (WireOut 0x22)"
+                .into(),
+        );
+    }
     let (flow, fpga) = fpga_of(o, board.as_ref())?;
     let nodes = pick_nodes(&cfg, o.nodes, o.target)?;
     // A board asked for by name carries what it can; the default board
@@ -639,6 +742,7 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
             address: cfg.nodes[k].address,
             slots: cfg.slots,
             period: cfg.period,
+            diag: o.diag,
         })
         .collect();
     for (&k, st) in nodes.iter().zip(&statics) {
@@ -651,10 +755,23 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
     let out = o.output.map(PathBuf::from).unwrap_or_else(|| {
         PathBuf::from("merkur-synth").join(format!("{}-{}", cfg.name, o.target))
     });
+    let out_existed = out.exists();
     std::fs::create_dir_all(&out)
         .map_err(|e| format!("error: --output {}: cannot create: {e}", out.display()))?;
     let seeds: Vec<u64> = (0..o.seeds).map(|i| o.seed + i).collect();
     let mut results = vec![];
+    // Every node is built in a scratch folder; they move into place
+    // together when all are built, so a refused or failed node leaves
+    // nothing of the run behind.
+    let mut built: Vec<(PathBuf, PathBuf)> = vec![];
+    let drop_built = |built: &[(PathBuf, PathBuf)]| {
+        for (tmp, _) in built {
+            let _ = std::fs::remove_dir_all(tmp);
+        }
+        if !out_existed {
+            let _ = std::fs::remove_dir(&out);
+        }
+    };
     for (&k, st) in nodes.iter().zip(&statics) {
         let nd = &cfg.nodes[k];
         let label = format!("node{k}-{}", kind_label(nd.kind));
@@ -676,23 +793,43 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
                 let b = board.as_ref().filter(|_| slave);
                 fpga::build(&tmp, st, f, b, flow, clock, &seeds, &mut r)
             }
-            "xc2c256" => xc2c256(&tmp, st, &mut r),
+            t if cpld(t).is_some() => {
+                let c = cpld(t).expect("matched");
+                xc2c(&tmp, st, &c, &mut r)
+            }
             "xc6s" => xc6s(&tmp, st, &mut r),
             _ => xem(&tmp, st, &mut r),
         };
+        if res.is_ok() && r.status == "does not fit" {
+            // The device cannot hold the node: refused, nothing left behind
+            // (the folder too, when this run made it).
+            let _ = std::fs::remove_dir_all(&tmp);
+            drop_built(&built);
+            return Err(format!(
+                "error: node {k} ({}) does not fit the {}: {}",
+                r.kind,
+                device_name(o.target, fpga.as_ref()),
+                r.reason
+            ));
+        }
         if let Err(e) = res {
             let keep = out.join(format!("{label}.failed"));
             let _ = std::fs::remove_dir_all(&keep);
             let _ = std::fs::rename(&tmp, &keep);
+            for (t, _) in &built {
+                let _ = std::fs::remove_dir_all(t);
+            }
             return Err(format!("{e}\n(tool logs kept in {})", keep.display()));
         }
-        let dest = out.join(&label);
-        let _ = std::fs::remove_dir_all(&dest);
-        std::fs::rename(&tmp, &dest)
-            .map_err(|e| format!("error: cannot move {} into place: {e}", dest.display()))?;
+        built.push((tmp, out.join(&label)));
         r.artifacts = r.artifacts.iter().map(|a| format!("{label}/{a}")).collect();
         eprintln!("  {}{}", r.status, summary(&r));
         results.push(r);
+    }
+    for (tmp, dest) in &built {
+        let _ = std::fs::remove_dir_all(dest);
+        std::fs::rename(tmp, dest)
+            .map_err(|e| format!("error: cannot move {} into place: {e}", dest.display()))?;
     }
     let report = Report {
         command: std::iter::once("merkur".to_string())
@@ -715,13 +852,18 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         out.join("synth.md").display(),
         out.join("synth.json").display()
     );
-    // A bitstream target fails when a node gave no usable bitstream; the
-    // mapping-only targets report a device overflow as a result.
-    let bitstream = fpga.is_some();
-    Ok(report
-        .nodes
-        .iter()
-        .all(|r| r.status != "timing failed" && !(bitstream && r.status == "does not fit")))
+    // A node that misses timing fails the run (exit status 1); one that
+    // does not fit was refused above (2).
+    Ok(report.nodes.iter().all(|r| r.status != "timing failed"))
+}
+
+/// The device of a target, as its vendor names it.
+fn device_name(target: &str, f: Option<&fpga::Fpga>) -> String {
+    match (f, cpld(target)) {
+        (Some(f), _) => f.bram.device.to_string(),
+        (None, Some(c)) => c.device.to_string(),
+        _ => target.to_string(),
+    }
 }
 
 fn opt<T: std::fmt::Display>(v: &Option<T>) -> String {
