@@ -128,7 +128,8 @@ pub struct NodeResult {
     pub node: usize,
     /// Kind.
     pub kind: String,
-    /// `ok`, `timing failed`, `does not fit` or `not attempted`.
+    /// `ok`, `timing failed` or `not attempted` in a report; `does not fit`
+    /// only on the way to [`run`]'s refusal.
     pub status: String,
     /// Why, when not `ok`.
     pub reason: String,
