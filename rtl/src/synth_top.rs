@@ -251,63 +251,11 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
          \x20       .i_irq1(req[0]), .i_irq2(req[1]), .i_fs_req(req[2]),\n\
          \x20       .o_mode(o_mode), .o_failsafe(o_failsafe), .o_perr(perr), .o_ferr(ferr)"
     );
+    let lint = (lint_off, lint_on);
     let diag_tail = if slave {
-        let actb = u8::from(act);
-        let sensor = if ports.contains(&"i_sensor") {
-            v.push_str(
-                "    reg [15:0] sensor_m = 16'd0;\n    reg [15:0] sensor = 16'd0;\n\
-                 \x20   always @(posedge clk) begin\n        sensor_m <= i_sensor;\n        sensor <= sensor_m;\n    end\n",
-            );
-            "sensor"
-        } else {
-            "16'd0"
-        };
-        if ports.contains(&"o_act") {
-            v.push_str("    wire [15:0] act_data;\n    assign o_act = act_data;\n");
-        } else {
-            v.push_str(&format!("{lint_off}    wire [15:0] act_data;\n{lint_on}"));
-        }
-        v.push_str(&format!(
-            "    // Master-mode outputs of the slave module, unused in a slave.\n\
-             \x20   /* verilator lint_off UNUSEDSIGNAL */\n\
-             \x20   wire [11:0] nc_fwd_slot;\n    wire nc_regen;\n    wire nc_wvalid;\n    wire [1:0] nc_kind;\n\
-             \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire nc_ok;\n    wire nc_hdr_bad;\n\
-             \x20   /* verilator lint_on UNUSEDSIGNAL */\n\
-             \x20   {}  node(\n        {common},\n\
-             \x20       .i_actuator(1'b{actb}), .i_sensor_data({sensor}),\n\
-             \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
-             \x20       .o_fwd_slot(nc_fwd_slot), .o_regen(nc_regen), .o_wvalid(nc_wvalid), .o_kind(nc_kind),\n\
-             \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad),\n\
-             \x20       .o_act_data(act_data));\n",
-            node_module(st.kind)
-        ));
-        "            3'd6: o_diag <= act_data;\n"
+        slave_instance(&mut v, st, &ports, &common, lint)
     } else {
-        v.push_str(&format!("{lint_off}    wire [15:0] aerr;\n"));
-        let extra = if sm {
-            v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
-            format!(
-                ",\n        .i_period(20'd{}), .o_serr(serr), .o_hop(hop), .o_cycles(cycles)",
-                st.period
-            )
-        } else {
-            String::new()
-        };
-        v.push_str(lint_on);
-        v.push_str(&format!(
-            "    {} node(\n        {common},\n\
-             \x20       .i_wb_cyc(i_wb_cyc), .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),\n\
-             \x20       .i_wb_dat(i_wb_dat), .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack),\n\
-             \x20       .o_irq1(o_irq1), .o_irq2(o_irq2), .o_irq_fs(o_irq_fs), .o_irq_fsc(o_irq_fsc), .o_aerr(aerr),\n\
-             \x20       .o_running(o_running){extra});\n",
-            node_module(st.kind)
-        ));
-        if sm {
-            "            3'd2: o_diag <= aerr;\n            3'd3: o_diag <= serr;\n\
-             \x20           3'd4: o_diag <= {4'd0, hop};\n            3'd5: o_diag <= cycles;\n"
-        } else {
-            "            3'd2: o_diag <= aerr;\n"
-        }
+        master_instance(&mut v, st, &common, lint)
     };
     if st.diag {
         v.push_str(&format!(
@@ -318,4 +266,83 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
     }
     v.push_str("endmodule\n");
     Ok(v)
+}
+
+/// The slave module's instance in `merkur_top` (its sensor input's
+/// synchroniser, its actuator register's wire); the diagnostic mux's cases
+/// it adds.
+fn slave_instance(
+    v: &mut String,
+    st: &NodeStatic,
+    ports: &[&str],
+    common: &str,
+    (lint_off, lint_on): (&str, &str),
+) -> &'static str {
+    let act = st.kind == Kind::Actuator;
+    let actb = u8::from(act);
+    let sensor = if ports.contains(&"i_sensor") {
+        v.push_str(
+            "    reg [15:0] sensor_m = 16'd0;\n    reg [15:0] sensor = 16'd0;\n\
+             \x20   always @(posedge clk) begin\n        sensor_m <= i_sensor;\n        sensor <= sensor_m;\n    end\n",
+        );
+        "sensor"
+    } else {
+        "16'd0"
+    };
+    if ports.contains(&"o_act") {
+        v.push_str("    wire [15:0] act_data;\n    assign o_act = act_data;\n");
+    } else {
+        v.push_str(&format!("{lint_off}    wire [15:0] act_data;\n{lint_on}"));
+    }
+    v.push_str(&format!(
+        "    // Master-mode outputs of the slave module, unused in a slave.\n\
+         \x20   /* verilator lint_off UNUSEDSIGNAL */\n\
+         \x20   wire [11:0] nc_fwd_slot;\n    wire nc_regen;\n    wire nc_wvalid;\n    wire [1:0] nc_kind;\n\
+         \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire nc_ok;\n    wire nc_hdr_bad;\n\
+         \x20   /* verilator lint_on UNUSEDSIGNAL */\n\
+         \x20   {}  node(\n        {common},\n\
+         \x20       .i_actuator(1'b{actb}), .i_sensor_data({sensor}),\n\
+         \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
+         \x20       .o_fwd_slot(nc_fwd_slot), .o_regen(nc_regen), .o_wvalid(nc_wvalid), .o_kind(nc_kind),\n\
+         \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad),\n\
+         \x20       .o_act_data(act_data));\n",
+        node_module(st.kind)
+    ));
+    "            3'd6: o_diag <= act_data;\n"
+}
+
+/// A master's or the special master's instance in `merkur_top` (the
+/// Wishbone port to pins); the diagnostic mux's cases it adds.
+fn master_instance(
+    v: &mut String,
+    st: &NodeStatic,
+    common: &str,
+    (lint_off, lint_on): (&str, &str),
+) -> &'static str {
+    let sm = st.kind == Kind::SpecialMaster;
+    v.push_str(&format!("{lint_off}    wire [15:0] aerr;\n"));
+    let extra = if sm {
+        v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
+        format!(
+            ",\n        .i_period(20'd{}), .o_serr(serr), .o_hop(hop), .o_cycles(cycles)",
+            st.period
+        )
+    } else {
+        String::new()
+    };
+    v.push_str(lint_on);
+    v.push_str(&format!(
+        "    {} node(\n        {common},\n\
+         \x20       .i_wb_cyc(i_wb_cyc), .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),\n\
+         \x20       .i_wb_dat(i_wb_dat), .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack),\n\
+         \x20       .o_irq1(o_irq1), .o_irq2(o_irq2), .o_irq_fs(o_irq_fs), .o_irq_fsc(o_irq_fsc), .o_aerr(aerr),\n\
+         \x20       .o_running(o_running){extra});\n",
+        node_module(st.kind)
+    ));
+    if sm {
+        "            3'd2: o_diag <= aerr;\n            3'd3: o_diag <= serr;\n\
+         \x20           3'd4: o_diag <= {4'd0, hop};\n            3'd5: o_diag <= cycles;\n"
+    } else {
+        "            3'd2: o_diag <= aerr;\n"
+    }
 }

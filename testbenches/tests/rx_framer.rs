@@ -1,6 +1,8 @@
 //! rx_framer in Verilator: finds every packet start, groups every packet
 //! exactly as the model's code-bit stream has them, ignores packets whose
-//! J K was destroyed, and is not fooled by single line-bit errors in data.
+//! J K was destroyed, and is not fooled by single line-bit errors in data;
+//! `o_idle` flags exactly the idle groups (a packet cut short upstream
+//! carries them, protocol §5).
 
 use merkur_model::line::{
     find_jk, nrzi_decode, nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K,
@@ -36,6 +38,12 @@ fn frames_are_found_and_grouped_like_the_model() {
             if rng.below(8) == 0 {
                 for _ in 0..5 {
                     push_group(&mut code, CODE_S);
+                }
+            } else if rng.below(12) == 0 {
+                // Idles inside the packet (the framer groups them like any
+                // other code; the word layer ends a cut packet at them).
+                for _ in 0..5 {
+                    push_group(&mut code, CODE_I);
                 }
             } else {
                 let w = Word {
@@ -87,6 +95,7 @@ fn frames_are_found_and_grouped_like_the_model() {
         m.port("o_group"),
     );
     let idle = m.port("o_idle");
+    let mut idles_seen = 0;
     let mut got: Vec<Vec<u8>> = vec![];
     let mut expect_groups = 0usize;
     let mut i = 0;
@@ -122,6 +131,7 @@ fn frames_are_found_and_grouped_like_the_model() {
                 "seed {seed}: group after the packet's end"
             );
             cur.push(m.get(grp) as u8);
+            idles_seen += m.get(idle);
             assert_eq!(
                 m.get(idle),
                 u64::from(m.get(grp) == 31),
@@ -132,6 +142,7 @@ fn frames_are_found_and_grouped_like_the_model() {
         }
     }
     assert_eq!(got.len(), live.len(), "seed {seed}: packets found");
+    assert!(idles_seen > 0, "seed {seed}: o_idle never rose");
     for (k, (g, f)) in got.iter().zip(&live).enumerate() {
         let want: Vec<u8> = decoded[f.body..f.body + f.words * 25]
             .chunks(5)

@@ -213,33 +213,32 @@ pub fn sum_cells(cells: &[(String, u64)], pred: impl Fn(&str) -> bool) -> u64 {
     cells.iter().filter(|(n, _)| pred(n)).map(|(_, c)| c).sum()
 }
 
-/// nextpnr's utilisation lines over 100 % in its log ("ICESTORM_RAM: 54/
-/// 32"): nextpnr writes no report when it cannot place, so this is the one
-/// place the log is read.
+/// nextpnr's utilisation lines in its log ("ICESTORM_RAM: 54/ 32"), as
+/// (cell type, used, available): nextpnr writes no report when it cannot
+/// place, so this is the one place the log is read.
+fn pnr_utilisation(log: &str) -> impl Iterator<Item = (&str, u64, u64)> {
+    log.lines().filter_map(|l| {
+        let (name, rest) = l.trim_start_matches("Info:").trim().split_once(':')?;
+        let (used, avail) = rest.split_once('/')?;
+        let used: u64 = used.trim().parse().ok()?;
+        let avail: u64 = avail.split_whitespace().next()?.parse().ok()?;
+        Some((name.trim(), used, avail))
+    })
+}
+
+/// The cell types over 100 %, as "54 ICESTORM_RAM of 32".
 fn pnr_overfull(log: &str) -> Vec<String> {
-    log.lines()
-        .filter_map(|l| {
-            let (name, rest) = l.trim_start_matches("Info:").trim().split_once(':')?;
-            let (used, avail) = rest.split_once('/')?;
-            let used: u64 = used.trim().parse().ok()?;
-            let avail: u64 = avail.split_whitespace().next()?.parse().ok()?;
-            (used > avail).then(|| format!("{used} {name} of {avail}"))
-        })
+    pnr_utilisation(log)
+        .filter(|&(_, used, avail)| used > avail)
+        .map(|(name, used, avail)| format!("{used} {name} of {avail}"))
         .collect()
 }
 
-/// A cell type's utilisation line in nextpnr's log, as "1179 of 1280
-/// ICESTORM_LC".
+/// One cell type's use, as "1179 of 1280 ICESTORM_LC".
 fn pnr_usage(log: &str, cell: &str) -> Option<String> {
-    log.lines().find_map(|l| {
-        let (name, rest) = l.trim_start_matches("Info:").trim().split_once(':')?;
-        if name.trim() != cell {
-            return None;
-        }
-        let (used, avail) = rest.split_once('/')?;
-        let avail = avail.split_whitespace().next()?;
-        Some(format!("{} of {avail} {cell}", used.trim()))
-    })
+    pnr_utilisation(log)
+        .find(|&(name, _, _)| name == cell)
+        .map(|(_, used, avail)| format!("{used} of {avail} {cell}"))
 }
 
 /// The core clock's critical path from a nextpnr report (with

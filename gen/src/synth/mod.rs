@@ -28,22 +28,23 @@ use std::process::Command;
 
 mod fpga;
 
-/// Synthesis targets.
-pub const TARGETS: [&str; 13] = [
+/// Synthesis targets besides the CoolRunner-IIs ([`CPLDS`]).
+pub const TARGETS: [&str; 7] = [
     "ice40-hx8k",
     "ice40-hx1k",
     "ice40-up5k",
     "ecp5-85",
     "ecp5-45",
-    "xc2c32a",
-    "xc2c64a",
-    "xc2c128",
-    "xc2c256",
-    "xc2c384",
-    "xc2c512",
     "xc6s",
     "xem6010",
 ];
+
+/// Every target name, the CPLDs' among them.
+fn all_targets() -> Vec<&'static str> {
+    let mut v = TARGETS.to_vec();
+    v.splice(5..5, CPLDS.iter().map(|c| c.name));
+    v
+}
 
 /// A CoolRunner-II device: Xilinx DS090 (CoolRunner-II CPLD family data
 /// sheet), its family table: macrocells, function blocks (each with a PLA
@@ -223,7 +224,8 @@ const BOARDS: [(&str, &str); 3] = [
 
 /// The board of a run: `--board`, checked against the target, or the
 /// iCE40-HX8K breakout by default on that target (not for a lean top,
-/// `--diag off`, whose ports no board file names). Slaves go on it; masters
+/// `--diag off`, whose ports no board file names; nor the XEM6010 target,
+/// a board top whose host reads the mux). Slaves go on it; masters
 /// are placed freely (their parallel host port is wider than any of these
 /// boards' headers).
 fn board_of(
@@ -231,6 +233,13 @@ fn board_of(
     board: Option<&str>,
     diag: bool,
 ) -> Result<Option<boards::Board>, String> {
+    if target == "xem6010" && !diag {
+        return Err(
+            "error: --target xem6010 --diag off: the XEM6010 top reads the diagnostic \
+                    mux over FrontPanel (WireOut 0x22)"
+                .into(),
+        );
+    }
     let Some(name) = board else {
         return Ok((target == "ice40-hx8k" && diag).then(boards::ice40_hx8k_breakout));
     };
@@ -684,14 +693,15 @@ fn fpga_of(
     Ok((flow, f))
 }
 
-/// Runs the synthesis; `Ok(false)` when a node failed timing, or did not
-/// fit the device of a bitstream target.
+/// Runs the synthesis; `Ok(false)` when a node failed timing; `Err` (exit
+/// status 2, nothing written) for bad input, a missing tool or a node the
+/// device cannot hold.
 pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
-    if !TARGETS.contains(&o.target) {
+    if !all_targets().contains(&o.target) {
         return Err(format!(
             "error: --target {}: unknown target; targets: {}",
             o.target,
-            TARGETS.join(", ")
+            all_targets().join(", ")
         ));
     }
     let (_, cfg) = crate::read_scenario(scenario)?;
@@ -706,13 +716,6 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
     };
     let clock = 2.0 * rate;
     let board = board_of(o.target, o.board, o.diag)?;
-    if o.target == "xem6010" && !o.diag {
-        return Err(
-            "error: --target xem6010 --diag off: the XEM6010 top reads the diagnostic \
-                    mux over FrontPanel (WireOut 0x22)"
-                .into(),
-        );
-    }
     let (flow, fpga) = fpga_of(o, board.as_ref())?;
     let nodes = pick_nodes(&cfg, o.nodes, o.target)?;
     // A board asked for by name carries what it can; the default board
@@ -817,9 +820,7 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
             let keep = out.join(format!("{label}.failed"));
             let _ = std::fs::remove_dir_all(&keep);
             let _ = std::fs::rename(&tmp, &keep);
-            for (t, _) in &built {
-                let _ = std::fs::remove_dir_all(t);
-            }
+            drop_built(&built);
             return Err(format!("{e}\n(tool logs kept in {})", keep.display()));
         }
         built.push((tmp, out.join(&label)));
@@ -845,17 +846,23 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         tools,
         nodes: results,
     };
-    let json = serde_json::to_string_pretty(&report).map_err(|e| format!("error: {e}"))?;
+    write_report(&out, &report)?;
+    // A node that misses timing fails the run (exit status 1); one that
+    // does not fit was refused above (2).
+    Ok(report.nodes.iter().all(|r| r.status != "timing failed"))
+}
+
+/// Writes `synth.json` and `synth.md` into `out`.
+fn write_report(out: &Path, report: &Report) -> Result<(), String> {
+    let json = serde_json::to_string_pretty(report).map_err(|e| format!("error: {e}"))?;
     crate::write_atomic(&out.join("synth.json"), &json)?;
-    crate::write_atomic(&out.join("synth.md"), &markdown(&report))?;
+    crate::write_atomic(&out.join("synth.md"), &markdown(report))?;
     eprintln!(
         "wrote {} and {}",
         out.join("synth.md").display(),
         out.join("synth.json").display()
     );
-    // A node that misses timing fails the run (exit status 1); one that
-    // does not fit was refused above (2).
-    Ok(report.nodes.iter().all(|r| r.status != "timing failed"))
+    Ok(())
 }
 
 /// The device of a target, as its vendor names it.
