@@ -70,7 +70,30 @@ pub struct Fpga {
     pub speed: Option<u8>,
     /// Block RAM.
     pub bram: BlockRam,
+    /// Yosys option sets for the family's `synth_*` command, tried in order
+    /// until one gives a netlist that places on at least one seed (see
+    /// [`STRATEGIES_TIGHT`]); `""` is Yosys' default.
+    pub strategies: &'static [&'static str],
 }
+
+/// Yosys' defaults: the one strategy of the devices a node fits with room
+/// to spare.
+pub const STRATEGIES_DEFAULT: &[&str] = &[""];
+
+/// For a device the lean slave fills to 95–99 % (the iCE40-HX1K), after
+/// Yosys' default: ABC9's sequential mode without carry chains and without
+/// clock-enable flip-flops (the fewest logic cells and the fewest control
+/// sets, so nextpnr can pack eight cells to a logic block; with `-dff`
+/// alone the sets need more blocks than the device has), then, where ABC9's
+/// sequential mode crashes (YoWASP's WebAssembly stack: the lean actuator),
+/// clock enables only where 16 or more flip-flops share one. Measured in
+/// docs/benchmarks.md ("The smallest iCE40").
+pub const STRATEGIES_TIGHT: &[&str] =
+    &["", "-dff -nocarry -nodffe", "-nocarry -dffe_min_ce_use 16"];
+
+/// For the slow UP5K: the sequential mapping first (faster: docs/benchmarks.md),
+/// Yosys' default where it crashes.
+pub const STRATEGIES_FAST_FIRST: &[&str] = &["-dff -nocarry -nodffe", ""];
 
 /// ECP5 speed grades nextpnr-ecp5 knows.
 pub const ECP5_SPEEDS: [u8; 3] = [6, 7, 8];
@@ -89,8 +112,9 @@ pub fn fpga(target: &str, speed: Option<u8>) -> Option<Fpga> {
             // 18 kbit in the ×9/×18 configurations.
             bits: 18432,
         },
+        strategies: STRATEGIES_DEFAULT,
     };
-    let ice40 = |device_arg, package, device, count| Fpga {
+    let ice40 = |device_arg, package, device, count, strategies| Fpga {
         family: Family::Ice40,
         device_arg,
         package,
@@ -101,13 +125,26 @@ pub fn fpga(target: &str, speed: Option<u8>) -> Option<Fpga> {
             count,
             bits: 4096,
         },
+        strategies,
     };
     match target {
-        "ice40-hx8k" => Some(ice40("--hx8k", "ct256", "iCE40-HX8K", 32)),
+        "ice40-hx8k" => Some(ice40(
+            "--hx8k",
+            "ct256",
+            "iCE40-HX8K",
+            32,
+            STRATEGIES_DEFAULT,
+        )),
         // The smallest HX (1,280 logic cells), in its largest package.
-        "ice40-hx1k" => Some(ice40("--hx1k", "tq144", "iCE40-HX1K", 16)),
+        "ice40-hx1k" => Some(ice40("--hx1k", "tq144", "iCE40-HX1K", 16, STRATEGIES_TIGHT)),
         // The UltraPlus (5,280 logic cells, slower), in its QFN-48.
-        "ice40-up5k" => Some(ice40("--up5k", "sg48", "iCE40-UP5K", 30)),
+        "ice40-up5k" => Some(ice40(
+            "--up5k",
+            "sg48",
+            "iCE40-UP5K",
+            30,
+            STRATEGIES_FAST_FIRST,
+        )),
         "ecp5-85" => Some(ecp5("--85k", "LFE5U-85F", 208)),
         "ecp5-45" => Some(ecp5("--45k", "LFE5U-45F", 108)),
         _ => None,
@@ -277,19 +314,41 @@ fn critical_path(report: &serde_json::Value) -> Vec<String> {
         .unwrap_or_default()
 }
 
-/// Yosys' script for a family: reads `files`, synthesizes `top`.
-fn yosys_script(family: Family, files: &[&str], top: &str) -> String {
+/// Yosys' script for a family: reads `files`, synthesizes `top` with the
+/// options `opts` (a strategy of [`Fpga::strategies`]).
+fn yosys_script(family: Family, files: &[&str], top: &str, opts: &str) -> String {
     // The defaults of each Yosys: 0.70 maps with ABC9 by default, 0.23
-    // with ABC. (`-dff`, ABC9's sequential mode, aborts in ABC's `&verify`
-    // on the slave with Yosys 0.70.)
-    let synth = match family {
-        Family::Ice40 => "synth_ice40",
-        Family::Ecp5 => "synth_ecp5",
+    // with ABC. (`-dff`, ABC9's sequential mode, aborts on some nodes with
+    // Yosys 0.70: the masters, the lean actuator; a strategy list goes on
+    // to the next one then.)
+    let synth = synth_command(family);
+    let opts = if opts.is_empty() {
+        String::new()
+    } else {
+        format!(" {opts}")
     };
     format!(
-        "read_verilog {}; {synth} -top {top} -json top.json; tee -q -o stat.json stat -json",
+        "read_verilog {}; {synth}{opts} -top {top} -json top.json; tee -q -o stat.json stat -json",
         files.join(" ")
     )
+}
+
+/// Yosys' synthesis command for a family.
+fn synth_command(family: Family) -> &'static str {
+    match family {
+        Family::Ice40 => "synth_ice40",
+        Family::Ecp5 => "synth_ecp5",
+    }
+}
+
+/// A strategy's name in reports.
+fn strategy_name(family: Family, opts: &str) -> String {
+    let synth = synth_command(family);
+    if opts.is_empty() {
+        format!("`{synth}` (Yosys' defaults)")
+    } else {
+        format!("`{synth} {opts}`")
+    }
 }
 
 /// Writes the node's Verilog (the board's top when the node goes on a
@@ -358,9 +417,22 @@ fn sources(
     }
 }
 
-/// Builds one node: Yosys once, nextpnr once per seed, the bitstream of the
-/// best seed. `r` gets the resources, every clock's Fmax per seed, the
-/// status and the critical path when timing failed.
+/// What one synthesis strategy gave.
+enum Outcome {
+    /// Placed on at least one seed: the best seed's index in `r.seeds` and
+    /// its core-clock Fmax.
+    Placed(usize, f64),
+    /// It does not fit: why ("it needs …", or the placer's verdict).
+    DoesNotFit(String),
+    /// Yosys failed: the last line of its log.
+    YosysFailed(String),
+}
+
+/// Builds one node: per strategy ([`Fpga::strategies`]) Yosys once and
+/// nextpnr once per seed, until a strategy's netlist places; then the
+/// bitstream of the best seed. `r` gets the resources, every clock's Fmax
+/// per placed seed, the strategy, the status and the critical path when
+/// timing failed.
 #[allow(clippy::too_many_arguments)]
 pub fn build(
     dir: &Path,
@@ -373,34 +445,196 @@ pub fn build(
     r: &mut NodeResult,
 ) -> Result<(), String> {
     let (files, top, pins) = sources(dir, st, board, flow, clock, r)?;
-    run_tool(
-        dir,
-        &flow.tool("yosys"),
-        &["-p", &yosys_script(f.family, &files, top)],
-        "yosys.log",
-    )?;
-    let cells = yosys_cells(&read_json(dir, "stat.json")?);
-    let (lut, ff, ram) = match f.family {
-        Family::Ice40 => ("SB_LUT4", "SB_DFF", "SB_RAM40"),
-        Family::Ecp5 => ("LUT4", "TRELLIS_FF", "DP16KD"),
-    };
-    r.luts = Some(sum_cells(&cells, |n| n == lut));
-    r.ffs = Some(sum_cells(&cells, |n| n.starts_with(ff)));
-    r.brams = Some(sum_cells(&cells, |n| n.starts_with(ram)));
-    r.brams_available = Some(f.bram.count);
-    r.artifacts
-        .extend(["top.json", "stat.json", "yosys.log"].map(String::from));
-    let freq = format!("{clock}");
-    let mut best: Option<(usize, f64)> = None;
-    for (i, &seed) in seeds.iter().enumerate() {
-        let s = seed.to_string();
-        let (out_arg, out_file) = match f.family {
-            Family::Ice40 => ("--asc", format!("top-s{seed}.asc")),
-            Family::Ecp5 => ("--textcfg", format!("top-s{seed}.config")),
+    let base = r.artifacts.len();
+    let mut tried: Vec<String> = vec![];
+    let mut misfit: Option<String> = None;
+    for opts in f.strategies {
+        r.artifacts.truncate(base);
+        r.seeds.clear();
+        r.clocks.clear();
+        r.notes.clear();
+        r.critical_path.clear();
+        let name = strategy_name(f.family, opts);
+        r.strategy = name.clone();
+        let job = Job {
+            dir,
+            f,
+            flow,
+            files: &files,
+            top,
+            pins: &pins,
+            clock,
         };
+        match job.strategy(opts, seeds, r)? {
+            Outcome::Placed(bi, fmax) => {
+                if !tried.is_empty() {
+                    r.notes
+                        .insert(0, format!("before it: {}", tried.join("; ")));
+                }
+                return job.finish(bi, fmax, r);
+            }
+            Outcome::DoesNotFit(why) => {
+                tried.push(format!("{name}: {why}"));
+                misfit = Some(why);
+            }
+            Outcome::YosysFailed(tail) => tried.push(format!("{name}: Yosys failed ({tail})")),
+        }
+    }
+    let Some(why) = misfit else {
+        return Err(format!(
+            "error: {} failed in {} (log yosys.log): {}",
+            flow.tool("yosys"),
+            dir.display(),
+            tried.join("; ")
+        ));
+    };
+    r.status = "does not fit".into();
+    r.reason = if tried.len() == 1 {
+        why
+    } else {
+        format!("{why} (Yosys strategies tried: {})", tried.join("; "))
+    };
+    Ok(())
+}
+
+/// One node's build: where, with what, for which clock.
+struct Job<'a> {
+    dir: &'a Path,
+    f: &'a Fpga,
+    flow: Flow,
+    files: &'a [&'static str],
+    top: &'static str,
+    pins: &'a [String],
+    clock: f64,
+}
+
+impl Job<'_> {
+    /// Yosys with `opts`, then nextpnr on every seed (the heap placer, and
+    /// the simulated-annealing one for a seed the heap placer cannot
+    /// legalise: on a nearly full device it still finds a placement).
+    fn strategy(&self, opts: &str, seeds: &[u64], r: &mut NodeResult) -> Result<Outcome, String> {
+        let (dir, f) = (self.dir, self.f);
+        let (ok, ylog) = run_tool_status(
+            dir,
+            &self.flow.tool("yosys"),
+            &["-p", &yosys_script(f.family, self.files, self.top, opts)],
+            "yosys.log",
+        )?;
+        r.artifacts.push("yosys.log".into());
+        if !ok {
+            let last = ylog.lines().rev().find(|l| !l.trim().is_empty());
+            return Ok(Outcome::YosysFailed(
+                last.unwrap_or("no output").trim().to_string(),
+            ));
+        }
+        let cells = yosys_cells(&read_json(dir, "stat.json")?);
+        let (lut, ff, ram) = match f.family {
+            Family::Ice40 => ("SB_LUT4", "SB_DFF", "SB_RAM40"),
+            Family::Ecp5 => ("LUT4", "TRELLIS_FF", "DP16KD"),
+        };
+        r.luts = Some(sum_cells(&cells, |n| n == lut));
+        r.ffs = Some(sum_cells(&cells, |n| n.starts_with(ff)));
+        r.brams = Some(sum_cells(&cells, |n| n.starts_with(ram)));
+        r.brams_available = Some(f.bram.count);
+        r.artifacts
+            .extend(["top.json", "stat.json"].map(String::from));
+        let mut best: Option<(usize, f64)> = None;
+        let mut unplaced = String::new();
+        for &seed in seeds {
+            let mut placed = false;
+            for placer in ["heap", "sa"] {
+                let (done, plog) = self.place(seed, placer)?;
+                let log = format!("nextpnr-s{seed}.log");
+                if !r.artifacts.contains(&log) {
+                    r.artifacts.push(log.clone());
+                }
+                if done {
+                    placed = true;
+                    if placer == "sa" {
+                        r.notes.push(format!(
+                            "seed {seed}: placed by nextpnr's SA placer (the heap placer found \
+                             no legal placement)"
+                        ));
+                    }
+                    break;
+                }
+                let over = pnr_overfull(&plog);
+                if !over.is_empty() {
+                    return Ok(Outcome::DoesNotFit(format!("it needs {}", over.join(", "))));
+                }
+                if !plog.contains("Unable to find legal placement")
+                    && !plog.contains("failed to place")
+                {
+                    return Err(format!(
+                        "error: {} failed in {} (log {log})",
+                        self.flow.tool(self.pnr()),
+                        dir.display()
+                    ));
+                }
+                unplaced =
+                    pnr_usage(&plog, self.lc()).unwrap_or_else(|| format!("its {}s", self.lc()));
+            }
+            if !placed {
+                r.notes.push(format!(
+                    "seed {seed}: no legal placement (heap and SA placers)"
+                ));
+                continue;
+            }
+            let report = format!("report-s{seed}.json");
+            r.artifacts.extend([report.clone(), self.placed_file(seed)]);
+            let rep = read_json(dir, &report)?;
+            read_timing(&rep, r.seeds.len(), r)?;
+            read_utilisation(&rep, f.family, r);
+            let fmax = r.fmax_mhz.unwrap_or(0.0);
+            if best.map_or(true, |(_, b)| fmax > b) {
+                best = Some((r.seeds.len(), fmax));
+                r.critical_path = critical_path(&rep);
+            }
+            r.seeds.push(seed);
+        }
+        Ok(match best {
+            Some((i, fmax)) => Outcome::Placed(i, fmax),
+            None => Outcome::DoesNotFit(format!(
+                "nextpnr found no legal placement with {unplaced} (\"design is probably at \
+                 utilisation limit\"; heap and SA placers, seeds {seeds:?})"
+            )),
+        })
+    }
+
+    fn pnr(&self) -> &'static str {
+        match self.f.family {
+            Family::Ice40 => "nextpnr-ice40",
+            Family::Ecp5 => "nextpnr-ecp5",
+        }
+    }
+
+    fn lc(&self) -> &'static str {
+        match self.f.family {
+            Family::Ice40 => "ICESTORM_LC",
+            Family::Ecp5 => "TRELLIS_COMB",
+        }
+    }
+
+    /// The placed-and-routed design's file of a seed.
+    fn placed_file(&self, seed: u64) -> String {
+        match self.f.family {
+            Family::Ice40 => format!("top-s{seed}.asc"),
+            Family::Ecp5 => format!("top-s{seed}.config"),
+        }
+    }
+
+    /// nextpnr on one seed with one placer: (placed and routed, its log).
+    fn place(&self, seed: u64, placer: &str) -> Result<(bool, String), String> {
+        let f = self.f;
+        let s = seed.to_string();
+        let out_arg = match f.family {
+            Family::Ice40 => "--asc",
+            Family::Ecp5 => "--textcfg",
+        };
+        let out_file = self.placed_file(seed);
         let report = format!("report-s{seed}.json");
-        let log = format!("nextpnr-s{seed}.log");
         let speed = f.speed.map(|x| x.to_string());
+        let freq = format!("{}", self.clock);
         let mut args: Vec<&str> = vec![f.device_arg, "--package", f.package];
         if let Some(sp) = &speed {
             args.extend(["--speed", sp]);
@@ -414,102 +648,65 @@ pub fn build(
             &freq,
             "--seed",
             &s,
+            "--placer",
+            placer,
             "--timing-allow-fail",
             "--report",
             &report,
             "--detailed-timing-report",
         ]);
-        args.extend(pins.iter().map(String::as_str));
-        let pnr = match f.family {
-            Family::Ice40 => "nextpnr-ice40",
-            Family::Ecp5 => "nextpnr-ecp5",
+        args.extend(self.pins.iter().map(String::as_str));
+        run_tool_status(
+            self.dir,
+            &self.flow.tool(self.pnr()),
+            &args,
+            &format!("nextpnr-s{seed}.log"),
+        )
+    }
+
+    /// The bitstream of the best seed (`bi` in `r.seeds`), the timing
+    /// summary and the status.
+    fn finish(&self, bi: usize, fmax: f64, r: &mut NodeResult) -> Result<(), String> {
+        let (dir, clock) = (self.dir, self.clock);
+        let core = r
+            .clocks
+            .iter()
+            .find(|c| is_core_clock(&c.name))
+            .ok_or_else(|| {
+                format!(
+                    "error: no core clock in {}",
+                    dir.join("report-s*.json").display()
+                )
+            })?;
+        r.fmax_mhz = Some(fmax);
+        r.max_line_rate_mbps = Some(fmax / 2.0);
+        r.fmax_min_mhz = core.fmax_mhz.iter().cloned().reduce(f64::min);
+        r.fmax_median_mhz = median(&core.fmax_mhz);
+        let seed = r.seeds[bi];
+        r.seed = Some(seed);
+        let (pack, bit) = match self.f.family {
+            Family::Ice40 => ("icepack", "top.bin"),
+            Family::Ecp5 => ("ecppack", "top.bit"),
         };
-        let (placed, plog) = run_tool_status(dir, &flow.tool(pnr), &args, &log)?;
-        r.artifacts.push(log);
-        if !placed {
-            let over = pnr_overfull(&plog);
-            let lc = match f.family {
-                Family::Ice40 => "ICESTORM_LC",
-                Family::Ecp5 => "TRELLIS_COMB",
-            };
-            if !over.is_empty() {
-                r.status = "does not fit".into();
-                r.reason = format!("it needs {}", over.join(", "));
-                return Ok(());
-            }
-            if plog.contains("Unable to find legal placement") {
-                r.status = "does not fit".into();
-                r.reason = format!(
-                    "nextpnr found no legal placement with {} (\"design is probably at \
-                     utilisation limit\")",
-                    pnr_usage(&plog, lc).unwrap_or_else(|| format!("its {lc}s"))
-                );
-                return Ok(());
-            }
-            return Err(format!(
-                "error: {pnr} failed in {} (log nextpnr-s{seed}.log)",
-                dir.display()
-            ));
+        run_tool(
+            dir,
+            &self.flow.tool(pack),
+            &[&self.placed_file(seed), bit],
+            &format!("{pack}.log"),
+        )?;
+        r.artifacts.push(bit.into());
+        if fmax >= clock {
+            r.status = "ok".into();
+            r.critical_path.clear();
+        } else {
+            r.status = "timing failed".into();
+            r.reason = format!(
+                "Fmax {fmax:.2} MHz < {clock} MHz design clock (best of {} placed seeds)",
+                r.seeds.len()
+            );
         }
-        r.artifacts.extend([report.clone(), out_file]);
-        let rep = read_json(dir, &report)?;
-        read_timing(&rep, i, r)?;
-        read_utilisation(&rep, f.family, r);
-        let fmax = r.fmax_mhz.unwrap_or(0.0);
-        if best.map_or(true, |(_, b)| fmax > b) {
-            best = Some((i, fmax));
-            r.critical_path = critical_path(&rep);
-        }
-        r.seeds.push(seed);
+        Ok(())
     }
-    let (bi, fmax) = best.expect("at least one seed");
-    let core = r
-        .clocks
-        .iter()
-        .find(|c| is_core_clock(&c.name))
-        .ok_or_else(|| {
-            format!(
-                "error: no core clock in {}",
-                dir.join("report-s*.json").display()
-            )
-        })?;
-    r.fmax_mhz = Some(fmax);
-    r.max_line_rate_mbps = Some(fmax / 2.0);
-    r.fmax_min_mhz = core.fmax_mhz.iter().cloned().reduce(f64::min);
-    r.fmax_median_mhz = median(&core.fmax_mhz);
-    let seed = seeds[bi];
-    r.seed = Some(seed);
-    match f.family {
-        Family::Ice40 => {
-            run_tool(
-                dir,
-                &flow.tool("icepack"),
-                &[&format!("top-s{seed}.asc"), "top.bin"],
-                "icepack.log",
-            )?;
-            r.artifacts.push("top.bin".into());
-        }
-        Family::Ecp5 => {
-            run_tool(
-                dir,
-                &flow.tool("ecppack"),
-                &[&format!("top-s{seed}.config"), "top.bit"],
-                "ecppack.log",
-            )?;
-            r.artifacts.push("top.bit".into());
-        }
-    }
-    if fmax >= clock {
-        r.status = "ok".into();
-        r.critical_path.clear();
-    } else {
-        r.status = "timing failed".into();
-        r.reason = format!(
-            "Fmax {fmax:.2} MHz < {clock} MHz design clock (best of {} seeds)",
-            seeds.len()
-        );
-    }
-    Ok(())
 }
 
 /// The middle value (the mean of the two middle ones for an even count).

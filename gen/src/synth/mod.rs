@@ -170,6 +170,13 @@ pub struct NodeResult {
     pub pterms: Option<u64>,
     /// Critical path (nets) when timing failed.
     pub critical_path: Vec<String>,
+    /// The Yosys strategy whose netlist was placed (bitstream targets; the
+    /// last one tried when none fits): the synthesis command and options.
+    pub strategy: String,
+    /// What the build had to do beyond the first strategy and the heap
+    /// placer (strategies that did not fit, seeds placed by the SA placer
+    /// or not at all).
+    pub notes: Vec<String>,
     /// Files written for this node, relative to the output folder.
     pub artifacts: Vec<String>,
 }
@@ -952,6 +959,15 @@ pub fn markdown(r: &Report) -> String {
                 c.constraint_mhz,
                 v.join(", ")
             ));
+        }
+    }
+    for n in r.nodes.iter().filter(|n| !n.strategy.is_empty()) {
+        s.push_str(&format!(
+            "\nSynthesis of node {}: {}.\n",
+            n.node, n.strategy
+        ));
+        for note in &n.notes {
+            s.push_str(&format!("- {note}\n"));
         }
     }
     for n in r.nodes.iter().filter(|n| !n.critical_path.is_empty()) {
