@@ -68,8 +68,9 @@
 //! Latency: 6 bit times (one group and one bit, so that stage C's rewrite
 //! is in place before the group's first bit leaves) from INPUT bit to the
 //! retime buffer, which sends it 2.5 ± 0.5 bit times after its receive
-//! clock; with the CDR 9.5–10.5 bit times from line to line (measured at
-//! the fibres, docs/benchmarks.md).
+//! clock; with the CDR 9.5–10.5 bit times from the node's input samples
+//! to its output line, 10–11 from fibre to fibre with the top's capture
+//! register (measured at the fibres, docs/benchmarks.md).
 //!
 //! ```text
 //! in code   | N0 | N1 | N2 | N3 | N4 | ...

@@ -26,7 +26,16 @@
 //! node k SI) are line levels at tick resolution: the sender's DDR pair
 //! shows bit 0 in the 2 ticks after its clock edge and bit 1 until its next
 //! edge; the receiver's 4 samples are the line in the last 4 ticks (oldest
-//! in bit 0). A node clock period of 3 or 5 ticks (how the accumulator
+//! in bit 0), taken into a register at the receiver's clock edge, as the
+//! capture register of every synthesis top (`merkur_ddr_in`'s `q`) takes
+//! them: the node's logic reads them in the clock after. Everything else
+//! the top gives a node (address, slot count, CS timeout, period, sensor
+//! value, user requests) goes through a register on the node's clock too,
+//! as in silicon, where they are constants or synchronised. Besides being
+//! the silicon's timing, this keeps every input of a node still between
+//! its own clock edges, so Verilator evaluates a node's logic at its edges
+//! only, not at every tick (issue 24: ring100 1.6× faster,
+//! docs/benchmarks.md). A node clock period of 3 or 5 ticks (how the accumulator
 //! makes the offset) moves that node's edges or samples by one tick = one
 //! receive sample; the receiver's margin (`cdr`, `retime`) covers it. Each
 //! fibre has a **fault point** (break: the line goes dark, as when its
@@ -334,22 +343,34 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 &format!(
                     "    reg [15:0] sens_{k}_0 = 16'd0, sens_{k}_1 = 16'd0, sens_{k}_2 = 16'd0, sens_{k}_3 = 16'd0;\n\
                      \x20   always @(posedge clk) begin\n{}\n    end\n    wire [1:0] sel_{k} = incyc_{k}[1:0];\n\
-                     \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;",
+                     \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;\n\
+                     \x20   reg [15:0] sens_r_{k} = 16'd0;\n    always @(posedge nclk_{k}) sens_r_{k} <= sens_{k};",
                     regs.join("\n")
                 ),
             );
         }
         let pi = format!("{{line_{pi_f}, sh_{pi_f}}}");
         let si = format!("{{line_{}, sh_{}}}", n + k, n + k);
+        // The node's inputs, registered on its own clock (module doc).
+        w(
+            &mut v,
+            &format!(
+                "    reg [3:0] pi_r_{k} = 4'd0, si_r_{k} = 4'd0;\n    reg [11:0] addr_r_{k} = 12'd0, slots_m1_r_{k} = 12'd0;\n\
+                 \x20   reg [19:0] cs_timeout_r_{k} = 20'd0;\n    reg [2:0] ureq_r_{k} = 3'd0;\n\
+                 \x20   always @(posedge nclk_{k}) begin\n        pi_r_{k} <= {pi};\n        si_r_{k} <= {si};\n\
+                 \x20       addr_r_{k} <= addr_{k};\n        slots_m1_r_{k} <= slots_m1;\n        cs_timeout_r_{k} <= cs_timeout;\n\
+                 \x20       ureq_r_{k} <= ureq_{k};\n    end"
+            ),
+        );
         let common = format!(
-            ".clock(nclk_{k}), .i_pi({pi}), .i_si({si}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_{k}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_irq1(ureq_{k}[0]), .i_irq2(ureq_{k}[1]), .i_fs_req(ureq_{k}[2])"
+            ".clock(nclk_{k}), .i_pi(pi_r_{k}), .i_si(si_r_{k}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_r_{k}), .i_slots_m1(slots_m1_r_{k}), .i_cs_timeout(cs_timeout_r_{k}), .i_irq1(ureq_r_{k}[0]), .i_irq2(ureq_r_{k}[1]), .i_fs_req(ureq_r_{k}[2])"
         );
         match kind {
             Kind::Sensor | Kind::Actuator => {
                 let (act, sens) = if kind == Kind::Actuator {
                     (1, "16'd0".to_string())
                 } else {
-                    (0, format!("sens_{k}"))
+                    (0, format!("sens_r_{k}"))
                 };
                 w(
                     &mut v,
@@ -368,8 +389,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             Kind::Master | Kind::SpecialMaster => {
                 let (defs, extra) = if kind == Kind::SpecialMaster {
                     (
-                        format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};"),
-                        format!(".i_period(period), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),"),
+                        format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};\n    reg [19:0] period_r_{k} = 20'd0;\n    always @(posedge nclk_{k}) period_r_{k} <= period;"),
+                        format!(".i_period(period_r_{k}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),"),
                     )
                 } else {
                     (

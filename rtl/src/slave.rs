@@ -32,8 +32,10 @@
 //! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
 //! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words and rejected headers, for a master's memories |
 //!
-//! Latency: INPUT to OUTPUT 9.5–10.5 bit times (the CDR, one group and a
-//! bit, the retime buffer: [`Fwd`]); BSR to BSS ≈ 3.5 bit times (the CDR
+//! Latency: INPUT to OUTPUT 9.5–10.5 bit times from the samples at `i_pi`
+//! to the line at `o_po` (the CDR, one group and a bit, the retime buffer:
+//! [`Fwd`]); 10–11 from fibre to fibre with a top's capture register in
+//! front (`merkur_ddr_in`; measured in the ring, docs/benchmarks.md); BSR to BSS ≈ 3.5 bit times (the CDR
 //! and [`Retime`]). A switch decision acts two clocks after the receivers'
 //! report ([`SwitchPipe`]).
 //!
