@@ -34,7 +34,7 @@
 //! as in silicon, where they are constants or synchronised. Besides being
 //! the silicon's timing, this keeps every input of a node still between
 //! its own clock edges, so Verilator evaluates a node's logic at its edges
-//! only, not at every tick (issue 24: ring100 1.6× faster,
+//! only, not at every tick (issue 24: ring100 1.7× faster,
 //! docs/benchmarks.md). A node clock period of 3 or 5 ticks (how the accumulator
 //! makes the offset) moves that node's edges or samples by one tick = one
 //! receive sample; the receiver's margin (`cdr`, `retime`) covers it. Each
