@@ -202,6 +202,52 @@ pub fn run_tool_status(
     Ok((o.status.success(), text))
 }
 
+/// As [`run_tool_status`], but stopped after `limit` (then `None`): for a
+/// tool that may search for a long time without an answer.
+fn run_tool_limited(
+    dir: &Path,
+    prog: &str,
+    args: &[&str],
+    log: &str,
+    limit: std::time::Duration,
+) -> Result<Option<(bool, String)>, String> {
+    let path = dir.join(log);
+    let file = std::fs::File::create(&path)
+        .map_err(|e| format!("error: cannot write {}: {e}", path.display()))?;
+    let err = file
+        .try_clone()
+        .map_err(|e| format!("error: cannot write {}: {e}", path.display()))?;
+    let mut child = Command::new(prog)
+        .args(args)
+        .current_dir(dir)
+        .stdout(file)
+        .stderr(err)
+        .spawn()
+        .map_err(|e| format!("error: cannot run {prog}: {e}"))?;
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(st) = child
+            .try_wait()
+            .map_err(|e| format!("error: {prog}: {e}"))?
+        {
+            break Some(st);
+        }
+        if start.elapsed() >= limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(200));
+    };
+    let text = std::fs::read_to_string(&path).unwrap_or_default();
+    Ok(status.map(|st| (st.success(), text)))
+}
+
+/// How long nextpnr's SA placer may look for a placement the heap placer
+/// could not legalise (on the HX1K it takes about 10 s when one exists;
+/// where none exists it can search far longer).
+const SA_LIMIT: std::time::Duration = std::time::Duration::from_secs(300);
+
 /// As [`run_tool_status`], an error with the log's tail when it fails.
 pub fn run_tool(dir: &Path, prog: &str, args: &[&str], log: &str) -> Result<String, String> {
     match run_tool_status(dir, prog, args, log)? {
@@ -543,11 +589,17 @@ impl Job<'_> {
         for &seed in seeds {
             let mut placed = false;
             for placer in ["heap", "sa"] {
-                let (done, plog) = self.place(seed, placer)?;
                 let log = format!("nextpnr-s{seed}.log");
                 if !r.artifacts.contains(&log) {
                     r.artifacts.push(log.clone());
                 }
+                let Some((done, plog)) = self.place(seed, placer)? else {
+                    r.notes.push(format!(
+                        "seed {seed}: the SA placer found no placement in {} s (stopped)",
+                        SA_LIMIT.as_secs()
+                    ));
+                    break;
+                };
                 if done {
                     placed = true;
                     if placer == "sa" {
@@ -623,8 +675,9 @@ impl Job<'_> {
         }
     }
 
-    /// nextpnr on one seed with one placer: (placed and routed, its log).
-    fn place(&self, seed: u64, placer: &str) -> Result<(bool, String), String> {
+    /// nextpnr on one seed with one placer: (placed and routed, its log);
+    /// `None` when the SA placer ran out of time ([`SA_LIMIT`]).
+    fn place(&self, seed: u64, placer: &str) -> Result<Option<(bool, String)>, String> {
         let f = self.f;
         let s = seed.to_string();
         let out_arg = match f.family {
@@ -656,12 +709,11 @@ impl Job<'_> {
             "--detailed-timing-report",
         ]);
         args.extend(self.pins.iter().map(String::as_str));
-        run_tool_status(
-            self.dir,
-            &self.flow.tool(self.pnr()),
-            &args,
-            &format!("nextpnr-s{seed}.log"),
-        )
+        let (prog, log) = (self.flow.tool(self.pnr()), format!("nextpnr-s{seed}.log"));
+        if placer == "sa" {
+            return run_tool_limited(self.dir, &prog, &args, &log, SA_LIMIT);
+        }
+        run_tool_status(self.dir, &prog, &args, &log).map(Some)
     }
 
     /// The bitstream of the best seed (`bi` in `r.seeds`), the timing
@@ -760,4 +812,32 @@ fn read_utilisation(rep: &serde_json::Value, family: Family, r: &mut NodeResult)
     };
     (r.lcs, r.lcs_available) = get(lc);
     r.ios = get(io).0;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tool that runs past its limit is stopped and reported as such; one
+    /// that ends in time gives its status and output.
+    #[test]
+    fn a_limited_tool_is_stopped_at_its_limit() {
+        let dir = std::env::temp_dir().join(format!("merkur-limit-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let limit = std::time::Duration::from_millis(500);
+        let t = std::time::Instant::now();
+        let r = run_tool_limited(&dir, "sleep", &["30"], "sleep.log", limit).unwrap();
+        assert!(r.is_none());
+        assert!(t.elapsed() < std::time::Duration::from_secs(10));
+        let r = run_tool_limited(
+            &dir,
+            "sh",
+            &["-c", "echo placed; exit 3"],
+            "sh.log",
+            std::time::Duration::from_secs(10),
+        )
+        .unwrap();
+        assert_eq!(r, Some((false, "placed\n".to_string())));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
