@@ -234,6 +234,33 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
     out
 }
 
+/// Node `k`'s inputs, registered on its own clock (module doc: the
+/// capture register of a synthesis top; the configuration constant or
+/// synchronised there): the sample windows `pi`, `si`, the address, slot
+/// count, CS timeout and requests; a sensor's value; the special master's
+/// period.
+fn node_inputs(k: usize, kind: Kind, pi: &str, si: &str) -> String {
+    let (mut regs, mut loads) = (
+        format!(
+            "    reg [3:0] pi_r_{k} = 4'd0, si_r_{k} = 4'd0;\n    reg [11:0] addr_r_{k} = 12'd0, slots_m1_r_{k} = 12'd0;\n\
+             \x20   reg [19:0] cs_timeout_r_{k} = 20'd0;\n    reg [2:0] ureq_r_{k} = 3'd0;\n"
+        ),
+        format!(
+            "        pi_r_{k} <= {pi};\n        si_r_{k} <= {si};\n        addr_r_{k} <= addr_{k};\n\
+             \x20       slots_m1_r_{k} <= slots_m1;\n        cs_timeout_r_{k} <= cs_timeout;\n        ureq_r_{k} <= ureq_{k};\n"
+        ),
+    );
+    if kind == Kind::Sensor {
+        regs += &format!("    reg [15:0] sens_r_{k} = 16'd0;\n");
+        loads += &format!("        sens_r_{k} <= sens_{k};\n");
+    }
+    if kind == Kind::SpecialMaster {
+        regs += &format!("    reg [19:0] period_r_{k} = 20'd0;\n");
+        loads += &format!("        period_r_{k} <= period;\n");
+    }
+    format!("{regs}    always @(posedge nclk_{k}) begin\n{loads}    end")
+}
+
 fn top(kinds: &[Kind], cap: usize) -> String {
     let n = kinds.len();
     let nf = 2 * n;
@@ -343,25 +370,14 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 &format!(
                     "    reg [15:0] sens_{k}_0 = 16'd0, sens_{k}_1 = 16'd0, sens_{k}_2 = 16'd0, sens_{k}_3 = 16'd0;\n\
                      \x20   always @(posedge clk) begin\n{}\n    end\n    wire [1:0] sel_{k} = incyc_{k}[1:0];\n\
-                     \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;\n\
-                     \x20   reg [15:0] sens_r_{k} = 16'd0;\n    always @(posedge nclk_{k}) sens_r_{k} <= sens_{k};",
+                     \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;",
                     regs.join("\n")
                 ),
             );
         }
         let pi = format!("{{line_{pi_f}, sh_{pi_f}}}");
         let si = format!("{{line_{}, sh_{}}}", n + k, n + k);
-        // The node's inputs, registered on its own clock (module doc).
-        w(
-            &mut v,
-            &format!(
-                "    reg [3:0] pi_r_{k} = 4'd0, si_r_{k} = 4'd0;\n    reg [11:0] addr_r_{k} = 12'd0, slots_m1_r_{k} = 12'd0;\n\
-                 \x20   reg [19:0] cs_timeout_r_{k} = 20'd0;\n    reg [2:0] ureq_r_{k} = 3'd0;\n\
-                 \x20   always @(posedge nclk_{k}) begin\n        pi_r_{k} <= {pi};\n        si_r_{k} <= {si};\n\
-                 \x20       addr_r_{k} <= addr_{k};\n        slots_m1_r_{k} <= slots_m1;\n        cs_timeout_r_{k} <= cs_timeout;\n\
-                 \x20       ureq_r_{k} <= ureq_{k};\n    end"
-            ),
-        );
+        w(&mut v, &node_inputs(k, kind, &pi, &si));
         let common = format!(
             ".clock(nclk_{k}), .i_pi(pi_r_{k}), .i_si(si_r_{k}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_r_{k}), .i_slots_m1(slots_m1_r_{k}), .i_cs_timeout(cs_timeout_r_{k}), .i_irq1(ureq_r_{k}[0]), .i_irq2(ureq_r_{k}[1]), .i_fs_req(ureq_r_{k}[2])"
         );
@@ -389,7 +405,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             Kind::Master | Kind::SpecialMaster => {
                 let (defs, extra) = if kind == Kind::SpecialMaster {
                     (
-                        format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};\n    reg [19:0] period_r_{k} = 20'd0;\n    always @(posedge nclk_{k}) period_r_{k} <= period;"),
+                        format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};"),
                         format!(".i_period(period_r_{k}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),"),
                     )
                 } else {

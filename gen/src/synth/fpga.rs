@@ -588,16 +588,17 @@ impl Job<'_> {
         let mut unplaced = String::new();
         for &seed in seeds {
             let mut placed = false;
+            let mut why_unplaced = "no legal placement (heap and SA placers)".to_string();
             for placer in ["heap", "sa"] {
                 let log = format!("nextpnr-s{seed}.log");
                 if !r.artifacts.contains(&log) {
                     r.artifacts.push(log.clone());
                 }
                 let Some((done, plog)) = self.place(seed, placer)? else {
-                    r.notes.push(format!(
-                        "seed {seed}: the SA placer found no placement in {} s (stopped)",
+                    why_unplaced = format!(
+                        "the heap placer found no legal placement, the SA placer none in {} s (stopped)",
                         SA_LIMIT.as_secs()
-                    ));
+                    );
                     break;
                 };
                 if done {
@@ -627,9 +628,7 @@ impl Job<'_> {
                     pnr_usage(&plog, self.lc()).unwrap_or_else(|| format!("its {}s", self.lc()));
             }
             if !placed {
-                r.notes.push(format!(
-                    "seed {seed}: no legal placement (heap and SA placers)"
-                ));
+                r.notes.push(format!("seed {seed}: {why_unplaced}"));
                 continue;
             }
             let report = format!("report-s{seed}.json");
