@@ -120,6 +120,7 @@ pub fn sim(
             r.node, r.kind, r.mode, r.failsafe, r.perr, r.irqs, r.mismatches
         );
     }
+    print_shapes(&rep.shapes);
     if let Some(w) = wave {
         write_gtkw(&cfg, w)?;
     }
@@ -135,5 +136,35 @@ pub fn sim(
             }
             Ok(false)
         }
+    }
+}
+
+/// Prints the ring's shape as each master reconstructs it from the RECONFIG
+/// alarms in its queue (protocol §11), masters that agree on one line.
+fn print_shapes(shapes: &[(usize, ring_sim::Shape)]) {
+    let mut groups: Vec<(&ring_sim::Shape, Vec<usize>)> = vec![];
+    for (k, shape) in shapes {
+        match groups.iter_mut().find(|g| g.0 == shape) {
+            Some(g) => g.1.push(*k),
+            None => groups.push((shape, vec![*k])),
+        }
+    }
+    for (shape, ks) in groups {
+        let who: Vec<String> = ks.iter().map(usize::to_string).collect();
+        let what = if shape.is_empty() {
+            "every node in N".to_string()
+        } else {
+            let w: Vec<String> = shape
+                .iter()
+                .map(|(node, m)| format!("node {node} {}", m.name()))
+                .collect();
+            format!("wrapped: {}", w.join(", "))
+        };
+        println!(
+            "ring shape from the alarm queue{} of node{} {}: {what}",
+            if ks.len() > 1 { "s" } else { "" },
+            if ks.len() > 1 { "s" } else { "" },
+            who.join(", ")
+        );
     }
 }

@@ -24,7 +24,8 @@
 //! | `i_cs_timeout` | in | 20 | static | clocks without a good frame before failsafe |
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
-//! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received (one clock per alarm) |
+//! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word; each also goes into the alarm queue, `mdb`) |
+//! | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
 //! | `o_irq_fsc` | out | 1 | clock | failsafe entered or left (one clock; protocol §12) |
 //! | `o_mode` | out | 2 | clock | switchbox mode |
 //! | `o_failsafe` | out | 1 | clock | failsafe |
@@ -89,6 +90,10 @@ pub struct Master {
     pub o_irq2: Signal<Out, Bit>,
     /// FAILSAFE alarm received.
     pub o_irq_fs: Signal<Out, Bit>,
+    /// RECONFIG alarm received.
+    pub o_irq_rc: Signal<Out, Bit>,
+    /// The alarm queue is not empty.
+    pub o_alarmq: Signal<Out, Bit>,
     /// Failsafe entered or left.
     pub o_irq_fsc: Signal<Out, Bit>,
     /// Mode.
@@ -189,6 +194,8 @@ impl Logic for Master {
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();
         self.o_irq_fs.next = self.mdb.o_irq_fs.val();
+        self.o_irq_rc.next = self.mdb.o_irq_rc.val();
+        self.o_alarmq.next = self.mdb.o_alarmq.val();
         self.o_irq_fsc.next = self.mdb.o_irq_fsc.val();
         // FS_CLEAR is the special master's; a master ignores it.
         self.mdb.i_fs_cleared.next = false;

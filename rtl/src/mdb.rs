@@ -12,10 +12,16 @@
 //! - **Alive check** per slot with ALIVE_EN (state memory: valid, last
 //!   Alive, lost, and the CYC that wrote it, so a slot missing in the
 //!   previous cycle is not compared), counted in `aerr`;
-//! - **interrupts**: every good alarm word in a slot other than the home slot
-//!   pulses `o_irq1` / `o_irq2` / `o_irq_fs` by its reason; `o_irq_fsc`
-//!   pulses when the node enters or leaves failsafe (the status register's
-//!   bit 3 says which; protocol §12).
+//! - **interrupts and the alarm queue** (protocol §11): every good alarm
+//!   word in a slot other than the home slot (outside failsafe) pulses
+//!   `o_irq1` / `o_irq2` / `o_irq_fs` / `o_irq_rc` (RECONFIG, reasons 4–6)
+//!   by its reason and goes into a 16-entry queue `{reason, slot, CYC}` that
+//!   the host reads oldest first; a full queue keeps its entries and counts
+//!   the alarm it could not keep (`overflow`); `o_alarmq` is high while the
+//!   queue is not empty. The queue is one 32 × 16 memory (one block RAM),
+//!   an entry's two words written in two clocks (received words are 25 bit
+//!   times apart, so alarms are too). `o_irq_fsc` pulses when the node enters or leaves
+//!   failsafe (the status register's bit 3 says which; protocol §12).
 //!
 //! Every memory here is written 4096 deep (the 12-bit slot number); the
 //! Verilog that simulation and synthesis use is sized to the ring's slot
@@ -32,7 +38,14 @@
 //! | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode, 6 FS_HOST, 7 FS_CLEAR given and not yet used |
 //! | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames); bit 4 = 1: FS_CLEAR, the host allows the ring out of failsafe (a special master; protocol §12); bit 5: FS_HOST, the ring leaves failsafe only after FS_CLEAR (a special master; written before the start, refused while running: `status[1]`) |
 //! | 0x2001 | R | `aerr` Alive-check failures (saturating) |
-//! | 0x2002 | R | last interrupt: reason [15:12], slot [11:0] |
+//! | 0x2002 | R | last alarm delivered: reason [15:12], slot [11:0] |
+//! | 0x2003 | R | alarm queue, oldest entry: reason [15:12], slot [11:0] (0: the queue is empty) |
+//! | 0x2004 | R | alarm queue: entries [4:0] (0–16), CYC of the oldest entry [14:12] |
+//! | 0x2004 | W | bit 0 = 1: remove the oldest entry (none: ignored); bit 1 = 1: clear the overflow count |
+//! | 0x2005 | R | alarm queue overflow: alarms not kept because the queue was full (saturating) |
+//!
+//! A host drains the queue with: read 0x2004; while entries > 0, read 0x2003
+//! (and 0x2004's CYC), write 1 to 0x2004.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -51,7 +64,8 @@
 //! | `o_tx_data`, `o_tx_local`, `o_tx_act` | out | 16, 1, 1 | clock | data memory and configuration (LOCAL, ACT) of `i_tx_slot`, valid 2–3 clocks after it changes |
 //! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 //! | `o_running` | out | 1 | clock | the host started the ring |
-//! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received (one clock per alarm word) |
+//! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
+//! | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
 //! | `o_irq_fsc` | out | 1 | clock | failsafe changed (one clock, each way) |
 //! | `o_fs_host`, `o_fs_clear` | out | 1 | clock | FS_HOST set; FS_CLEAR written (one clock) |
 //! | `o_aerr` | out | 16 | clock | Alive-check failures |
@@ -87,6 +101,19 @@ pub const WB_STATUS: u16 = 0x2000;
 pub const WB_AERR: u16 = 0x2001;
 /// Wishbone address of the last interrupt.
 pub const WB_LAST_IRQ: u16 = 0x2002;
+/// Wishbone address of the alarm queue's oldest entry.
+pub const WB_ALQ_HEAD: u16 = 0x2003;
+/// Wishbone address of the alarm queue's level and head CYC (write: remove,
+/// clear overflow).
+pub const WB_ALQ_CTL: u16 = 0x2004;
+/// Wishbone address of the alarm queue's overflow count.
+pub const WB_ALQ_OVF: u16 = 0x2005;
+/// Alarm queue control bit 0 on write: remove the oldest entry.
+pub const ALQ_POP: u16 = 1;
+/// Alarm queue control bit 1 on write: clear the overflow count.
+pub const ALQ_CLEAR_OVF: u16 = 2;
+/// Entries of the alarm queue (protocol §11).
+pub const ALQ_DEPTH: usize = 16;
 /// Wishbone base of the configuration memory.
 pub const WB_CFG: u16 = 0x1000;
 
@@ -161,6 +188,10 @@ pub struct Mdb {
     pub o_irq2: Signal<Out, Bit>,
     /// FAILSAFE alarm received.
     pub o_irq_fs: Signal<Out, Bit>,
+    /// RECONFIG alarm (reason 4–6) received.
+    pub o_irq_rc: Signal<Out, Bit>,
+    /// The alarm queue is not empty.
+    pub o_alarmq: Signal<Out, Bit>,
     /// Failsafe entered or left.
     pub o_irq_fsc: Signal<Out, Bit>,
     /// FS_HOST is set.
@@ -175,6 +206,30 @@ pub struct Mdb {
     cfg_tx: RAM<Bits<4>, 12>,
     cfg_rx: RAM<Bits<4>, 12>,
     ast: RAM<Bits<6>, 12>,
+    // Alarm queue, 16 entries of two words in one memory (one block RAM):
+    // {reason, slot} at an even address, {CYC at bits 14:12} after it. The
+    // pointers count in twos (bit 0 selects the word).
+    alq: RAM<Bits<16>, 5>,
+    alq_wr: DFF<Bits<5>>,
+    alq_rd: DFF<Bits<5>>,
+    alq_level: DFF<Bits<5>>,
+    alq_ovf: DFF<Bits<16>>,
+    /// An alarm delivered the clock before, and its first word (the queue
+    /// decides a clock after stage 2: timing).
+    alq_in: DFF<Bit>,
+    alq_word: DFF<Bits<16>>,
+    /// The entry's second word is written in this clock.
+    alq_w2: DFF<Bit>,
+    /// A removal the host asked for the clock before (it takes effect a
+    /// clock after its transfer: timing).
+    alq_out: DFF<Bit>,
+    /// CYC of the frame being read, at bits 14:12 (the header's bits).
+    hdr_cyc: DFF<Bits<16>>,
+    /// CYC of the entry whose second word is due.
+    alq_c: DFF<Bits<16>>,
+    alq_push: Signal<Local, Bit>,
+    alq_pop: Signal<Local, Bit>,
+    alq_keep: Signal<Local, Bit>,
     // Send-side look-up.
     tx_served: DFF<Bit>,
     tx_data: DFF<Bits<16>>,
@@ -189,6 +244,7 @@ pub struct Mdb {
     irq1: DFF<Bit>,
     irq2: DFF<Bit>,
     irq_fs: DFF<Bit>,
+    irq_rc: DFF<Bit>,
     irq_fsc: DFF<Bit>,
     fs_was: DFF<Bit>,
     fs_host: DFF<Bit>,
@@ -247,6 +303,7 @@ impl Logic for Mdb {
             irq1,
             irq2,
             irq_fs,
+            irq_rc,
             irq_fsc,
             fs_was,
             fs_host,
@@ -265,7 +322,17 @@ impl Logic for Mdb {
             cur_cyc,
             fs_frame,
             unread,
-            read_prev
+            read_prev,
+            alq_wr,
+            alq_rd,
+            alq_level,
+            alq_ovf,
+            alq_in,
+            alq_word,
+            alq_w2,
+            alq_out,
+            hdr_cyc,
+            alq_c
         );
         self.db.read_clock.next = self.clock.val();
         self.db.write_clock.next = self.clock.val();
@@ -275,6 +342,11 @@ impl Logic for Mdb {
         self.cfg_rx.write_clock.next = self.clock.val();
         self.ast.read_clock.next = self.clock.val();
         self.ast.write_clock.next = self.clock.val();
+        self.alq.read_clock.next = self.clock.val();
+        self.alq.write_clock.next = self.clock.val();
+        self.alq_push.next = false;
+        self.alq_pop.next = false;
+        self.alq.read_address.next = self.alq_rd.q.val();
         self.stat.next = 0.into();
         self.irq_word.next = 0.into();
         self.host_req.next = self.i_wb_cyc.val() & self.i_wb_stb.val() & !self.ack.q.val();
@@ -317,6 +389,7 @@ impl Logic for Mdb {
             self.aerr.d.next = self.aerr.q.val() + 1;
         }
         self.irq_fs.d.next = false;
+        self.irq_rc.d.next = false;
         // Failsafe entered or left: one clock.
         self.fs_was.d.next = self.i_fs.val();
         self.irq_fsc.d.next = self.fs_was.q.val() != self.i_fs.val();
@@ -336,6 +409,7 @@ impl Logic for Mdb {
         }
         if self.i_wvalid.val() & (self.i_kind.val() == 1) & self.i_ok.val() {
             self.cur_cyc.d.next = self.i_data.val().get_bits::<3>(12);
+            self.hdr_cyc.d.next = self.i_data.val() & 0x7000;
             // Failsafe as of this frame's header: a FAILSAFE alarm read
             // in a slot stops updates from the next frame (protocol §12).
             self.fs_frame.d.next = self.i_fs.val();
@@ -393,6 +467,7 @@ impl Logic for Mdb {
                         self.irq_word.next = self.irq_word.val() | 2048;
                     }
                     self.last_irq.d.next = self.irq_word.val();
+                    self.alq_push.next = true;
                     if self.s2_data.q.val().get_bits::<4>(12) == 1 {
                         self.irq1.d.next = true;
                     }
@@ -401,6 +476,11 @@ impl Logic for Mdb {
                     }
                     if self.s2_data.q.val().get_bits::<4>(12) == 3 {
                         self.irq_fs.d.next = true;
+                    }
+                    if (self.s2_data.q.val().get_bits::<4>(12) >= 4)
+                        & (self.s2_data.q.val().get_bits::<4>(12) <= 6)
+                    {
+                        self.irq_rc.d.next = true;
                     }
                 }
                 self.s2_write.next = !self.s2_alarm.q.val() & ((self.s2_cfg.val() & 10) == 0);
@@ -535,6 +615,34 @@ impl Logic for Mdb {
                 if self.i_wb_adr.val() == 0x2002 {
                     self.rdat.d.next = self.last_irq.q.val();
                 }
+                // The alarm queue (protocol §11): its reads return from
+                // the memory in state 6; a removal is done here.
+                if !self.i_wb_we.val() & (self.i_wb_adr.val() == 0x2003) {
+                    self.ack.d.next = false;
+                    self.alq.read_address.next = self.alq_rd.q.val();
+                    self.hstate.d.next = 6.into();
+                }
+                if !self.i_wb_we.val() & (self.i_wb_adr.val() == 0x2004) {
+                    self.ack.d.next = false;
+                    self.alq.read_address.next = self.alq_rd.q.val() | 1;
+                    self.hstate.d.next = 6.into();
+                }
+                if self.i_wb_we.val()
+                    & (self.i_wb_adr.val() == 0x2004)
+                    & self.i_wb_dat.val().get_bit(0)
+                    & (self.alq_level.q.val() != 0)
+                {
+                    self.alq_pop.next = true;
+                }
+                if (self.i_wb_adr.val() == 0x2004)
+                    & self.i_wb_we.val()
+                    & self.i_wb_dat.val().get_bit(1)
+                {
+                    self.alq_ovf.d.next = 0.into();
+                }
+                if self.i_wb_adr.val() == 0x2005 {
+                    self.rdat.d.next = self.alq_ovf.q.val();
+                }
             }
         } else if self.hstate.q.val() == 1 {
             // The data memory read of the previous clock.
@@ -546,18 +654,49 @@ impl Logic for Mdb {
             self.perm.d.next = self.cfg_rx.read_data.val();
             self.hstate.d.next = 4.into();
         } else if self.hstate.q.val() == 4 {
-            // Write when the receive side does not.
+            // Write in a clock without a received word in stage 2 (the
+            // receive side writes only then; waiting on stage 2 itself, not
+            // on its write decision, keeps the block RAM's read data out of
+            // this state machine: a clock later at most, once per word).
             if (self.perm.q.val() & 10) == 0 {
                 self.err_wr.d.next = true;
                 self.ack.d.next = true;
                 self.hstate.d.next = 7.into();
-            } else if !self.s2_write.val() {
+            } else if !self.s2.q.val() {
                 self.db.write_enable.next = true;
                 self.db.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
                 self.db.write_data.next = self.i_wb_dat.val();
                 self.ack.d.next = true;
                 self.hstate.d.next = 7.into();
             }
+        } else if self.hstate.q.val() == 6 {
+            // The alarm queue's word read the previous clock: the oldest
+            // entry, or its CYC with the level (0x2004); 0 when empty.
+            self.stat.next = 0.into();
+            if self.alq_level.q.val() != 0 {
+                self.stat.next = self.alq.read_data.val();
+            }
+            if self.i_wb_adr.val() == 0x2004 {
+                self.stat.next = self.stat.val() & 0x7000;
+                if self.alq_level.q.val().get_bit(0) {
+                    self.stat.next = self.stat.val() | 1;
+                }
+                if self.alq_level.q.val().get_bit(1) {
+                    self.stat.next = self.stat.val() | 2;
+                }
+                if self.alq_level.q.val().get_bit(2) {
+                    self.stat.next = self.stat.val() | 4;
+                }
+                if self.alq_level.q.val().get_bit(3) {
+                    self.stat.next = self.stat.val() | 8;
+                }
+                if self.alq_level.q.val().get_bit(4) {
+                    self.stat.next = self.stat.val() | 16;
+                }
+            }
+            self.rdat.d.next = self.stat.val();
+            self.ack.d.next = true;
+            self.hstate.d.next = 7.into();
         } else if self.hstate.q.val() == 5 {
             self.stat.next = 0.into();
             if self.cfg_rx.read_data.val().get_bit(0) {
@@ -579,6 +718,44 @@ impl Logic for Mdb {
         self.o_wb_ack.next = self.ack.q.val();
         self.o_wb_dat.next = self.rdat.q.val();
 
+        // Alarm queue: an alarm delivered in stage 2 is kept the clock after
+        // when there is room (a removal taking effect then makes room; the
+        // host's transfers are 2 clocks apart at least), its first
+        // word then, its CYC the next clock, when it counts; otherwise it is
+        // counted lost.
+        self.alq_in.d.next = self.alq_push.val();
+        if self.alq_push.val() {
+            self.alq_word.d.next = self.irq_word.val();
+        }
+        self.alq_out.d.next = self.alq_pop.val();
+        self.alq_keep.next =
+            self.alq_in.q.val() & ((self.alq_level.q.val() != 16) | self.alq_out.q.val());
+        self.alq_w2.d.next = self.alq_keep.val();
+        self.alq.write_address.next = self.alq_wr.q.val();
+        self.alq.write_data.next = self.alq_word.q.val();
+        self.alq.write_enable.next = self.alq_keep.val();
+        if self.alq_keep.val() {
+            self.alq_c.d.next = self.hdr_cyc.q.val();
+        }
+        if self.alq_w2.q.val() {
+            self.alq.write_address.next = self.alq_wr.q.val() | 1;
+            self.alq.write_data.next = self.alq_c.q.val();
+            self.alq.write_enable.next = true;
+            self.alq_wr.d.next = self.alq_wr.q.val() + 2;
+        }
+        if self.alq_out.q.val() {
+            self.alq_rd.d.next = self.alq_rd.q.val() + 2;
+        }
+        if self.alq_w2.q.val() & !self.alq_out.q.val() {
+            self.alq_level.d.next = self.alq_level.q.val() + 1;
+        }
+        if !self.alq_w2.q.val() & self.alq_out.q.val() {
+            self.alq_level.d.next = self.alq_level.q.val() - 1;
+        }
+        if self.alq_in.q.val() & !self.alq_keep.val() & (self.alq_ovf.q.val() != 0xffff) {
+            self.alq_ovf.d.next = self.alq_ovf.q.val() + 1;
+        }
+
         self.o_s2.next = self.s2.q.val();
         self.o_s2_slot.next = self.s2_slot.q.val();
         self.o_s2_act.next = self.s2_cfg.val().get_bit(1);
@@ -590,6 +767,8 @@ impl Logic for Mdb {
         self.o_irq1.next = self.irq1.q.val();
         self.o_irq2.next = self.irq2.q.val();
         self.o_irq_fs.next = self.irq_fs.q.val();
+        self.o_irq_rc.next = self.irq_rc.q.val();
+        self.o_alarmq.next = self.alq_level.q.val() != 0;
         self.o_irq_fsc.next = self.irq_fsc.q.val();
         self.o_fs_host.next = self.fs_host.q.val();
         self.o_fs_clear.next = self.fs_clear.q.val();

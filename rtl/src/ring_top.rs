@@ -148,6 +148,8 @@ pub mod status {
     pub const RUN: u32 = 12;
     /// Master: failsafe-change interrupts (entered or left, protocol §12).
     pub const IRQFSC: u32 = 13;
+    /// Master: RECONFIG alarms received (reasons 4–6, protocol §11).
+    pub const IRQRC: u32 = 14;
     /// Fibre: `{in frame, last CYC[2:0]}`.
     pub const FRAME: u32 = 16;
     /// Fibre: last DATA H1.
@@ -398,7 +400,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                          \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
                          \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
                          \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
-                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0, irqfsc_{k} = 1'b0;"
+                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0, irqrc_{k} = 1'b0, irqfsc_{k} = 1'b0;"
                     ),
                 );
             }
@@ -417,11 +419,11 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                 w(
                     &mut v,
                     &format!(
-                        "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    wire irq1_{k}, irq2_{k}, irqfs_{k}, irqfsc_{k};\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
+                        "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    wire irq1_{k}, irq2_{k}, irqfs_{k}, irqrc_{k}, irqfsc_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    wire alarmq_{k}; // the queue's level interrupt: the driver reads the queue over Wishbone\n    /* verilator lint_on UNUSEDSIGNAL */\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
                          \x20   wire wbsel_{k} = i_wb_node == 16'd{k};\n\
                          \x20   {m} n{k}({common}, {extra}\n\
                          \x20       .i_wb_cyc(i_wb_cyc & wbsel_{k}), .i_wb_stb(i_wb_stb & wbsel_{k}), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),\n\
-                         \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}), .o_irq_fsc(irqfsc_{k}),\n\
+                         \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}), .o_irq_rc(irqrc_{k}), .o_alarmq(alarmq_{k}), .o_irq_fsc(irqfsc_{k}),\n\
                          \x20       .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}), .o_aerr(aerr_{k}), .o_running(run_{k}));",
                         m = module_name(kind)
                     ),
@@ -431,8 +433,8 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         w(
             &mut v,
             &format!(
-                "    reg [15:0] nirq1_{k} = 16'd0, nirq2_{k} = 16'd0, nirqfs_{k} = 16'd0, nirqfsc_{k} = 16'd0;\n\
-                 \x20   always @(posedge nclk_{k}) begin\n        if (irq1_{k}) nirq1_{k} <= nirq1_{k} + 16'd1;\n        if (irq2_{k}) nirq2_{k} <= nirq2_{k} + 16'd1;\n        if (irqfs_{k}) nirqfs_{k} <= nirqfs_{k} + 16'd1;\n        if (irqfsc_{k}) nirqfsc_{k} <= nirqfsc_{k} + 16'd1;\n    end"
+                "    reg [15:0] nirq1_{k} = 16'd0, nirq2_{k} = 16'd0, nirqfs_{k} = 16'd0, nirqrc_{k} = 16'd0, nirqfsc_{k} = 16'd0;\n\
+                 \x20   always @(posedge nclk_{k}) begin\n        if (irq1_{k}) nirq1_{k} <= nirq1_{k} + 16'd1;\n        if (irq2_{k}) nirq2_{k} <= nirq2_{k} + 16'd1;\n        if (irqfs_{k}) nirqfs_{k} <= nirqfs_{k} + 16'd1;\n        if (irqrc_{k}) nirqrc_{k} <= nirqrc_{k} + 16'd1;\n        if (irqfsc_{k}) nirqfsc_{k} <= nirqfsc_{k} + 16'd1;\n    end"
             ),
         );
     }
@@ -529,7 +531,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         );
     }
     // Status read: every field by name (`status`), `K` = node or fibre.
-    let node_fields: [(u32, &str); 14] = [
+    let node_fields: [(u32, &str); 15] = [
         (status::MODE, "{30'd0, mode_K}"),
         (status::FS, "{31'd0, fs_K}"),
         (status::PERR, "{16'd0, perr_K}"),
@@ -543,6 +545,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         (status::IRQ2, "{16'd0, nirq2_K}"),
         (status::IRQFS, "{16'd0, nirqfs_K}"),
         (status::IRQFSC, "{16'd0, nirqfsc_K}"),
+        (status::IRQRC, "{16'd0, nirqrc_K}"),
         (status::RUN, "{31'd0, run_K}"),
     ];
     let fibre_fields: [(u32, &str); 9] = [

@@ -65,7 +65,8 @@
 //! | `i_cs_timeout` | in | 20 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods) |
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
-//! | `o_irq1`, `o_irq2`, `o_irq_fs` | out | 1 | clock | alarm received |
+//! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word; each also goes into the alarm queue, `mdb`) |
+//! | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD) |
 //! | `o_failsafe` | out | 1 | clock | failsafe (left by the special master itself, protocol §12) |
 //! | `o_irq_fsc` | out | 1 | clock | failsafe entered or left (one clock) |
@@ -154,6 +155,10 @@ pub struct SpecialMaster {
     pub o_irq2: Signal<Out, Bit>,
     /// FAILSAFE alarm received.
     pub o_irq_fs: Signal<Out, Bit>,
+    /// RECONFIG alarm received.
+    pub o_irq_rc: Signal<Out, Bit>,
+    /// The alarm queue is not empty.
+    pub o_alarmq: Signal<Out, Bit>,
     /// Mode (always N).
     pub o_mode: Signal<Out, Bits<2>>,
     /// Failsafe.
@@ -293,6 +298,8 @@ impl Default for SpecialMaster {
             o_irq1: Default::default(),
             o_irq2: Default::default(),
             o_irq_fs: Default::default(),
+            o_irq_rc: Default::default(),
+            o_alarmq: Default::default(),
             o_mode: Default::default(),
             o_failsafe: Default::default(),
             o_irq_fsc: Default::default(),
@@ -882,6 +889,8 @@ impl Logic for SpecialMaster {
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();
         self.o_irq_fs.next = self.mdb.o_irq_fs.val();
+        self.o_irq_rc.next = self.mdb.o_irq_rc.val();
+        self.o_alarmq.next = self.mdb.o_alarmq.val();
         self.o_mode.next = self.swc.o_mode.val();
         self.o_failsafe.next = self.failsafe.q.val();
         self.o_irq_fsc.next = self.mdb.o_irq_fsc.val();

@@ -28,6 +28,7 @@
 //! | `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr[13:0]`, `i_wb_dat[15:0]` | in | | master, SM | Wishbone B4 host port on `clk` ([`crate::mdb`]) |
 //! | `o_wb_dat[15:0]`, `o_wb_ack` | out | | master, SM | Wishbone read data, acknowledge |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_running` | out | 1 | master, SM | interrupts received, ring started |
+//! | `o_irq_rc`, `o_alarmq` | out | 1 | master, SM | RECONFIG alarm received; the alarm queue is not empty (protocol §11) |
 //! | `o_irq_fsc` | out | 1 | master, SM | failsafe entered or left (protocol §12) |
 //!
 //! Latency: inputs reach the node 1–1.75 clocks after the pin (capture +
@@ -190,6 +191,8 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             "o_irq1",
             "o_irq2",
             "o_irq_fs",
+            "o_irq_rc",
+            "o_alarmq",
             "o_irq_fsc",
             "o_running",
         ]);
@@ -214,7 +217,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             "    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
              \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n\
              \x20   output wire [15:0] o_wb_dat;\n    output wire o_wb_ack;\n    output wire o_irq1;\n\
-             \x20   output wire o_irq2;\n    output wire o_irq_fs;\n    output wire o_irq_fsc;\n    output wire o_running;\n",
+             \x20   output wire o_irq2;\n    output wire o_irq_fs;\n    output wire o_irq_rc;\n    output wire o_alarmq;\n    output wire o_irq_fsc;\n    output wire o_running;\n",
         );
     }
     v.push_str(
@@ -335,7 +338,7 @@ fn master_instance(
         "    {} node(\n        {common},\n\
          \x20       .i_wb_cyc(i_wb_cyc), .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),\n\
          \x20       .i_wb_dat(i_wb_dat), .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack),\n\
-         \x20       .o_irq1(o_irq1), .o_irq2(o_irq2), .o_irq_fs(o_irq_fs), .o_irq_fsc(o_irq_fsc), .o_aerr(aerr),\n\
+         \x20       .o_irq1(o_irq1), .o_irq2(o_irq2), .o_irq_fs(o_irq_fs), .o_irq_rc(o_irq_rc), .o_alarmq(o_alarmq), .o_irq_fsc(o_irq_fsc), .o_aerr(aerr),\n\
          \x20       .o_running(o_running){extra});\n",
         node_module(st.kind)
     ));

@@ -225,14 +225,23 @@ mod tests {
         let full = block_verilog(crate::special_master::SpecialMaster::default());
         let mems = memories(&full);
         // The return store, the sent-alarm and alarm-ACT bits, and the
-        // database's data, two configuration copies and Alive state.
-        assert_eq!(mems.len(), 7, "{mems:?}");
-        assert!(mems.iter().all(|&(_, d)| d == 4096), "{mems:?}");
+        // database's data, two configuration copies and Alive state, 4096
+        // deep; the database's alarm queue, 32 deep (16 entries of two
+        // words), which keeps its depth.
+        assert_eq!(mems.len(), 8, "{mems:?}");
+        assert_eq!(
+            mems.iter().filter(|&&(_, d)| d == 4096).count(),
+            7,
+            "{mems:?}"
+        );
+        assert!(mems.contains(&(16, 32)), "{mems:?}");
         let sized = size_memories(&full, 256);
         let after = memories(&sized);
         assert_eq!(
             after,
-            mems.iter().map(|&(w, _)| (w, 256)).collect::<Vec<_>>()
+            mems.iter()
+                .map(|&(w, d)| (w, d.min(256)))
+                .collect::<Vec<_>>()
         );
         let count = |v: &str, pat: &str| v.matches(pat).count();
         assert_eq!(count(&sized, "mem_i <= 255;"), 7);
@@ -251,7 +260,11 @@ mod tests {
             7
         );
         assert_eq!(count(&sized, "mem[write_address[7:0]] <= write_data;"), 7);
-        assert_eq!(count(&sized, "mem[read_address]"), 0);
+        assert_eq!(
+            count(&sized, "mem[read_address]"),
+            1,
+            "the queue's own read"
+        );
         // Full depth: the text is left as it is.
         assert_eq!(size_memories(&full, 4096), full);
     }

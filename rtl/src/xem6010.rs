@@ -20,7 +20,7 @@
 //! | 0x02 | WireIn | [2:0] diagnostic select (`o_diag` of [`crate::synth_top`]) |
 //! | 0x40 | TriggerIn | bit 0 write, bit 1 read, bit 2 clear the interrupt flags, bits 3/4/5 request IRQ1/IRQ2/FAILSAFE |
 //! | 0x20 | WireOut | read data of the last read |
-//! | 0x21 | WireOut | status: 0 busy, 2:1 mode, 3 failsafe, 4 running, 5 IRQ1 seen, 6 IRQ2 seen, 7 FAILSAFE seen, 8 failsafe change seen (entered or left, protocol §12) |
+//! | 0x21 | WireOut | status: 0 busy, 2:1 mode, 3 failsafe, 4 running, 5 IRQ1 seen, 6 IRQ2 seen, 7 FAILSAFE seen, 8 failsafe change seen (entered or left, protocol §12), 9 RECONFIG seen, 10 alarm queue not empty (read it over the host port, protocol §11) |
 //! | 0x22 | WireOut | diagnostic value |
 //!
 //! `merkur_xem6010_core` ports (all on `clk` but the wire inputs, which the
@@ -179,10 +179,12 @@ module merkur_xem6010_core(clk, clk90, pi, si, po, so, i_adr, i_dat, i_ctl, i_tr
     wire irq2;
     wire irq_fs;
     wire irq_fsc;
-    reg [3:0] seen = 4'd0;
+    wire irq_rc;
+    wire alarmq;
+    reg [4:0] seen = 5'd0;
     always @(posedge clk)
-        if (i_trig[2]) seen <= 4'd0;
-        else seen <= seen | {irq_fsc, irq_fs, irq2, irq1};
+        if (i_trig[2]) seen <= 5'd0;
+        else seen <= seen | {irq_rc, irq_fsc, irq_fs, irq2, irq1};
     wire [1:0] mode;
     wire failsafe;
     wire running;
@@ -191,8 +193,9 @@ module merkur_xem6010_core(clk, clk90, pi, si, po, so, i_adr, i_dat, i_ctl, i_tr
         .i_diag_sel(ctl_s[2:0]), .o_diag(o_diag),
         .i_wb_cyc(busy), .i_wb_stb(busy), .i_wb_we(we), .i_wb_adr(adr), .i_wb_dat(wdat),
         .o_wb_dat(wb_rdat), .o_wb_ack(wb_ack),
-        .o_irq1(irq1), .o_irq2(irq2), .o_irq_fs(irq_fs), .o_irq_fsc(irq_fsc), .o_running(running));
-    assign o_status = {7'd0, seen, running, failsafe, mode, busy};
+        .o_irq1(irq1), .o_irq2(irq2), .o_irq_fs(irq_fs), .o_irq_rc(irq_rc), .o_alarmq(alarmq), .o_irq_fsc(irq_fsc),
+        .o_running(running));
+    assign o_status = {5'd0, alarmq, seen, running, failsafe, mode, busy};
     assign o_led = ~{busy, seen[2:0], failsafe, mode == 2'd2, mode == 2'd1, running};
 endmodule
 "#;

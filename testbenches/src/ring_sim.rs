@@ -3,7 +3,9 @@
 //! the golden trace in `tb-data/` is written from): every word every fibre
 //! carried in every cycle, the headers, and at the end every node's state
 //! (mode, failsafe, error counters, interrupts received, actuator outputs,
-//! masters' data memories read over Wishbone).
+//! masters' data memories read over Wishbone), and every alarm each master
+//! delivered to its host (its alarm queue, drained over Wishbone during the
+//! run as a host would, [`alarms`]).
 //!
 //! The driver does what a scenario's environment does, at the moment the
 //! model says: sensor values per cycle, host writes and user requests
@@ -22,6 +24,8 @@ use merkur_rtl::ring_top::{
 };
 use std::path::Path;
 use std::time::{Duration, Instant};
+
+pub mod alarms;
 
 /// One difference between RTL and model.
 #[derive(Debug, Clone)]
@@ -61,7 +65,7 @@ pub struct NodeRow {
     pub failsafe: bool,
     /// Bad words at INPUT (RTL).
     pub perr: u64,
-    /// Interrupts received (RTL, masters).
+    /// Alarms delivered to the host (RTL, masters; every reason).
     pub irqs: u64,
     /// Mismatches found at this node.
     pub mismatches: usize,
@@ -103,7 +107,14 @@ pub struct Report {
     /// Per cycle, whether its frame came back whole to the special master
     /// (a good H1 and every slot, on PI or SI), as the RTL's monitors saw it.
     pub returned_whole: Vec<bool>,
+    /// Per master (node index, in ring order): the ring's shape at the end
+    /// as it reconstructs it from its alarm queue, the nodes whose last
+    /// RECONFIG announced a wrap (protocol §11).
+    pub shapes: Vec<(usize, Shape)>,
 }
+
+/// A ring's shape as a master sees it: the wrapped nodes and their modes.
+pub type Shape = Vec<(usize, Mode)>;
 
 /// Options of a run.
 #[derive(Debug, Clone, Default)]
@@ -553,6 +564,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         .collect();
     let win_of = |c: u32| wins.iter().copied().find(|&(a, z)| a <= c && c <= z);
     let mut snaps = Snapshots::new(n);
+    let mut alq = alarms::AlarmQueues::new(cfg);
     let mut fault_ticks: Vec<Option<u64>> = vec![None; cfg.faults.len()];
     let mut gap_at: Vec<Option<u64>> = vec![None; cfg.faults.len()];
     // Per fibre: ticks from a frame's start to its H1 there.
@@ -607,6 +619,11 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 compare_cycle(&mut r, cfg, recs, c - 2, w, &mut mism, &mut words);
                 compared = c - 1;
             }
+            // The masters' alarm queues, as a host drains them: at a frame
+            // start, and while a fault is due (its timing must not wait on
+            // host transfers) only when half full.
+            let due = faults.iter().any(|f| f.1 <= sent + 1);
+            alq.drain(&mut r, if due { alarms::AlarmQueues::HIGH } else { 1 })?;
         }
         // Host writes of cycle c: once frame c−1 has passed the node (a
         // master: ended on its PI fibre; the special master: sent on PO).
@@ -778,6 +795,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             st::IRQ2,
             st::IRQFS,
             st::IRQFSC,
+            st::IRQRC,
         ]
         .iter()
         .map(|&f| r.rd(k, f))
@@ -820,8 +838,9 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         matches!(e.kind, EventKind::BadWords { .. })
             && e.cycle + ring::BAD_WORDS_WINDOW >= last_cycle
     });
+    // The alarm queues, drained to the end.
+    alq.finish(cfg, &mut r, recs, &win_of, &|k| last.nodes[k].up, &mut mism)?;
     for (k, nd) in cfg.nodes.iter().enumerate() {
-        let before = mism.len();
         let want = &last.nodes[k];
         // A dead node has no state to compare (its RTL runs on, unheard).
         let dead = !want.up;
@@ -883,7 +902,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             check("FAILSAFE alarms received", irq[2], v[10]);
             check("failsafe-change interrupts", irq[3], v[11]);
         }
-        let mut irqs_got = v[8] + v[9] + v[10];
+        let mut irqs_got = v[8] + v[9] + v[10] + v[12];
         if nd.kind.is_master() {
             for slot in 0..s {
                 let g = r.wb(k, slot as u16, None)? as u64;
@@ -921,10 +940,25 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             failsafe: v[1] == 1,
             perr: v[2],
             irqs: irqs_got,
-            mismatches: mism.len() - before,
+            mismatches: 0,
         });
     }
     snaps.compare(cfg, recs, |c| win_of(c).is_some(), &mut mism);
+    // Every mismatch placed at a node counts in its row (the per-cycle
+    // counters' and the alarm queue's too).
+    for row in &mut rows {
+        let place = format!("node {}", row.node);
+        row.mismatches = mism.iter().filter(|m| m.place == place).count();
+    }
+    let mut shapes = vec![];
+    for &k in alq.masters() {
+        let own = match r.wb(k, WB_STATUS, None)? >> 4 & 3 {
+            1 => Mode::Wu,
+            2 => Mode::Wd,
+            _ => Mode::N,
+        };
+        shapes.push((k, alq.shape(cfg, k, own)));
+    }
     // (Only nodes whose PI and PO fibres both carried the last frame.)
     let last_cyc = (last_cycle & 7) as u64;
     let fwd_delay_bits = (0..n)
@@ -960,6 +994,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         mode_ticks,
         fs_ticks,
         returned_whole: r.whole.clone(),
+        shapes,
     })
 }
 

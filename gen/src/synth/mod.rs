@@ -296,14 +296,15 @@ pub struct BlockRam {
     bits: u64,
 }
 
-/// Blocks a node's memories need at least when they are `depth` deep:
-/// each memory takes ⌈width · depth / bits⌉ blocks, at least one (a lower
-/// bound: a fitter never needs fewer, so a refusal is never wrong; Yosys
-/// 0.23 reaches it on the iCE40, docs/synthesis.md).
-fn blocks_needed(widths: &[usize], depth: usize, bits: u64) -> u64 {
-    widths
-        .iter()
-        .map(|&w| ((w * depth) as u64).div_ceil(bits).max(1))
+/// Blocks a node's memories (width, depth as written) need at least when
+/// the slot memories are sized `depth` deep (those deeper are, the others
+/// keep theirs: [`verilog::size_memories`]): each memory takes
+/// ⌈width · depth / bits⌉ blocks, at least one (a lower bound: a fitter
+/// never needs fewer, so a refusal is never wrong; Yosys 0.23 reaches it
+/// on the iCE40, docs/synthesis.md).
+fn blocks_needed(mems: &[(usize, usize)], depth: usize, bits: u64) -> u64 {
+    mems.iter()
+        .map(|&(w, d)| ((w * d.min(depth)) as u64).div_ceil(bits).max(1))
         .sum()
 }
 
@@ -311,19 +312,16 @@ fn blocks_needed(widths: &[usize], depth: usize, bits: u64) -> u64 {
 /// the target's block RAM, naming the slot count, the need, the device's
 /// limit and the largest slot count that fits this node kind.
 fn memory_budget(b: &BlockRam, k: usize, st: &NodeStatic) -> Result<(), String> {
-    let widths: Vec<usize> = verilog::memories(&node_verilog(st.kind, 4096))
-        .iter()
-        .map(|&(w, _)| w)
-        .collect();
+    let mems = verilog::memories(&node_verilog(st.kind, 4096));
     let depth = verilog::mem_depth(st.slots);
-    let need = blocks_needed(&widths, depth, b.bits);
+    let need = blocks_needed(&mems, depth, b.bits);
     if need <= b.count {
         return Ok(());
     }
     let fits = (8..=12)
         .rev()
         .map(|a| 1usize << a)
-        .find(|&d| blocks_needed(&widths, d, b.bits) <= b.count);
+        .find(|&d| blocks_needed(&mems, d, b.bits) <= b.count);
     Err(format!(
         "error: slots {}: node {k} ({}) needs at least {need} {} block RAMs for its memories \
          ({depth} entries deep), the {} has {}; {}",
