@@ -84,9 +84,15 @@ pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
                     from.name(),
                     to.name()
                 ),
-                EventKind::AlarmTx { reason } => {
-                    format!("sends alarm {} in its slot", reason_name(*reason))
-                }
+                EventKind::AlarmTx { reason, repeat } => format!(
+                    "sends alarm {} in its slot{}",
+                    reason_name(*reason),
+                    if *repeat {
+                        " again (not read back)"
+                    } else {
+                        ""
+                    }
+                ),
                 EventKind::Irq { slot, reason } => {
                     format!(
                         "raises host interrupt: {} from slot {slot}",

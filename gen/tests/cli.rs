@@ -501,11 +501,11 @@ fn synth_makes_a_ring_of_bitstreams_and_maps_the_slave_to_the_cpld() {
 }
 
 /// Issue 21: the lean slave (`--diag off`) on the smallest iCE40. With
-/// Yosys' defaults it needs more logic cells than the HX1K has; the
-/// device's next strategy (ABC9's sequential mapping, no carry chains, no
-/// clock-enable flip-flops) places it, and the bitstream meets the 100 MHz
-/// core clock (50 Mbit/s) on placement seed 1 (docs/benchmarks.md: 121.6
-/// MHz).
+/// Yosys' defaults it needs more logic cells than the HX1K has; one of the
+/// device's tight strategies places it, and the bitstream meets the 100 MHz
+/// core clock (50 Mbit/s) on placement seed 1 (docs/benchmarks.md, "The
+/// smallest iCE40" and issue 22's confirmed delivery: 1,280 of 1,280
+/// cells, 101.0 MHz).
 #[test]
 fn synth_fits_the_lean_slave_into_the_hx1k() {
     let dir = scratch("synth-hx1k");
@@ -530,7 +530,17 @@ fn synth_fits_the_lean_slave_into_the_hx1k() {
     assert_eq!(n["lcs_available"], 1280, "{n}");
     assert!(n["lcs"].as_u64().unwrap() <= 1280, "{n}");
     assert!(n["fmax_mhz"].as_f64().unwrap() >= 100.0, "{n}");
-    assert_eq!(n["strategy"], "`synth_ice40 -dff -nocarry -nodffe`", "{n}");
+    // One of the tight strategies (which one is ABC's mapping, measured in
+    // docs/benchmarks.md), not Yosys' default.
+    let strategy = n["strategy"].as_str().unwrap().to_string();
+    assert!(
+        [
+            "`synth_ice40 -dff -nocarry -nodffe`",
+            "`synth_ice40 -nocarry -dffe_min_ce_use 16`"
+        ]
+        .contains(&strategy.as_str()),
+        "{n}"
+    );
     // The default was tried first and did not fit: its need is recorded.
     let notes = n["notes"].to_string();
     assert!(
@@ -541,7 +551,7 @@ fn synth_fits_the_lean_slave_into_the_hx1k() {
     assert!(bin.len() > 30_000, "bitstream of {} bytes", bin.len());
     let md = std::fs::read_to_string(out.join("synth.md")).unwrap();
     assert!(
-        md.contains("Synthesis of node 1: `synth_ice40 -dff -nocarry -nodffe`."),
+        md.contains(&format!("Synthesis of node 1: {strategy}.")),
         "{md}"
     );
     let _ = std::fs::remove_dir_all(&dir);

@@ -308,6 +308,8 @@ pub enum EventKind {
     AlarmTx {
         /// Reason code.
         reason: u8,
+        /// A repeat of the alarm in flight (its read-back failed, §11).
+        repeat: bool,
     },
     /// A master received an alarm and raised it to its host.
     Irq {
@@ -360,6 +362,16 @@ struct Pending {
     reason: u8,
 }
 
+/// An alarm word's reason and SEQ (protocol §11): basic variant
+/// `D[15:12]`, `D[11]`; extended variant `N1 = {SEQ, reason[2:0]}`.
+fn alarm_of(d: &Word, ext: bool) -> (u8, bool) {
+    if ext {
+        (d.reason & 7, d.reason & 8 != 0)
+    } else {
+        ((d.data >> 12) as u8, d.data & 0x800 != 0)
+    }
+}
+
 fn prio(reason: u8) -> u8 {
     match reason {
         reason::FAILSAFE => 0,
@@ -407,6 +419,15 @@ pub struct NodeState {
     act_alive: Vec<bool>,
     prev_home_alarm: bool,
     pending: BTreeSet<Pending>,
+    /// The alarm in flight: sent, not yet read back (§11).
+    inflight: Option<Pending>,
+    /// An alarm went out in the last home-slot write; the next home-slot
+    /// read reads it back.
+    awaiting: bool,
+    /// SEQ of the last alarm sent (a new one gets the other value).
+    seq: bool,
+    /// Masters: per slot, the SEQ of the last good alarm word read there.
+    last_seq: Vec<bool>,
     /// Consecutive bad words per receiver (PI, SI), across packets (§9).
     bad_run: [u32; 2],
     /// This cycle: a run of bad words reached [`BAD_WORDS`] on PI, SI.
@@ -547,6 +568,10 @@ impl Ring {
                 act_alive: vec![false; if nc.kind.is_master() { s } else { 0 }],
                 prev_home_alarm: false,
                 pending: BTreeSet::new(),
+                inflight: None,
+                awaiting: false,
+                seq: true,
+                last_seq: vec![true; if nc.kind.is_master() { s } else { 0 }],
                 bad_run: [0; 2],
                 cf_words: [false; 2],
             })
@@ -1207,8 +1232,9 @@ impl Ring {
             frame.hdr = HeaderRx::Ok(h);
             self.count_errors(k, frame);
             // A frame in failsafe updates nothing: the next Alive check
-            // has nothing to compare with (§7).
+            // has nothing to compare with (§7). Alarm SEQs are still noted.
             self.nodes[k].last_alive.iter_mut().for_each(|a| *a = None);
+            self.note_seqs(k, frame);
             return true;
         }
         frame.hdr = HeaderRx::Ok(h);
@@ -1351,9 +1377,7 @@ impl Ring {
         // only on the host's clear command (§12).
         let ext = self.cfg.ext;
         if frame.words.iter().any(|w| match w {
-            Slot::Data(d) if d.alarm => {
-                (if ext { d.reason } else { (d.data >> 12) as u8 }) == reason::FAILSAFE
-            }
+            Slot::Data(d) if d.alarm => alarm_of(d, ext).0 == reason::FAILSAFE,
             _ => false,
         }) {
             self.exit.request = true;
@@ -1373,6 +1397,7 @@ impl Ring {
             self.count_errors(sm, &frame);
             // Nothing read: no Alive check against this frame (§7).
             self.nodes[sm].last_alive.iter_mut().for_each(|a| *a = None);
+            self.note_seqs(sm, &frame);
         }
         for s in 0..s_count {
             let w = frame.words[s];
@@ -1396,10 +1421,40 @@ impl Ring {
         true
     }
 
+    /// A master in failsafe reads no slot but keeps each slot's alarm SEQ
+    /// (§11), so a repeat of an alarm it saw is not taken for a new one.
+    fn note_seqs(&mut self, k: usize, frame: &Frame) {
+        if !self.cfg.nodes[k].kind.is_master() {
+            return;
+        }
+        let ext = self.cfg.ext;
+        let home = self.cfg.nodes[k].address;
+        for (s, w) in frame.words.iter().enumerate() {
+            if let Slot::Data(d) = w {
+                let (r, q) = alarm_of(d, ext);
+                if d.alarm && s != home && r != reason::FAILSAFE {
+                    self.nodes[k].last_seq[s] = q;
+                }
+            }
+        }
+    }
+
     fn read_slot(&mut self, k: usize, s: usize, w: Slot, ev: &mut Vec<Event>) {
         let c = self.cycle;
         let ext = self.cfg.ext;
         let kind = self.cfg.nodes[k].kind;
+        if s == self.cfg.nodes[k].address && self.nodes[k].awaiting {
+            // The read-back of the alarm sent last time (§11): the slot
+            // has one writer, so a good alarm word with the SEQ in flight
+            // is that alarm.
+            let nd = &mut self.nodes[k];
+            nd.awaiting = false;
+            if let Slot::Data(d) = w {
+                if d.alarm && alarm_of(&d, ext).1 == nd.seq {
+                    nd.inflight = None;
+                }
+            }
+        }
         match w {
             Slot::Bad(_) | Slot::Marked(_) => {
                 self.nodes[k].perr += 1;
@@ -1413,16 +1468,20 @@ impl Ring {
                 }
                 if kind.is_master() {
                     let own = self.cfg.writer[s] == k;
-                    let (is_alarm, r) = if ext {
-                        (d.alarm, d.reason)
-                    } else {
-                        (d.alarm, (d.data >> 12) as u8)
-                    };
-                    // A master never re-delivers its own alarm coming back.
-                    if is_alarm && s != self.cfg.nodes[k].address {
-                        self.event(ev, c, At::Slot(s), k, EventKind::Irq { slot: s, reason: r });
-                        if r == reason::FAILSAFE {
-                            self.enter_failsafe(ev, k, At::Slot(s), FsCause::Request);
+                    let (r, q) = alarm_of(&d, ext);
+                    // A master never re-delivers its own alarm coming back,
+                    // nor a repeat of one it has seen (§11).
+                    if d.alarm && s != self.cfg.nodes[k].address {
+                        let repeat = r != reason::FAILSAFE && self.nodes[k].last_seq[s] == q;
+                        if r != reason::FAILSAFE {
+                            self.nodes[k].last_seq[s] = q;
+                        }
+                        if !repeat {
+                            let irq = EventKind::Irq { slot: s, reason: r };
+                            self.event(ev, c, At::Slot(s), k, irq);
+                            if r == reason::FAILSAFE {
+                                self.enter_failsafe(ev, k, At::Slot(s), FsCause::Request);
+                            }
                         }
                     }
                     if !own && (ext || !d.alarm) {
@@ -1467,20 +1526,41 @@ impl Ring {
         }
     }
 
-    /// Picks the alarm to send in the home slot this cycle, if any.
-    fn take_alarm(&mut self, k: usize, ev: &mut Vec<Event>) -> Option<Pending> {
+    /// Picks the alarm to send in the home slot this cycle, if any, with
+    /// its SEQ (§11): a FAILSAFE request first, then a repeat of the alarm
+    /// in flight, then the pending alarm of highest priority.
+    fn take_alarm(&mut self, k: usize, ev: &mut Vec<Event>) -> Option<(Pending, bool)> {
         let ext = self.cfg.ext;
         let nd = &mut self.nodes[k];
-        let p = if !nd.pending.is_empty() && (ext || !nd.prev_home_alarm) {
-            nd.pending.pop_first()
+        let fs = Pending {
+            prio: prio(reason::FAILSAFE),
+            reason: reason::FAILSAFE,
+        };
+        let mut repeat = false;
+        let p = if (!ext && nd.prev_home_alarm) || nd.awaiting {
+            None
+        } else if nd.pending.remove(&fs) {
+            Some((fs, false))
+        } else if let Some(p) = nd.inflight {
+            repeat = true;
+            Some((p, nd.seq))
+        } else if let Some(p) = nd.pending.pop_first() {
+            nd.seq = !nd.seq;
+            nd.inflight = Some(p);
+            Some((p, nd.seq))
         } else {
             None
         };
         nd.prev_home_alarm = p.is_some() && !ext;
-        if let Some(p) = p {
+        nd.awaiting = p.is_some_and(|(p, _)| p.reason != reason::FAILSAFE);
+        if let Some((p, _)) = p {
             let c = self.cycle;
             let at = At::Slot(self.cfg.nodes[k].address);
-            self.event(ev, c, at, k, EventKind::AlarmTx { reason: p.reason });
+            let tx = EventKind::AlarmTx {
+                reason: p.reason,
+                repeat,
+            };
+            self.event(ev, c, at, k, tx);
             if p.reason == reason::FAILSAFE {
                 self.enter_failsafe(ev, k, at, FsCause::Request);
             }
@@ -1488,17 +1568,17 @@ impl Ring {
         p
     }
 
-    fn alarm_word(&self, k: usize, p: Pending, data: u16) -> Word {
+    fn alarm_word(&self, k: usize, (p, seq): (Pending, bool), data: u16) -> Word {
         if self.cfg.ext {
             Word {
                 data,
                 alive: self.nodes[k].toggle,
                 alarm: true,
-                reason: p.reason,
+                reason: p.reason | (seq as u8) << 3,
             }
         } else {
             Word {
-                data: (p.reason as u16) << 12,
+                data: (p.reason as u16) << 12 | (seq as u16) << 11,
                 alive: self.nodes[k].toggle,
                 alarm: true,
                 reason: 0,
@@ -1669,6 +1749,14 @@ impl Ring {
                 }
                 nd.pending
                     .retain(|p| prio(p.reason) != prio(reason::RECONFIG_N));
+                // A RECONFIG in flight is replaced too (only the newest mode
+                // is kept, §11).
+                if nd
+                    .inflight
+                    .is_some_and(|p| prio(p.reason) == prio(reason::RECONFIG_N))
+                {
+                    nd.inflight = None;
+                }
                 let r = reason::reconfig(to);
                 nd.pending.insert(Pending {
                     prio: prio(r),
@@ -1894,3 +1982,11 @@ pub fn run(cfg: &Config) -> Vec<CycleRecord> {
     let mut ring = Ring::new(cfg.clone());
     (0..cfg.cycles).map(|_| ring.step()).collect()
 }
+
+/// Cycles after a recovery window in which a node that sent an alarm inside
+/// it may still repeat it (protocol §11, §13): which frame a fault damages
+/// is bit timing, so an alarm the RTL lost where the model did not (or the
+/// other way round) is read back in the next cycle, repeated in the one
+/// after, and retransmitted by the special master to the nodes before its
+/// sender in the third.
+pub const REPEAT_TAIL: u32 = 3;

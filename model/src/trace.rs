@@ -57,7 +57,9 @@ fn event_text(k: &EventKind) -> String {
         EventKind::Failsafe(c) => format!("failsafe {c}"),
         EventKind::FailsafeExit => "failsafe-exit".to_string(),
         EventKind::FsClear => "fs-clear".to_string(),
-        EventKind::AlarmTx { reason } => format!("alarm-tx r{reason}"),
+        EventKind::AlarmTx { reason, repeat } => {
+            format!("alarm-tx r{reason}{}", if *repeat { " repeat" } else { "" })
+        }
         EventKind::Irq { slot, reason } => format!("irq s{slot} r{reason}"),
         EventKind::AliveLost { slot } => format!("alive-lost s{slot}"),
         EventKind::AliveRestored { slot } => format!("alive-ok s{slot}"),

@@ -5,7 +5,9 @@
 //!   recovery window on, and nobody enters failsafe;
 //! - after a second fault, every node is in failsafe by the end of its window;
 //! - two breaks on two links, both repaired: the ring leaves failsafe, every
-//!   node is back in mode N and delivers what the fault-free ring does.
+//!   node is back in mode N and delivers what the fault-free ring does;
+//! - with a fault, user interrupts and bit errors in alarm words, every
+//!   master learns every alarm exactly once, and each node's last mode.
 
 mod common;
 use common::*;
@@ -243,4 +245,130 @@ fn a_repaired_double_break_heals() {
     if let Err(e) = res {
         panic!("MERKUR_SEED={s}: {e}");
     }
+}
+
+/// Confirmed delivery (protocol §11): with a structural fault (and its
+/// repair), user interrupts and bit errors aimed at alarm words, every
+/// master that stays up learns every IRQ1/IRQ2 alarm of every other live
+/// node exactly once, and the last RECONFIG it got from each node is that
+/// node's switchbox mode at the end. Rings that fail safe are skipped
+/// (alarms are not sent in failsafe); the test checks enough cases ran.
+#[test]
+fn every_alarm_reaches_every_master_once() {
+    use merkur_model::ring::{EventKind, Mode};
+    use std::collections::BTreeMap;
+    let (mut r, s) = runner(64);
+    let strat = (
+        3usize..=40,
+        any::<usize>(),
+        prop::collection::vec(0u8..3, 1..16),
+        (0u8..3, any::<usize>(), 3u32..6, any::<bool>()),
+        prop::collection::vec((any::<usize>(), 2u32..12, any::<bool>()), 1..6),
+        prop::collection::vec((any::<usize>(), any::<usize>(), 0u32..25, 1u32..3), 0..6),
+    );
+    let checked = std::cell::Cell::new(0);
+    let res = r.run(&strat, |(n, smr, pick, (fk, pos, c, repair), irqs, flips)| {
+        let sm = smr % n;
+        let fk = if n == 2 { fk % 2 } else { fk };
+        let mut extra = fault_text(fk, pos, n, sm, c, None);
+        if repair && fk < 2 {
+            extra += &format!(
+                "\n[[fault]]\nkind = \"repair\"\ncycle = {}\nfibre = \"{}{}\"\n",
+                c + 4,
+                ["P", "S"][fk as usize],
+                pos % n
+            );
+        }
+        for &(node, cycle, one) in &irqs {
+            let line = if one { "irq1" } else { "irq2" };
+            extra += &format!(
+                "\n[[irq]]\ncycle = {cycle}\nnode = {}\nline = \"{line}\"\n",
+                node % n
+            );
+        }
+        // Bit errors in the senders' slots, one or two cycles after they
+        // raised their lines (where their alarms travel).
+        for (i, &(fib, which, bit, late)) in flips.iter().enumerate() {
+            let (node, cycle, _) = irqs[which % irqs.len()];
+            extra += &format!(
+                "\n[[fault]]\nkind = \"flip\"\ncycle = {}\nfibre = \"P{}\"\nslot = {}\nbit = {bit}\n",
+                cycle + late + (i as u32 % 2),
+                fib % n,
+                node % n
+            );
+        }
+        let text = ring_text(&kinds(n, sm, &pick), 32, &extra);
+        let cfg = load(&text);
+        let recs = ring::run(&cfg);
+        if recs.iter().any(|x| x.nodes.iter().any(|y| y.failsafe)) {
+            return Ok(());
+        }
+        checked.set(checked.get() + 1);
+        let last = recs.last().unwrap();
+        let up = |k: usize| last.nodes[k].up;
+        // New alarms sent per (sender, reason); deliveries per (master,
+        // slot, reason); the last RECONFIG per (master, slot).
+        let mut sent: BTreeMap<(usize, u8), u32> = BTreeMap::new();
+        let mut got: BTreeMap<(usize, usize, u8), u32> = BTreeMap::new();
+        let mut shape: BTreeMap<(usize, usize), u8> = BTreeMap::new();
+        for ev in recs.iter().flat_map(|x| &x.events) {
+            match ev.kind {
+                EventKind::AlarmTx {
+                    reason,
+                    repeat: false,
+                } => *sent.entry((ev.node, reason)).or_default() += 1,
+                EventKind::Irq { slot, reason } => {
+                    *got.entry((ev.node, slot, reason)).or_default() += 1;
+                    if (4..=6).contains(&reason) {
+                        shape.insert((ev.node, slot), reason);
+                    }
+                }
+                _ => {}
+            }
+        }
+        for m in (0..n).filter(|&m| cfg.nodes[m].kind.is_master() && up(m)) {
+            for k in (0..n).filter(|&k| k != m && up(k)) {
+                let a = cfg.nodes[k].address;
+                for reason in [1u8, 2] {
+                    let tx = sent.get(&(k, reason)).copied().unwrap_or(0);
+                    let rx = got.get(&(m, a, reason)).copied().unwrap_or(0);
+                    prop_assert_eq!(
+                        tx,
+                        rx,
+                        "master {} got IRQ{} of node {} {} times, sent {}\n{}",
+                        m,
+                        reason,
+                        k,
+                        rx,
+                        tx,
+                        text
+                    );
+                }
+                let mode = match shape.get(&(m, a)) {
+                    Some(&r) if r == ring::reason::RECONFIG_WU => Mode::Wu,
+                    Some(&r) if r == ring::reason::RECONFIG_WD => Mode::Wd,
+                    _ => Mode::N,
+                };
+                prop_assert_eq!(
+                    mode,
+                    last.nodes[k].mode,
+                    "master {} sees node {} in {:?}, it is in {:?}\n{}",
+                    m,
+                    k,
+                    mode,
+                    last.nodes[k].mode,
+                    text
+                );
+            }
+        }
+        Ok(())
+    });
+    if let Err(e) = res {
+        panic!("MERKUR_SEED={s}: {e}");
+    }
+    let checked = checked.get();
+    assert!(
+        checked >= 32,
+        "only {checked} of 64 rings stayed out of failsafe"
+    );
 }

@@ -16,8 +16,12 @@
 //   X chosen by the solver, so for every slot);
 // - data_write_is_the_request: a host write writes what was asked where
 //   it was asked;
-// - cfg_locked: the configuration memories are never written while the
-//   ring runs; both copies are written together.
+// - cfg_locked: the host never writes the configuration while the ring
+//   runs; its writes go to both copies; the receive copy's own writes
+//   (bit 0, the alarm SEQ of protocol §11) come only while the ring runs.
+//   (That they keep bits 3:1 as the host wrote them needs the memory's
+//   contents, which this bounded check from power-up does not model
+//   faithfully: the ring runs check it, every word of every master.)
 module mdb_props (
     input wire clock,
     input wire i_wb_cyc, input wire i_wb_stb, input wire i_wb_we,
@@ -87,13 +91,15 @@ module mdb_props (
                                                && db_waddr == i_wb_adr[11:0] && db_wdata == i_wb_dat);
             if (db_waddr == x) data_write_refused: assert ((cfg_x & OWNS) != 0);
         end
-        cfg_locked: assert (!(cfg_rx_we || cfg_tx_we) || !o_running);
-        cfg_copies: assert (cfg_rx_we == cfg_tx_we);
+        cfg_locked: assert (!cfg_tx_we || !o_running);
+        if (cfg_tx_we) cfg_copies: assert (cfg_rx_we);
+        if (cfg_rx_we && !cfg_tx_we) cfg_seq_while_running: assert (o_running);
 
         cover_refused: cover (o_wb_ack && i_wb_we && i_wb_adr == {2'd0, x} && (cfg_x & OWNS) == 0);
         cover_written: cover (host_write && db_waddr == x);
         cover_cfg_refused: cover (o_wb_ack && i_wb_we && i_wb_adr[13:12] == 2'd1 && o_running);
         cover_slow_ack: cover (o_wb_ack && waited == 4);
+        cover_seq: cover (cfg_rx_we && !cfg_tx_we && cfg_rx_waddr == x);
     end
     always @(posedge clock) if (past_valid) begin
         if (o_wb_ack) wb_one_ack: assert (!$past(o_wb_ack));

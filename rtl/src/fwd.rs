@@ -29,8 +29,9 @@
 //! group delay with idles. A frame whose header was processed toggles the
 //! Alive flip-flop even when it was cut short. The Alive flip-flop
 //! toggles after each processed DATA packet. Alarms: `i_alarm_req` with
-//! `i_alarm_reason` is sent in the home slot if the previous cycle's home word
-//! was data (alternation); `o_alarm_sent` pulses when it goes out.
+//! `i_alarm_reason` and `i_alarm_seq` is sent in the home slot if the previous
+//! cycle's home word was data (alternation); `o_alarm_sent` pulses when it
+//! goes out.
 //! The output bits go through a [`Retime`] buffer and out on the node's own
 //! clock (DDR pair), so the receiver's sampling error is not passed on.
 //!
@@ -48,12 +49,13 @@
 //! | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
 //! | `i_act_out` | in | 16 | clock | actuator output register |
 //! | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
-//! | `i_alarm_req`, `i_alarm_reason` | in | 1, 4 | clock | alarm to send |
+//! | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (D[11]) |
 //! | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 //! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: configuration (bit 0 LOCAL, bit 1 ACT), data memory and actuator Alive of slot `o_slot`, valid by the word's first group |
 //! | `o_slot` | out | 12 | clock | slot of the word passing |
 //! | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 //! | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
+//! | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
 //! | `o_pkt_done` | out | 1 | clock | a DATA packet's last slot went through |
 //! | `o_toggle` | out | 1 | clock | the Alive flip-flop |
 //! | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
@@ -125,6 +127,8 @@ pub struct Fwd {
     pub i_alarm_req: Signal<In, Bit>,
     /// Its reason.
     pub i_alarm_reason: Signal<In, Bits<4>>,
+    /// The alarm's SEQ bit (D[11], protocol §11).
+    pub i_alarm_seq: Signal<In, Bit>,
     /// Master node: the slot's writer is decided by `i_slot_cfg`.
     pub i_master: Signal<In, Bit>,
     /// Configuration of slot `o_slot` (bit 0 LOCAL, bit 1 ACT).
@@ -141,6 +145,8 @@ pub struct Fwd {
     pub o_alarm_sent: Signal<Out, Bit>,
     /// The reason of the alarm sent (valid with `o_alarm_sent`).
     pub o_sent_reason: Signal<Out, Bits<4>>,
+    /// The last home-slot word sent carried an alarm (alternation state).
+    pub o_prev_alarm: Signal<Out, Bit>,
     /// DATA packet done.
     pub o_pkt_done: Signal<Out, Bit>,
     /// Alive flip-flop.
@@ -262,6 +268,7 @@ impl Fwd {
             i_wrapped: Default::default(),
             i_alarm_req: Default::default(),
             i_alarm_reason: Default::default(),
+            i_alarm_seq: Default::default(),
             i_master: Default::default(),
             i_slot_cfg: Default::default(),
             i_slot_data: Default::default(),
@@ -270,6 +277,7 @@ impl Fwd {
             o_regen: Default::default(),
             o_alarm_sent: Default::default(),
             o_sent_reason: Default::default(),
+            o_prev_alarm: Default::default(),
             o_pkt_done: Default::default(),
             o_toggle: Default::default(),
             o_line: Default::default(),
@@ -589,6 +597,9 @@ impl Logic for Fwd {
             }
             if self.i_alarm_reason.val().get_bit(3) {
                 self.fresh_data.next = self.fresh_data.val() | 0x8000;
+            }
+            if self.i_alarm_seq.val() {
+                self.fresh_data.next = self.fresh_data.val() | 0x0800;
             }
         }
         if (self.gidx.q.val() == 0) & !self.g_pend.q.val() {
@@ -1008,6 +1019,7 @@ impl Logic for Fwd {
         self.o_regen.next = self.regen.q.val();
         self.o_alarm_sent.next = self.sent.q.val();
         self.o_sent_reason.next = self.sent_reason.q.val();
+        self.o_prev_alarm.next = self.prev_alarm.q.val();
         self.o_pkt_done.next = self.done.q.val();
         self.o_toggle.next = self.toggle.q.val();
         self.o_line.next = self.out.o_line.val();

@@ -8,12 +8,17 @@
 //!   reads and writes it through Wishbone;
 //! - **configuration memory**, one byte per slot (bits 0 LAST, 1 ACT,
 //!   2 ALIVE_EN, 3 LOCAL; kept as 4 bits), in two copies (ring send side,
-//!   ring receive side + host), writable only before the ring runs;
+//!   ring receive side + host), writable only before the ring runs; the
+//!   receive copy keeps in bit 0, instead of LAST, the SEQ that a new alarm
+//!   of that slot has (the inverse of the last one read there; 0 after
+//!   reset and after a host write), and the host reads LAST from the send
+//!   copy;
 //! - **Alive check** per slot with ALIVE_EN (state memory: valid, last
 //!   Alive, lost, and the CYC that wrote it, so a slot missing in the
 //!   previous cycle is not compared), counted in `aerr`;
 //! - **interrupts and the alarm queue** (protocol §11): every good alarm
-//!   word in a slot other than the home slot (outside failsafe) pulses
+//!   word in a slot other than the home slot (outside failsafe) that is
+//!   not a repeat (its SEQ equal to the slot's last, §11) pulses
 //!   `o_irq1` / `o_irq2` / `o_irq_fs` / `o_irq_rc` (RECONFIG, reasons 4–6)
 //!   by its reason and goes into a 16-entry queue `{reason, slot, CYC}` that
 //!   the host reads oldest first; a full queue keeps its entries and counts
@@ -240,6 +245,9 @@ pub struct Mdb {
     s2_ok: DFF<Bit>,
     s2_alive: DFF<Bit>,
     s2_alarm: DFF<Bit>,
+    /// The word's configuration was read while the ring ran (so no host
+    /// write can come between the read and the SEQ write).
+    s2_run: DFF<Bit>,
     s2_data: DFF<Bits<16>>,
     irq1: DFF<Bit>,
     irq2: DFF<Bit>,
@@ -278,6 +286,11 @@ pub struct Mdb {
     new_ast: Signal<Local, Bits<6>>,
     prev_cyc: Signal<Local, Bits<3>>,
     ast_valid: Signal<Local, Bit>,
+    /// Stage 2: a good alarm word of another node's slot; FAILSAFE; not a
+    /// repeat.
+    s2_alrm: Signal<Local, Bit>,
+    s2_fsr: Signal<Local, Bit>,
+    s2_new: Signal<Local, Bit>,
     ast_word: Signal<Local, Bits<6>>,
     s2_write: Signal<Local, Bit>,
     host_req: Signal<Local, Bit>,
@@ -299,6 +312,7 @@ impl Logic for Mdb {
             s2_ok,
             s2_alive,
             s2_alarm,
+            s2_run,
             s2_data,
             irq1,
             irq2,
@@ -376,6 +390,7 @@ impl Logic for Mdb {
         self.s2_ok.d.next = self.i_ok.val();
         self.s2_alive.d.next = self.i_alive.val();
         self.s2_alarm.d.next = self.i_alarm.val();
+        self.s2_run.d.next = self.running.q.val();
         self.s2_data.d.next = self.i_data.val();
         // Stage 2: update data, Alive state, interrupts (protocol §7, §11).
         self.s2_cfg.next = self.cfg_rx.read_data.val();
@@ -423,10 +438,35 @@ impl Logic for Mdb {
         self.new_ast.next = self.s2_ast.val() & 4;
         self.ast.write_enable.next = false;
         self.ast.write_address.next = self.s2_slot.q.val();
+        // Alarm SEQ per slot (protocol §11), in bit 0 of the receive copy
+        // of the configuration (the host reads LAST from the send copy),
+        // inverted: the SEQ a new alarm of that slot has (0 after reset and
+        // after a host write: the sender's first alarm is new). A good
+        // alarm word with the other SEQ is a repeat. Kept in failsafe
+        // frames too; FAILSAFE alarms are never repeats. Written only while
+        // the ring runs, for a word whose configuration was read while it
+        // ran (the host writes the configuration before: a word read before
+        // a host write must not write its old bits back).
+        self.cfg_rx.write_enable.next = false;
+        self.cfg_rx.write_address.next = self.s2_slot.q.val();
+        self.cfg_rx.write_data.next = self.s2_cfg.val() | 1;
+        if self.s2_data.q.val().get_bit(11) {
+            self.cfg_rx.write_data.next = self.s2_cfg.val() & 14;
+        }
+        self.s2_alrm.next = self.s2.q.val()
+            & self.s2_ok.q.val()
+            & self.s2_alarm.q.val()
+            & (self.s2_slot.q.val() != self.i_home.val());
+        self.s2_fsr.next = self.s2_data.q.val().get_bits::<4>(12) == 3;
+        if self.s2_alrm.val() & !self.s2_fsr.val() & self.s2_run.q.val() & self.running.q.val() {
+            self.cfg_rx.write_enable.next = true;
+        }
+        self.s2_new.next =
+            self.s2_fsr.val() | (self.s2_data.q.val().get_bit(11) == self.s2_cfg.val().get_bit(0));
         if self.s2.q.val() & !self.fs_frame.q.val() {
             self.ast.write_enable.next = true;
             if self.s2_ok.q.val() {
-                if self.s2_alarm.q.val() & (self.s2_slot.q.val() != self.i_home.val()) {
+                if self.s2_alrm.val() & self.s2_new.val() {
                     // rust-hdl widens only with a masked cast (a lint
                     // warning), so the slot is copied bit by bit.
                     self.irq_word.next = self.s2_data.q.val() & 0xf000;
@@ -521,11 +561,8 @@ impl Logic for Mdb {
         // returns, 7 acknowledged.
         self.ack.d.next = false;
         self.cfg_tx.write_enable.next = false;
-        self.cfg_rx.write_enable.next = false;
         self.cfg_tx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
-        self.cfg_rx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
         self.cfg_tx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0);
-        self.cfg_rx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0);
         if !self.host_req.val() {
             self.hstate.d.next = 0.into();
         } else if self.hstate.q.val() == 0 {
@@ -545,12 +582,20 @@ impl Logic for Mdb {
                     if self.running.q.val() {
                         self.err_cfg.d.next = true;
                     } else {
+                        // The receive copy's bit 0 starts at 0 (a new
+                        // alarm has SEQ 0: the sender's first is new).
                         self.cfg_tx.write_enable.next = true;
                         self.cfg_rx.write_enable.next = true;
+                        self.cfg_rx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+                        self.cfg_rx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0) & 14;
                     }
                     self.ack.d.next = true;
                 } else if !self.i_wvalid.val() {
+                    // Bits 3:1 from the receive copy, LAST from the send
+                    // copy (the receive copy's bit 0 is the alarm SEQ).
                     self.cfg_rx.read_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+                    self.cfg_tx.read_address.next = self.i_wb_adr.val().get_bits::<12>(0);
+                    self.tx_served.d.next = false;
                     self.hstate.d.next = 5.into();
                 }
             } else {
@@ -699,7 +744,7 @@ impl Logic for Mdb {
             self.hstate.d.next = 7.into();
         } else if self.hstate.q.val() == 5 {
             self.stat.next = 0.into();
-            if self.cfg_rx.read_data.val().get_bit(0) {
+            if self.cfg_tx.read_data.val().get_bit(0) {
                 self.stat.next = self.stat.val() | 1;
             }
             if self.cfg_rx.read_data.val().get_bit(1) {

@@ -8,7 +8,9 @@
 //! or the link-test generator (BSS in modes WU, WD), the mode and
 //! failsafe logic (protocol §10, §12; after every switchbox change both
 //! outputs are dark for 12 bit times, [`crate::sw_dark`]), the
-//! interrupt/alarm queue (§11), the
+//! interrupt/alarm queue (§11) with confirmed delivery (the alarm in flight
+//! is read back at INPUT in the next frame and sent again, same SEQ, if it
+//! did not come round good), the
 //! actuator's output register and the error counters. A [`crate::master`]
 //! is this block with `i_master` = 1 and a database beside it.
 //!
@@ -154,6 +156,15 @@ pub struct Slave {
     pend_rc: DFF<Bit>,
     pend_i1: DFF<Bit>,
     pend_i2: DFF<Bit>,
+    /// The alarm in flight (sent, not read back yet, protocol §11): 0 none,
+    /// 1 IRQ1, 2 IRQ2, 3 RECONFIG (its reason is the node's mode: a mode
+    /// change replaces it).
+    fl_k: DFF<Bits<2>>,
+    /// The SEQ the next new alarm gets (the one in flight has the other).
+    nxt: DFF<Bit>,
+    seq_tx: Signal<Local, Bit>,
+    e_rc: Signal<Local, Bit>,
+    e_i1: Signal<Local, Bit>,
     act_data: DFF<Bits<16>>,
     perr: DFF<Bits<16>>,
     ferr: DFF<Bits<16>>,
@@ -231,6 +242,11 @@ impl Slave {
             pend_rc: Default::default(),
             pend_i1: Default::default(),
             pend_i2: Default::default(),
+            fl_k: Default::default(),
+            nxt: Default::default(),
+            seq_tx: Default::default(),
+            e_rc: Default::default(),
+            e_i1: Default::default(),
             act_data: Default::default(),
             perr: Default::default(),
             ferr: Default::default(),
@@ -248,7 +264,7 @@ impl Logic for Slave {
         dff_setup!(
             self, clock, failsafe, rw, armed, quiet, pend_fs, pend_rc, pend_i1, pend_i2, act_data,
             perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush,
-            inpkt_was
+            inpkt_was, fl_k, nxt
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -320,12 +336,21 @@ impl Logic for Slave {
             self.failsafe.d.next = true;
         }
 
-        // Alarm queue: FAILSAFE > RECONFIG > IRQ1 > IRQ2 (protocol §11).
+        // Alarm queue: FAILSAFE > the alarm in flight (a repeat, with its
+        // SEQ) > RECONFIG > IRQ1 > IRQ2 (protocol §11); FAILSAFE has SEQ 0.
+        self.e_rc.next = self.pend_rc.q.val();
+        self.e_i1.next = self.pend_i1.q.val();
+        self.seq_tx.next = self.nxt.q.val();
+        if self.fl_k.q.val() != 0 {
+            self.e_rc.next = self.fl_k.q.val() == 3;
+            self.e_i1.next = self.fl_k.q.val() == 1;
+            self.seq_tx.next = !self.nxt.q.val();
+        }
         self.reason.next = 2.into();
-        if self.pend_i1.q.val() {
+        if self.e_i1.val() {
             self.reason.next = 1.into();
         }
-        if self.pend_rc.q.val() {
+        if self.e_rc.val() {
             self.reason.next = 4.into();
             if self.swc.o_mode.val() == 1 {
                 self.reason.next = 5.into();
@@ -336,25 +361,55 @@ impl Logic for Slave {
         }
         if self.pend_fs.q.val() {
             self.reason.next = 3.into();
+            self.seq_tx.next = false;
         }
         self.fwd.i_alarm_req.next = self.pend_fs.q.val()
+            | (self.fl_k.q.val() != 0)
             | self.pend_rc.q.val()
             | self.pend_i1.q.val()
             | self.pend_i2.q.val();
         self.fwd.i_alarm_reason.next = self.reason.val();
-        // Clear what was sent (by the reason the forwarder took, even if
-        // the queue changed since).
+        self.fwd.i_alarm_seq.next = self.seq_tx.val();
+        // What was sent (by the reason the forwarder took, even if the queue
+        // changed since): a new alarm leaves the queue and is in flight; a
+        // repeat changes nothing. (A RECONFIG repeat that a mode change
+        // overtook after the forwarder took it counts as new: it then
+        // fails its read-back, and the repeat has the new mode and SEQ.)
         if self.fwd.o_alarm_sent.val() {
             if self.fwd.o_sent_reason.val() == 3 {
                 self.pend_fs.d.next = false;
                 self.failsafe.d.next = true;
-            } else if self.fwd.o_sent_reason.val() == 1 {
-                self.pend_i1.d.next = false;
-            } else if self.fwd.o_sent_reason.val() == 2 {
-                self.pend_i2.d.next = false;
-            } else {
-                self.pend_rc.d.next = false;
+            } else if self.fl_k.q.val() == 0 {
+                self.nxt.d.next = !self.nxt.q.val();
+                if self.fwd.o_sent_reason.val() == 1 {
+                    self.pend_i1.d.next = false;
+                    self.fl_k.d.next = 1.into();
+                } else if self.fwd.o_sent_reason.val() == 2 {
+                    self.pend_i2.d.next = false;
+                    self.fl_k.d.next = 2.into();
+                } else {
+                    self.pend_rc.d.next = false;
+                    self.fl_k.d.next = 3.into();
+                }
             }
+        }
+        // The read-back: the home slot's word at INPUT in the frame after
+        // the one that carried the alarm (outside failsafe). The forwarder
+        // decides the home slot at its first group, before the word
+        // completes at INPUT, so the frame that carried the alarm shows
+        // `o_prev_alarm` high there and the next one (data: alternation)
+        // low. The slot has one writer, so a good alarm word with the SEQ
+        // in flight is the alarm itself, and ends it.
+        if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 2)
+            & self.rx_in.o_own.val()
+            & !self.fwd.o_prev_alarm.val()
+            & !self.failsafe.q.val()
+            & self.rx_in.o_ok.val()
+            & self.rx_in.o_alarm.val()
+            & (self.rx_in.o_data.val().get_bit(11) != self.nxt.q.val())
+        {
+            self.fl_k.d.next = 0.into();
         }
 
         // CS timeout: no packet but TSTs for i_cs_timeout clocks (the
@@ -463,6 +518,10 @@ impl Logic for Slave {
         }
         if self.swc.o_change.val() {
             self.pend_rc.d.next = true;
+            // A RECONFIG in flight is replaced by the newer one (§11).
+            if self.fl_k.q.val() == 3 {
+                self.fl_k.d.next = 0.into();
+            }
         }
 
         // OUTPUT: the forwarded stream; while INPUT is dark the retime

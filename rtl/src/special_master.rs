@@ -12,7 +12,8 @@
 //! frame came back with a bad header, or not at all, is VOID however many
 //! cycles ago it last returned (CYC has only 3 bits). Per slot of the outgoing frame:
 //! - LOCAL: `{data memory, Alive}`, or an alarm in the home slot (§11, with
-//!   alternation);
+//!   alternation and SEQ in D[11]; the alarm stays in flight until the
+//!   frame returns with it good, and is sent again otherwise);
 //! - ACT: the returned word with the data memory's value and the actuator's
 //!   Alive; a VOID is regenerated with the Alive the actuator would send;
 //!   an alarm passes;
@@ -256,6 +257,14 @@ pub struct SpecialMaster {
     pend_i1: DFF<Bit>,
     pend_i2: DFF<Bit>,
     prev_alarm: DFF<Bit>,
+    /// The alarm in flight (sent, not read back yet, protocol §11), its
+    /// reason, the SEQ the next new alarm gets, and the read-back due in
+    /// the returning frame.
+    fl_v: DFF<Bit>,
+    fl_r: DFF<Bits<4>>,
+    nxt: DFF<Bit>,
+    await_rb: DFF<Bit>,
+    seq_tx: Signal<Local, Bit>,
     tick: Signal<Local, Bit>,
     st: Signal<Local, Bits<22>>,
     st_ok: Signal<Local, Bit>,
@@ -379,6 +388,11 @@ impl Default for SpecialMaster {
             pend_i1: Default::default(),
             pend_i2: Default::default(),
             prev_alarm: Default::default(),
+            fl_v: Default::default(),
+            fl_r: Default::default(),
+            nxt: Default::default(),
+            await_rb: Default::default(),
+            seq_tx: Default::default(),
             tick: Default::default(),
             unwrap_lead: Constant::new(UNWRAP_LEAD_BITS.to_bits()),
             unwrap_at: Default::default(),
@@ -431,6 +445,10 @@ impl Logic for SpecialMaster {
             pend_i1,
             pend_i2,
             prev_alarm,
+            fl_v,
+            fl_r,
+            nxt,
+            await_rb,
             ferr_owed,
             rdl,
             rcd,
@@ -572,11 +590,20 @@ impl Logic for SpecialMaster {
                 self.reason.next = 6.into();
             }
         }
+        // A repeat of the alarm in flight goes first, with its SEQ; a
+        // FAILSAFE request before it, with SEQ 0 (§11).
+        self.seq_tx.next = self.nxt.q.val();
+        if self.fl_v.q.val() {
+            self.reason.next = self.fl_r.q.val();
+            self.seq_tx.next = !self.nxt.q.val();
+        }
         if self.pend_fs.q.val() {
             self.reason.next = 3.into();
+            self.seq_tx.next = false;
         }
         self.send_alarm.next = self.home.val()
             & (self.pend_fs.q.val()
+                | self.fl_v.q.val()
                 | self.pend_rc.q.val()
                 | self.pend_i1.q.val()
                 | self.pend_i2.q.val())
@@ -590,6 +617,9 @@ impl Logic for SpecialMaster {
                 self.w_void.next = false;
                 if self.send_alarm.val() {
                     self.w_data.next = (bit_cast::<16, 4>(self.reason.val()) | 0) << 12;
+                    if self.seq_tx.val() {
+                        self.w_data.next = self.w_data.val() | 0x0800;
+                    }
                     self.w_alarm.next = true;
                 }
             } else if self.mdb.o_tx_act.val() {
@@ -622,17 +652,28 @@ impl Logic for SpecialMaster {
         }
         if self.ftx.o_take.val() & self.home.val() {
             self.prev_alarm.d.next = self.send_alarm.val() & !self.fs_tx.q.val();
+            if !self.fs_tx.q.val() {
+                self.await_rb.d.next = self.send_alarm.val() & !self.pend_fs.q.val();
+            }
+            // Decided from the flags, not from the reason they select
+            // (timing: the reason depends on the switchbox mode).
             if self.send_alarm.val() & !self.fs_tx.q.val() {
-                if self.reason.val() == 3 {
+                if self.pend_fs.q.val() {
                     self.pend_fs.d.next = false;
                     self.failsafe.d.next = true;
                     self.fs_request.d.next = true;
-                } else if self.reason.val() == 1 {
-                    self.pend_i1.d.next = false;
-                } else if self.reason.val() == 2 {
-                    self.pend_i2.d.next = false;
-                } else {
-                    self.pend_rc.d.next = false;
+                } else if !self.fl_v.q.val() {
+                    // A new alarm (not a repeat): in flight.
+                    self.fl_v.d.next = true;
+                    self.fl_r.d.next = self.reason.val();
+                    self.nxt.d.next = !self.nxt.q.val();
+                    if self.pend_rc.q.val() {
+                        self.pend_rc.d.next = false;
+                    } else if self.pend_i1.q.val() {
+                        self.pend_i1.d.next = false;
+                    } else {
+                        self.pend_i2.d.next = false;
+                    }
                 }
             }
         }
@@ -811,6 +852,28 @@ impl Logic for SpecialMaster {
         }
         if self.swc.o_change.val() {
             self.pend_rc.d.next = true;
+            // A RECONFIG in flight is replaced by the newer one (§11).
+            if self.fl_r.q.val().get_bit(2) {
+                self.fl_v.d.next = false;
+            }
+        }
+        // The read-back: the home slot's word as the frame returns (outside
+        // failsafe); the alarm itself, good, ends it.
+        if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 2)
+            & self.rx_in.o_own.val()
+            & self.await_rb.q.val()
+            & !self.failsafe.q.val()
+        {
+            // One writer per slot: a good alarm word with the SEQ in
+            // flight is the alarm itself.
+            self.await_rb.d.next = false;
+            if self.rx_in.o_ok.val()
+                & self.rx_in.o_alarm.val()
+                & (self.rx_in.o_data.val().get_bit(11) != self.nxt.q.val())
+            {
+                self.fl_v.d.next = false;
+            }
         }
         if self.rx_in.o_wvalid.val()
             & (self.rx_in.o_kind.val() == 2)
@@ -876,7 +939,7 @@ impl Logic for SpecialMaster {
         self.o_wb_ack.next = self.mdb.o_wb_ack.val();
         self.mdb.i_home.next = self.i_address.val();
         self.mdb.i_fs.next = self.failsafe.q.val();
-        self.mdb.i_mode.next = 0.into();
+        self.mdb.i_mode.next = self.swc.o_mode.val();
         self.mdb.i_wvalid.next = self.rx_in.o_wvalid.val();
         self.mdb.i_kind.next = self.rx_in.o_kind.val();
         self.mdb.i_slot.next = self.rx_in.o_slot.val();

@@ -563,6 +563,23 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         .map(|(a, z, _)| (a, z))
         .collect();
     let win_of = |c: u32| wins.iter().copied().find(|&(a, z)| a <= c && c <= z);
+    // The windows extended by the cycles after them in which an alarm sent
+    // inside may be repeated (protocol §11, §13), overlapping ones merged;
+    // a cycle in such a tail, with the cycles before it from the window's
+    // start.
+    let mut ext: Vec<(u32, u32)> = vec![];
+    for &(a, z) in &wins {
+        match ext.last_mut() {
+            Some(last) if a <= last.1 + 1 => last.1 = last.1.max(z + ring::REPEAT_TAIL),
+            _ => ext.push((a, z + ring::REPEAT_TAIL)),
+        }
+    }
+    let ext_of = |c: u32| ext.iter().copied().find(|&(a, z)| a <= c && c <= z);
+    let tail_of = |c: u32| {
+        ext_of(c)
+            .filter(|_| win_of(c).is_none())
+            .map(|(a, _)| (a, c - 1))
+    };
     let mut snaps = Snapshots::new(n);
     let mut alq = alarms::AlarmQueues::new(cfg);
     let mut fault_ticks: Vec<Option<u64>> = vec![None; cfg.faults.len()];
@@ -616,7 +633,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             }
             if c >= 2 {
                 let w = win_of(c - 2);
-                compare_cycle(&mut r, cfg, recs, c - 2, w, &mut mism, &mut words);
+                let spans = (w, tail_of(c - 2));
+                compare_cycle(&mut r, cfg, recs, c - 2, spans, &mut mism, &mut words);
                 compared = c - 1;
             }
             // The masters' alarm queues, as a host drains them: at a frame
@@ -803,7 +821,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         state.push(vals);
     }
     for c in compared..cfg.cycles {
-        compare_cycle(&mut r, cfg, recs, c, win_of(c), &mut mism, &mut words);
+        let spans = (win_of(c), tail_of(c));
+        compare_cycle(&mut r, cfg, recs, c, spans, &mut mism, &mut words);
     }
     // SEC packets per fibre and cycle, outside the recovery windows.
     nsec_at.push((0..2 * n).map(|f| r.rd(f, st::NSEC)).collect());
@@ -839,7 +858,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             && e.cycle + ring::BAD_WORDS_WINDOW >= last_cycle
     });
     // The alarm queues, drained to the end.
-    alq.finish(cfg, &mut r, recs, &win_of, &|k| last.nodes[k].up, &mut mism)?;
+    alq.finish(cfg, &mut r, recs, &ext_of, &|k| last.nodes[k].up, &mut mism)?;
     for (k, nd) in cfg.nodes.iter().enumerate() {
         let want = &last.nodes[k];
         // A dead node has no state to compare (its RTL runs on, unheard).
@@ -944,12 +963,6 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         });
     }
     snaps.compare(cfg, recs, |c| win_of(c).is_some(), &mut mism);
-    // Every mismatch placed at a node counts in its row (the per-cycle
-    // counters' and the alarm queue's too).
-    for row in &mut rows {
-        let place = format!("node {}", row.node);
-        row.mismatches = mism.iter().filter(|m| m.place == place).count();
-    }
     let mut shapes = vec![];
     for &k in alq.masters() {
         let own = match r.wb(k, WB_STATUS, None)? >> 4 & 3 {
@@ -958,6 +971,51 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             _ => Mode::N,
         };
         shapes.push((k, alq.shape(cfg, k, own)));
+    }
+    // Confirmed delivery (protocol §11): once every window and its repeats
+    // are over, and nobody is in failsafe, each master's view of the ring's
+    // shape is the RTL's own (its live nodes' switchbox modes).
+    let quiet_end =
+        settled && ext.iter().all(|&(_, z)| z < last_cycle) && state.iter().all(|v| v[1] == 0);
+    if quiet_end {
+        let up = |j: usize| last.nodes[j].up;
+        let real: Vec<(usize, Mode)> = (0..n)
+            .filter(|&j| up(j))
+            .filter_map(|j| match state[j][0] & 3 {
+                1 => Some((j, Mode::Wu)),
+                2 => Some((j, Mode::Wd)),
+                _ => None,
+            })
+            .collect();
+        for (k, shape) in shapes.iter().filter(|(k, _)| up(*k)) {
+            let seen: Vec<(usize, Mode)> = shape.iter().copied().filter(|&(j, _)| up(j)).collect();
+            if seen != real {
+                let show = |v: &[(usize, Mode)]| {
+                    let s: Vec<String> = v
+                        .iter()
+                        .map(|(j, m)| format!("node {j} {}", m.name()))
+                        .collect();
+                    if s.is_empty() {
+                        "every node in N".to_string()
+                    } else {
+                        s.join(", ")
+                    }
+                };
+                mism.push(Mismatch {
+                    cycle: last_cycle,
+                    place: format!("node {k}"),
+                    what: "ring shape from the alarm queue".into(),
+                    expected: show(&real),
+                    got: show(&seen),
+                });
+            }
+        }
+    }
+    // Every mismatch placed at a node counts in its row (the per-cycle
+    // counters' and the alarm queue's and the ring shape's too).
+    for row in &mut rows {
+        let place = format!("node {}", row.node);
+        row.mismatches = mism.iter().filter(|m| m.place == place).count();
     }
     // (Only nodes whose PI and PO fibres both carried the last frame.)
     let last_cyc = (last_cycle & 7) as u64;
@@ -1180,13 +1238,18 @@ fn dump_fibre(r: &mut Ring, f: usize, c: u32, frame: &ring::Frame) {
     eprintln!("{line}");
 }
 
-/// Compares every fibre's capture of cycle `c` with the model.
+/// A recovery window's first and last cycle, if any.
+type Span = Option<(u32, u32)>;
+
+/// Compares every fibre's capture of cycle `c` with the model. `spans`: the
+/// recovery window that holds cycle `c`, and the one whose repeat tail
+/// holds it (protocol §13).
 fn compare_cycle(
     r: &mut Ring,
     cfg: &Config,
     recs: &[CycleRecord],
     c: u32,
-    win: Option<(u32, u32)>,
+    (win, tail): (Span, Span),
     mism: &mut Vec<Mismatch>,
     words: &mut u64,
 ) {
@@ -1217,7 +1280,9 @@ fn compare_cycle(
     // to its end (Alive and alarm flags are bit timing there): never a
     // foreign value.
     let legal = |slot: usize, got: &Slot| -> bool {
-        let Some((a, z)) = win else { return false };
+        let Some((a, z)) = win else {
+            return repeat_tail(cfg, recs, c, tail, slot, got);
+        };
         let Slot::Data(g) = got else { return true };
         let span = &recs[a.saturating_sub(1) as usize..=z as usize];
         // A RECONFIG alarm (§11) of a mode its sender had in the window:
@@ -1229,7 +1294,8 @@ fn compare_cycle(
             && g.alarm
             && sender.is_some_and(|w| {
                 span.iter().any(|x| {
-                    g.data == (merkur_model::ring::reason::reconfig(x.nodes[w].mode) as u16) << 12
+                    g.data & !SEQ_BIT
+                        == (merkur_model::ring::reason::reconfig(x.nodes[w].mode) as u16) << 12
                 })
             });
         reconfig
@@ -1342,6 +1408,52 @@ fn compare_cycle(
                 }
             }
         }
+    }
+}
+
+/// The SEQ bit of a basic-variant alarm word (protocol §11).
+const SEQ_BIT: u16 = 0x0800;
+
+/// After a recovery window `tail` = (a, z), for [`ring::REPEAT_TAIL`]
+/// cycles (protocol §13): the home slot of a node that sent an alarm inside
+/// the window may carry a repeat of it (an alarm of a reason it sent there,
+/// or a RECONFIG of a mode it had), or — where the model repeats an alarm
+/// that the RTL got through — the data its writer produced since the
+/// window began.
+fn repeat_tail(
+    cfg: &Config,
+    recs: &[CycleRecord],
+    c: u32,
+    tail: Option<(u32, u32)>,
+    slot: usize,
+    got: &Slot,
+) -> bool {
+    let Some((a, z)) = tail else { return false };
+    let Some(w) = cfg.nodes.iter().position(|nd| nd.address == slot) else {
+        return false;
+    };
+    let span = &recs[a.saturating_sub(1) as usize..=c as usize];
+    let sent: Vec<u8> = recs[a as usize..=z as usize]
+        .iter()
+        .flat_map(|x| &x.events)
+        .filter(|e| e.node == w)
+        .filter_map(|e| match e.kind {
+            EventKind::AlarmTx { reason, .. } => Some(reason),
+            _ => None,
+        })
+        .collect();
+    if sent.is_empty() || cfg.ext {
+        return false;
+    }
+    let Slot::Data(g) = got else { return false };
+    if g.alarm {
+        let r = (g.data >> 12) as u8;
+        sent.contains(&r)
+            || span
+                .iter()
+                .any(|x| r == merkur_model::ring::reason::reconfig(x.nodes[w].mode))
+    } else {
+        span.iter().any(|x| x.produced.get(slot) == Some(&g.data))
     }
 }
 

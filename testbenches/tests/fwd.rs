@@ -67,7 +67,11 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
     f.set(p(&f, "i_address"), cfg.nodes[k].address as u64);
     let actuator = cfg.nodes[k].kind == Kind::Actuator;
     f.set(p(&f, "i_actuator"), actuator as u64);
-    let (freq, frsn) = (p(&f, "i_alarm_req"), p(&f, "i_alarm_reason"));
+    let (freq, frsn, fseq) = (
+        p(&f, "i_alarm_req"),
+        p(&f, "i_alarm_reason"),
+        p(&f, "i_alarm_seq"),
+    );
     let (fclk, fv, fl, fph, fhb, fsd, fao, fline) = (
         p(&f, "clock"),
         p(&f, "i_bvalid"),
@@ -107,11 +111,17 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         // The node's interrupt logic (not part of this block): the alarm the
         // model says this node sends in this cycle is requested.
         let alarm = recs[c as usize].events.iter().find_map(|e| match e.kind {
-            EventKind::AlarmTx { reason } if e.node == k => Some(reason),
+            EventKind::AlarmTx { reason, .. } if e.node == k => Some(reason),
             _ => None,
         });
         f.set(freq, alarm.is_some() as u64);
         f.set(frsn, alarm.unwrap_or(0) as u64);
+        // Its SEQ (D[11], protocol §11), as the model's word shows it.
+        let seq = match cycles[ci].2.words.get(slot) {
+            Some(Slot::Data(d)) if d.alarm => (d.data >> 11) & 1,
+            _ => 0,
+        };
+        f.set(fseq, seq as u64);
         mi.set(ismp, pair);
         mi.tick(iclk);
         f.set(fv, mi.get(ibv));

@@ -1,8 +1,10 @@
 //! The master's database alone (`merkur_rtl::mdb`): its alarm queue
 //! (protocol §11) against a naive queue kept here from the stimulus —
-//! seeded random received words (headers with their CYC, alarm and data
-//! words, good and bad, in the home slot and others) and host removals at
-//! random moments, with the queue run full so that overflow is exercised.
+//! seeded random received words (headers with their CYC, some of them in
+//! failsafe; alarm words with random SEQ, so that about half are repeats
+//! (§11: not delivered, but noted in failsafe too); data words; good and
+//! bad, in the home slot and others) and host removals at random moments,
+//! with the queue run full so that overflow is exercised.
 //! (The memories, the Alive check and the host port's refusals are checked
 //! in every ring run, `ring.rs`, and in the formal proofs, `formal.rs`.)
 
@@ -105,12 +107,20 @@ fn the_alarm_queue_keeps_sixteen_in_order_counts_the_rest_and_drains() {
     let mut overflow = 0u64;
     let mut pulses = [0u64; 4];
     let mut cyc = 0u64;
+    // The naive repeat filter: per slot the last SEQ read (1 at reset), and
+    // whether the frame is read in failsafe (nothing delivered).
+    let mut last_seq = [true; 32];
+    let mut fs = false;
+    let fs_port = b.m.port("i_fs");
+    let mut repeats = 0;
     for step in 0..3000 {
         let ctx = format!("seed {seed}, step {step}");
         match rng.below(10) {
             // A header: the CYC of the words that follow.
             0 => {
                 cyc = rng.below(8);
+                fs = rng.below(6) == 0;
+                b.m.set(fs_port, fs as u64);
                 b.word(1, 0, cyc << 12, false, true);
             }
             // A host removal (rarer early on, so the queue fills).
@@ -138,13 +148,20 @@ fn the_alarm_queue_keeps_sixteen_in_order_counts_the_rest_and_drains() {
                 let alarm = rng.below(2) == 0;
                 let ok = rng.below(10) != 0;
                 let reason = 1 + rng.below(6);
+                let seq = rng.below(2) == 1;
                 let data = if alarm {
-                    reason << 12
+                    reason << 12 | (seq as u64) << 11
                 } else {
                     rng.below(1 << 16)
                 };
                 b.word(2, slot, data, alarm, ok);
-                if alarm && ok && slot != home {
+                let mut new = reason == 3;
+                if alarm && ok && slot != home && reason != 3 {
+                    new = seq != last_seq[slot as usize];
+                    last_seq[slot as usize] = seq;
+                    repeats += !new as u32;
+                }
+                if alarm && ok && slot != home && new && !fs {
                     let line = match reason {
                         1 => 0,
                         2 => 1,
@@ -162,6 +179,7 @@ fn the_alarm_queue_keeps_sixteen_in_order_counts_the_rest_and_drains() {
         }
     }
     assert!(overflow > 0, "seed {seed}: the queue never filled");
+    assert!(repeats > 100, "seed {seed}: only {repeats} repeats");
     assert_eq!(b.pulses, pulses, "seed {seed}: interrupt pulses per line");
     assert_eq!(
         b.wb(WB_ALQ_OVF, None) as u64,

@@ -79,6 +79,16 @@ fn ring8_interrupts_agree_with_the_model() {
     passes("ring8_irq.toml");
 }
 
+/// Confirmed alarm delivery (protocol §11): bit errors damage four alarm
+/// words (a sensor's, an actuator's in the retransmission, a master's, the
+/// special master's); each sender reads its alarm back, repeats it, and the
+/// masters that had it drop the repeat — bit flips have no recovery
+/// window, so every word and queue entry is compared exactly.
+#[test]
+fn ring8_alarm_repeats_agree_with_the_model() {
+    passes("ring8_alarm_repeat.toml");
+}
+
 /// 32 hops at clocks from −1000 to +934 ppm: edge errors must not add up
 /// along the chain (the retimed forwarder, docs/architecture.md).
 #[test]
@@ -191,7 +201,9 @@ fn ring8_failsafe_request_agrees_with_the_model() {
 
 /// The window rules do not hide errors after the window: a counter
 /// increment the model did not make, in a cycle after the break's window,
-/// is reported, and so is a wrong word there.
+/// is reported, and so is a wrong word there — in a slot whose writer sent
+/// no alarm in the window, and in the repeat tail (protocol §13) of one
+/// that did (node 6, WU: data its writer did not produce).
 #[test]
 fn after_a_window_the_comparison_is_exact() {
     let cfg = load("ring8_break_primary.toml");
@@ -201,13 +213,17 @@ fn after_a_window_the_comparison_is_exact() {
     for rec in &mut recs[c..] {
         rec.nodes[4].perr += 1;
     }
-    let ring::Carry::Data(f) = &mut recs[c].fibres[2] else {
-        panic!("P2 carries the frame in cycle {c}")
-    };
-    let Slot::Data(w) = &mut f.words[6] else {
-        panic!("slot 6 is good")
-    };
-    w.data ^= 0x0010;
+    // Slot 2 on P2; slot 6 on P6, where node 6's word of this cycle leaves.
+    for (fibre, slot) in [(2, 2), (6, 6)] {
+        let ring::Carry::Data(f) = &mut recs[c].fibres[fibre] else {
+            panic!("P{fibre} carries the frame in cycle {c}")
+        };
+        let Slot::Data(w) = &mut f.words[slot] else {
+            panic!("slot {slot} is good")
+        };
+        w.data ^= 0x0010;
+    }
+    recs[c].produced[6] ^= 0x0010;
     let rep = run(&cfg, &recs, &Options::default()).unwrap();
     let found: Vec<(u32, &str, &str)> = rep
         .mismatches
@@ -217,7 +233,8 @@ fn after_a_window_the_comparison_is_exact() {
     assert_eq!(
         found,
         [
-            (c as u32, "P2", "slot 6"),
+            (c as u32, "P2", "slot 2"),
+            (c as u32, "P6", "slot 6"),
             (c as u32, "node 4", "perr increment")
         ],
         "{:#?}",

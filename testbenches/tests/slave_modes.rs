@@ -198,9 +198,12 @@ fn wrap_reintegrate_and_failsafe() {
         "{ctx}: ACK 0 then 1"
     );
 
-    // PO: the slave's own slot (2) carries RECONFIG(WU) = 0x5000 after the
-    // wrap, RECONFIG(N) = 0x4000 after the reintegration, and otherwise its
-    // sensor value; after failsafe, FS in H0 and the slot left as it came.
+    // PO: the slave's own slot (2) carries RECONFIG(WU) = 0x5000 (SEQ 0)
+    // after the wrap, RECONFIG(N) = 0x4800 (SEQ 1, the next alarm) after
+    // the reintegration, and otherwise its sensor value; after failsafe, FS
+    // in H0 and the slot left as it came. (Nothing goes round this bench,
+    // so no alarm is read back: each is repeated, with its SEQ, every other
+    // frame until the next replaces it, protocol §11.)
     let own: Vec<&Seen> = rpo
         .packets
         .iter()
@@ -212,7 +215,11 @@ fn wrap_reintegrate_and_failsafe() {
             .position(|s| matches!(s, Seen::Word(d, _, true) if *d == w))
     };
     let wu = pos(0x5000).unwrap_or_else(|| panic!("{ctx}: RECONFIG(WU) alarm on PO: {own:?}"));
-    let n_ = pos(0x4000).unwrap_or_else(|| panic!("{ctx}: RECONFIG(N) alarm on PO: {own:?}"));
+    let n_ = pos(0x4800).unwrap_or_else(|| panic!("{ctx}: RECONFIG(N) alarm on PO: {own:?}"));
+    assert!(
+        pos(0x4000).is_none() && pos(0x5800).is_none(),
+        "{ctx}: SEQ: {own:?}"
+    );
     assert!(wu < n_, "{ctx}: WU alarm before N alarm");
     assert!(
         matches!(own[wu + 1], Seen::Word(0xabcd, _, false)),

@@ -220,7 +220,7 @@ fn sent_in_windows(
         .flat_map(|rec| &rec.events)
         .filter(|ev| win(ev.cycle).is_some())
         .filter_map(|ev| match ev.kind {
-            EventKind::AlarmTx { reason } => {
+            EventKind::AlarmTx { reason, .. } => {
                 Some((ev.cycle, cfg.nodes[ev.node].address as u16, reason))
             }
             _ => None,
@@ -231,11 +231,12 @@ fn sent_in_windows(
 /// Compares a queue with the model's deliveries; the first difference
 /// (comparing further would only repeat it shifted). The deliveries outside
 /// the windows entry for entry, in order. Around them, entries the window
-/// rule allows, any number (an alarm sent into a frame that a fault damages
-/// is lost, in the model as in the RTL, and which frame that is, is bit
-/// timing): an alarm that a node sent inside a window (`sent`), with its
-/// reason (RECONFIG: any mode — which change is pending when the sender
-/// next writes is bit timing), in a frame of that window (its CYC).
+/// rule allows (which frame a fault damages, and so which alarm has to be
+/// repeated and when, is bit timing): an alarm that a node sent inside a
+/// window (`sent`), with its reason (RECONFIG: any mode — which change is
+/// pending when the sender next writes is bit timing), in a frame of that
+/// window (its CYC). `win` gives the windows extended by their repeat
+/// tails (protocol §13).
 fn compare(
     want: &[(u32, Entry)],
     sent: &[Sent],
