@@ -461,8 +461,10 @@ impl Logic for Mdb {
         if self.s2_alrm.val() & !self.s2_fsr.val() & self.s2_run.q.val() & self.running.q.val() {
             self.cfg_rx.write_enable.next = true;
         }
-        self.s2_new.next =
-            self.s2_fsr.val() | (self.s2_data.q.val().get_bit(11) == self.s2_cfg.val().get_bit(0));
+        // (Before its host starts it, a master filters nothing.)
+        self.s2_new.next = self.s2_fsr.val()
+            | !self.s2_run.q.val()
+            | (self.s2_data.q.val().get_bit(11) == self.s2_cfg.val().get_bit(0));
         if self.s2.q.val() & !self.fs_frame.q.val() {
             self.ast.write_enable.next = true;
             if self.s2_ok.q.val() {

@@ -8,7 +8,9 @@
 //! (The memories, the Alive check and the host port's refusals are checked
 //! in every ring run, `ring.rs`, and in the formal proofs, `formal.rs`.)
 
-use merkur_rtl::mdb::{Mdb, ALQ_CLEAR_OVF, ALQ_POP, WB_ALQ_CTL, WB_ALQ_HEAD, WB_ALQ_OVF};
+use merkur_rtl::mdb::{
+    Mdb, ALQ_CLEAR_OVF, ALQ_POP, ST_RUN, WB_ALQ_CTL, WB_ALQ_HEAD, WB_ALQ_OVF, WB_STATUS,
+};
 use merkur_rtl::verilog::block_verilog;
 use merkur_testbenches::wishbone::Wishbone;
 use merkur_testbenches::{verilator::Model, Rng};
@@ -103,6 +105,8 @@ fn the_alarm_queue_keeps_sixteen_in_order_counts_the_rest_and_drains() {
     let home = 1 + rng.below(30);
     let home_port = b.m.port("i_home");
     b.m.set(home_port, home);
+    // The host starts it (the repeat filter works from then on, §11).
+    b.wb(WB_STATUS, Some(ST_RUN));
     let mut want: VecDeque<Entry> = VecDeque::new();
     let mut overflow = 0u64;
     let mut pulses = [0u64; 4];
