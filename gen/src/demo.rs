@@ -105,6 +105,9 @@ pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
                 EventKind::AliveLost { slot } => format!("alive lost in slot {slot}"),
                 EventKind::AliveRestored { slot } => format!("alive back in slot {slot}"),
                 EventKind::SecFail => "secondary test frame did not return".to_string(),
+                EventKind::Takeover { prio } => {
+                    format!("takes over as the clock base (backup priority {prio})")
+                }
                 EventKind::BadWords { port } => format!(
                     "{} bad words in a row on {}: channel failure",
                     merkur_model::ring::BAD_WORDS,

@@ -300,6 +300,18 @@ fn check(path: &Path, line_rate: Option<f64>) -> Result<(), String> {
         count(Sensor),
         count(Actuator)
     );
+    let backups = cfg.backups();
+    if !backups.is_empty() {
+        let list: Vec<String> = backups
+            .iter()
+            .map(|(k, p)| format!("node {k} priority {p}"))
+            .collect();
+        println!(
+            "backups    {} (flying special master, protocol §8); CS timeout {} cycles",
+            list.join(", "),
+            cfg.cs_timeout_cycles()
+        );
+    }
     println!(
         "frame      {} slots, {} words, {} bit times{}",
         cfg.slots,

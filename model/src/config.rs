@@ -184,9 +184,12 @@ pub struct NodeCfg {
     pub ppm: f64,
     /// Masters: Alive check enabled on foreign slots.
     pub alive_check: bool,
-    /// Special master: leaves failsafe only after its host's clear command
-    /// too (`fs_exit = "host"`, protocol §12).
+    /// Special master (and a backup once it is the clock base): leaves
+    /// failsafe only after its host's clear command too (`fs_exit =
+    /// "host"`, protocol §12).
     pub fs_exit_host: bool,
+    /// Masters: backup clock base of this priority (1 first; protocol §8).
+    pub backup: Option<u8>,
 }
 
 /// A validated scenario.
@@ -318,6 +321,9 @@ impl Config {
             if nd.fs_exit_host {
                 let _ = writeln!(o, "fs_exit = \"host\"");
             }
+            if let Some(b) = nd.backup {
+                let _ = writeln!(o, "backup = {b}");
+            }
             let _ = writeln!(o, "ppm = {:?}\n", nd.ppm);
         }
         for (cycle, node, slot, data) in &self.host_writes {
@@ -398,6 +404,25 @@ impl Config {
         o
     }
 
+    /// Backup clock bases: (node, priority), lowest priority first.
+    pub fn backups(&self) -> Vec<(usize, u8)> {
+        let mut v: Vec<(usize, u8)> = self
+            .nodes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, x)| x.backup.map(|b| (i, b)))
+            .collect();
+        v.sort_by_key(|x| x.1);
+        v
+    }
+
+    /// Cycles without a start delimiter at INPUT that put a node into
+    /// failsafe (protocol §12 rule 4): 3, or 2 + the highest backup
+    /// priority (protocol §8).
+    pub fn cs_timeout_cycles(&self) -> u32 {
+        2 + self.backups().last().map_or(1, |b| b.1 as u32)
+    }
+
     /// Line bits of one word.
     pub fn word_bits(&self) -> u32 {
         word_bits(self.ext)
@@ -416,6 +441,9 @@ impl Config {
 pub fn frame_bits(slots: usize, ext: bool) -> u32 {
     JK_BITS + (2 + slots as u32) * word_bits(ext)
 }
+
+/// Highest backup clock-base priority (protocol §8).
+pub const MAX_BACKUP: u32 = 7;
 
 /// Longest legal cycle period in bit times (docs/protocol.md §8): the nodes'
 /// 20-bit period and CS timeout registers hold 7 · P clocks.
@@ -663,12 +691,49 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 ));
             }
         }
+        let backup = match &rn.backup {
+            None => None,
+            Some(b) => {
+                if kind != Kind::Master {
+                    return Err(m.at(
+                        b,
+                        format!(
+                            "node[{i}].backup = {}: only a master can be a backup clock base (this node is a {}){}",
+                            b.get_ref(),
+                            kind.name(),
+                            if kind == Kind::SpecialMaster {
+                                ", and the special master is the clock base already"
+                            } else {
+                                ""
+                            }
+                        ),
+                    ));
+                }
+                let p = *b.get_ref();
+                if !(1..=MAX_BACKUP).contains(&p) {
+                    return Err(m.at(
+                        b,
+                        format!("node[{i}].backup = {p} is out of range: priorities are 1..{MAX_BACKUP} (1 takes over first)"),
+                    ));
+                }
+                if let Some(other) = (0..i).find(|&o| {
+                    raw.node[o].backup.as_ref().map(|x| *x.get_ref()) == Some(p)
+                        && raw.node[o].kind.get_ref() == &Kind::Master
+                }) {
+                    return Err(m.at(
+                        b,
+                        format!("node[{i}].backup = {p}: node[{other}] already has priority {p}; backup priorities are distinct"),
+                    ));
+                }
+                Some(p as u8)
+            }
+        };
         if let Some(x) = &rn.fs_exit {
-            if kind != Kind::SpecialMaster {
+            if kind != Kind::SpecialMaster && backup.is_none() {
                 return Err(m.at(
                     x,
                     format!(
-                        "node[{i}].fs_exit: a {} does not decide when the ring leaves failsafe; only the special master does",
+                        "node[{i}].fs_exit: a {} does not decide when the ring leaves failsafe; only the special master (or a backup, once it is the clock base) does",
                         kind.name()
                     ),
                 ));
@@ -682,6 +747,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             ppm,
             alive_check: rn.alive_check.unwrap_or(true),
             fs_exit_host: rn.fs_exit.as_ref().map(|x| *x.get_ref()) == Some(FsExit::Host),
+            backup,
         };
         match kind {
             Kind::Sensor => {
@@ -790,6 +856,25 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             v
         }
     };
+    // The CS timeout with backups, (2.5 + p_max) periods, in the nodes'
+    // 20-bit registers at 2 clocks per bit time (protocol §8).
+    if let Some((i, pmax)) = nodes
+        .iter()
+        .enumerate()
+        .filter_map(|(i, x)| x.backup.map(|b| (i, b)))
+        .max_by_key(|x| x.1)
+    {
+        let clocks = (5 + 2 * pmax as u64) * period as u64;
+        if clocks >= 1 << 20 {
+            return Err(m.at(
+                raw.node[i].backup.as_ref().expect("a backup"),
+                format!(
+                    "node[{i}].backup = {pmax}: with a period of {period} bit times the CS timeout of {} periods needs {clocks} clocks, more than the nodes' 20-bit register holds; use a lower priority or a shorter period",
+                    2.5 + pmax as f64
+                ),
+            ));
+        }
+    }
     let line_rate_mbps = match &raw.frame.line_rate_mbps {
         None => 50.0,
         Some(r) => {
@@ -955,10 +1040,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 forbid(spanu(&f.pattern), "pattern")?;
                 let ns = f.node.as_ref().expect("checked");
                 let node = check_node(ns, format!("fault[{j}].node"))?;
-                if node == sm {
+                if node == sm && nodes.iter().all(|x: &NodeCfg| x.backup.is_none()) {
                     return Err(m.at(
                         ns,
-                        format!("fault[{j}].node = {node} is the special master; its death needs a flying master (BRIEF §5), which this version does not have"),
+                        format!("fault[{j}].node = {node} is the special master, and no master is a backup clock base: its death would stop the ring (give a master `backup = 1`, protocol §8)"),
                     ));
                 }
                 Fault::Kill {

@@ -216,7 +216,8 @@ pub enum FsCause {
     SecondFault,
     /// A header with FS=1 arrived.
     Header,
-    /// No start delimiter at INPUT for [`CS_TIMEOUT_CYCLES`] cycles.
+    /// No start delimiter at INPUT for [`CS_TIMEOUT_CYCLES`] cycles (more
+    /// with backup clock bases, [`Config::cs_timeout_cycles`]).
     Timeout,
     /// A FAILSAFE alarm (user request) was sent or received.
     Request,
@@ -225,7 +226,7 @@ pub enum FsCause {
 }
 
 /// Cycles without a start delimiter at INPUT that put a node into
-/// failsafe (protocol §12, rule 4).
+/// failsafe (protocol §12, rule 4), in a ring without backup clock bases.
 pub const CS_TIMEOUT_CYCLES: u32 = 3;
 /// Frames back whole in a row after which the special master leaves
 /// failsafe (protocol §12).
@@ -330,6 +331,12 @@ pub enum EventKind {
     },
     /// The special master's secondary test frame did not return intact.
     SecFail,
+    /// A backup became the clock base: the special master (or the backup
+    /// before it) was dead (§8).
+    Takeover {
+        /// Its backup priority.
+        prio: u8,
+    },
     /// A stream controller saw [`BAD_WORDS`] bad words in a row on this
     /// receiver (PI or SI), at the event's slot: a run (§9), a transient
     /// that wraps a node in a ring not known to be wrapped (soft wrap).
@@ -432,6 +439,12 @@ pub struct NodeState {
     bad_run: [u32; 2],
     /// This cycle: a run of bad words reached [`BAD_WORDS`] on PI, SI.
     cf_words: [bool; 2],
+    /// Cycles in a row whose INPUT carried no packet (frame, frame body,
+    /// SEC or TST): a backup's election timer (§8).
+    pub quiet: u32,
+    /// At its last good header the node did not know the ring was wrapped
+    /// (§8: a backup may then take over as from a first fault).
+    elig: bool,
 }
 
 /// The ring.
@@ -467,6 +480,21 @@ pub struct Ring {
     /// WU ends of links that reintegrated at the end of the last cycle:
     /// this cycle's frame reaches their INPUT without its start delimiter.
     lose_next: Vec<usize>,
+    /// The clock base: the special master, or the backup that took over
+    /// from it (§8, the flying special master).
+    pub base: usize,
+}
+
+/// The faults of one cycle that act inside its frames.
+struct CycleFaults {
+    /// Fibres that break before a slot (fibre, slot).
+    cut_fibre: Vec<(Fibre, usize)>,
+    /// Nodes that die before a slot (node, slot).
+    cut_node: Vec<(usize, usize)>,
+    /// Bit flips (fibre, target, bit).
+    flips: Vec<(Fibre, FlipTarget, u32)>,
+    /// Bursts of garbage.
+    bursts: Vec<Fault>,
 }
 
 /// What the special master keeps to bring the ring out of failsafe
@@ -499,8 +527,12 @@ pub struct CycleRecord {
     pub events: Vec<Event>,
     /// Value each slot's writer produced this cycle.
     pub produced: Vec<u16>,
-    /// Processing path this cycle (node indices, SM first).
+    /// Processing path this cycle (node indices, the clock base first;
+    /// empty when no frame was sent).
     pub path: Vec<usize>,
+    /// The clock base after the cycle (the special master, or the backup
+    /// that took over, §8).
+    pub base: usize,
     /// Fibres on which the SEC went ahead of the DATA frame that the fibre
     /// shows (a ring wrapped in this cycle), with the SEC's `ok`.
     pub sec_with_data: Vec<(usize, bool)>,
@@ -574,6 +606,8 @@ impl Ring {
                 last_seq: vec![true; if nc.kind.is_master() { s } else { 0 }],
                 bad_run: [0; 2],
                 cf_words: [false; 2],
+                quiet: 0,
+                elig: false,
             })
             .collect();
         Ring {
@@ -588,6 +622,7 @@ impl Ring {
             returned_rwc: false,
             exit: SmExit::default(),
             lose_next: vec![],
+            base: cfg.sm,
             cfg,
         }
     }
@@ -657,7 +692,7 @@ impl Ring {
     }
 
     fn enter_failsafe(&mut self, ev: &mut Vec<Event>, k: usize, at: At, cause: FsCause) {
-        if k == self.cfg.sm && cause == FsCause::Request {
+        if k == self.base && cause == FsCause::Request {
             self.exit.request = true;
         }
         if !self.nodes[k].failsafe {
@@ -703,7 +738,7 @@ impl Ring {
         }
         if self.cfg.fs_clears.contains(&c) {
             self.exit.host_clear = true;
-            let sm = self.cfg.sm;
+            let sm = self.base;
             self.event(&mut ev, c, At::Hdr, sm, EventKind::FsClear);
         }
         // 2. Faults of this cycle.
@@ -764,162 +799,26 @@ impl Ring {
         }
         let mut got_frame = vec![false; n];
         let mut path = vec![];
+        let cf = CycleFaults {
+            cut_fibre,
+            cut_node,
+            flips,
+            bursts,
+        };
 
-        // 3. The data frame.
-        let sm = self.cfg.sm;
+        // 3. The data frame, from the clock base (a backup takes over when
+        // it is dead, §8).
+        let base = self.clock_base(&mut ev);
         // The SEC decision is made at the cycle's start, from the RWC of
         // the last frame that returned before it (protocol §8).
         let sec_rwc = self.returned_rwc;
-        let clr = self.sm_frame_start(&mut ev);
-        {
-            let hdr = Header {
-                fs: self.nodes[sm].failsafe,
-                rwc: self.nodes[sm].mode != Mode::N,
-                rwp: self.returned_rwc,
-                cyc: (c & 7) as u8,
-                hop: 0,
-                clr,
-            };
-            let mut frame = Frame {
-                hdr: HeaderRx::Ok(hdr),
-                hdr_bad: (false, false),
-                hdr_marked: false,
-                words: self.store.clone(),
-            };
-            if !self.nodes[sm].failsafe {
-                for s in 0..s_count {
-                    self.write_slot(sm, s, &mut frame.words[s], &mut ev);
-                }
-            }
-            self.emitted = frame.words.clone();
-            path.push(sm);
-            let mut fib = self.out_fibre(sm, table1(self.nodes[sm].mode).1);
-            let mut returned = None;
-            for _hop in 0..4 * n + 4 {
-                if !self.lit(fib) {
-                    break;
-                }
-                if let Some(&(_, s)) = cut_fibre.iter().find(|(f, _)| *f == fib) {
-                    truncate(&mut frame, s);
-                }
-                self.apply_flips(&mut frame, fib, &flips);
-                for b in &bursts {
-                    if let Fault::Burst { fibre, .. } = *b {
-                        if fibre == fib {
-                            self.apply_burst(&mut frame, *b);
-                        }
-                    }
-                }
-                let fi = self.fibre_index(fib);
-                fibres[fi] = Carry::Data(frame.clone());
-                let (k, port) = self.dst(fib);
-                if !self.nodes[k].up {
-                    break;
-                }
-                let (inp, out, bsr, bss) = table1(self.nodes[k].mode);
-                // A run of bad words on the receiver: channel failure at
-                // that word (§9). In mode N the node wraps there (§10), so
-                // its outputs carry nothing of this frame from that word on.
-                let cf_at = if port == inp || (port == bsr && self.nodes[k].mode == Mode::N) {
-                    self.count_bad_words(k, port, &frame, &mut ev)
-                } else {
-                    None
-                };
-                let cut_at = cf_at.filter(|_| self.nodes[k].mode == Mode::N);
-                if port == inp && self.lose_next.contains(&k) {
-                    // A WU end that unwrapped at this frame's J K on PI.
-                    frame.hdr = HeaderRx::NoCs;
-                }
-                if port == inp {
-                    if k == sm {
-                        if let Some(at) = cut_at {
-                            cut(&mut frame, at);
-                        }
-                        returned = Some(frame.clone());
-                        break;
-                    }
-                    path.push(k);
-                    got_frame[k] = self.process(k, &mut frame, &mut ev);
-                    mark(&mut frame);
-                    if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
-                        truncate(&mut frame, s);
-                    }
-                    if let Some(at) = cut_at {
-                        cut(&mut frame, at);
-                    }
-                    fib = self.out_fibre(k, out);
-                } else if port == bsr && self.nodes[k].mode == Mode::N {
-                    if let Some(&(_, s)) = cut_node.iter().find(|(nd, _)| *nd == k) {
-                        truncate(&mut frame, s);
-                    }
-                    if let Some(at) = cut_at {
-                        cut(&mut frame, at);
-                    }
-                    fib = self.out_fibre(k, bss);
-                } else {
-                    break;
-                }
-            }
-            got_frame[sm] = self.sm_return(returned, &mut ev);
-        }
-
-        // 4. The secondary test frame.
         let mut sec_with_data = vec![];
-        if self.nodes[sm].mode == Mode::N && !sec_rwc {
-            let mut ok = true;
-            let mut lost = false;
-            let mut back = false;
-            let mut fib = self.out_fibre(sm, Port::So);
-            for _ in 0..2 * n + 2 {
-                if !self.lit(fib) || cut_fibre.iter().any(|(f, _)| *f == fib) {
-                    break;
-                }
-                for &(ff, t, _) in &flips {
-                    if ff == fib {
-                        match t {
-                            FlipTarget::Cs => lost = true,
-                            FlipTarget::H0 | FlipTarget::H1 => ok = false,
-                            FlipTarget::Slot(_) => {}
-                        }
-                    }
-                }
-                if lost {
-                    break;
-                }
-                let fi = self.fibre_index(fib);
-                let (k, port) = self.dst(fib);
-                if ok && self.nodes[k].up {
-                    // Its good header words end a run of bad words (§9).
-                    self.nodes[k].bad_run[usize::from(port == Port::Si)] = 0;
-                }
-                // A fibre that also carries the (wrapped) DATA frame shows
-                // the frame; the SEC that went ahead of it is listed apart.
-                if matches!(fibres[fi], Carry::Data(_)) {
-                    sec_with_data.push((fi, ok));
-                } else {
-                    fibres[fi] = Carry::Sec { ok };
-                }
-                if !self.nodes[k].up || cut_node.iter().any(|(nd, _)| *nd == k) {
-                    break;
-                }
-                let (inp, out, bsr, bss) = table1(self.nodes[k].mode);
-                if port == bsr && self.nodes[k].mode == Mode::N {
-                    if k == sm {
-                        back = true;
-                        break;
-                    }
-                    fib = self.out_fibre(k, bss);
-                } else if port == inp && k != sm {
-                    // A forwarder passes a SEC on its INPUT unchanged (a
-                    // wrapped node's INPUT is a secondary fibre, §5).
-                    fib = self.out_fibre(k, out);
-                } else {
-                    break;
-                }
-            }
-            if !(back && ok) {
-                self.nodes[sm].serr += 1;
-                self.event(&mut ev, c, At::End, sm, EventKind::SecFail);
+        if let Some(sm) = base {
+            got_frame[sm] =
+                self.data_frame(sm, &cf, &mut fibres, &mut got_frame, &mut path, &mut ev);
+            // 4. The secondary test frame.
+            if self.nodes[sm].mode == Mode::N && !sec_rwc {
+                sec_with_data = self.sec_frame(sm, &cf, &mut fibres, &mut ev);
             }
         }
 
@@ -940,6 +839,7 @@ impl Ring {
         }
 
         // 6. Frame supervision and the CS timeout.
+        let cs_timeout = self.cfg.cs_timeout_cycles();
         let mut packet_in = vec![false; n];
         for (k, &got) in got_frame.iter().enumerate() {
             if !self.nodes[k].up {
@@ -955,7 +855,7 @@ impl Ring {
                 // without a good frame from the gap in CYC's 3 bits at the
                 // next good header: 8 or more in a row count modulo 8
                 // (protocol §9); the special master counts every one.
-                if k != self.cfg.sm {
+                if k != self.base {
                     self.nodes[k].ferr -= 8 * (self.nodes[k].missed / 8);
                 }
                 self.nodes[k].missed = 0;
@@ -975,20 +875,24 @@ impl Ring {
                 Carry::Tst { .. } | Carry::Silent | Carry::Idle => false,
             };
             packet_in[k] = jk;
+            // A backup's election timer (§8): any packet on INPUT, or the
+            // body of a frame whose J K was destroyed, restarts it.
+            let any = !matches!(fibres[self.fibre_index(inp)], Carry::Silent | Carry::Idle);
+            self.nodes[k].quiet = if any { 0 } else { self.nodes[k].quiet + 1 };
             if got || jk {
                 self.nodes[k].no_cs = 0;
             } else if self.nodes[k].armed {
                 self.nodes[k].no_cs += 1;
-                if self.nodes[k].no_cs >= CS_TIMEOUT_CYCLES {
+                if self.nodes[k].no_cs >= cs_timeout {
                     self.enter_failsafe(&mut ev, k, At::End, FsCause::Timeout);
                 }
             }
         }
         // Faults that take effect at the end of the cycle.
-        for (f, _) in &cut_fibre {
+        for (f, _) in &cf.cut_fibre {
             self.broken.insert(*f);
         }
-        for (k, _) in &cut_node {
+        for (k, _) in &cf.cut_node {
             self.nodes[*k].up = false;
         }
         for f in &faults {
@@ -1013,7 +917,7 @@ impl Ring {
         // Alive flip-flops toggle after each frame a node processed (the
         // special master after each frame it sent).
         for (k, nd) in self.nodes.iter_mut().enumerate() {
-            if got_frame[k] || k == sm {
+            if got_frame[k] || base == Some(k) {
                 nd.toggle = !nd.toggle;
             }
         }
@@ -1025,8 +929,221 @@ impl Ring {
             events: ev,
             produced,
             path,
+            base: self.base,
             sec_with_data,
         }
+    }
+
+    /// The clock base that sends this cycle's frame (§8): the special
+    /// master, or the backup that took over from it. When the clock base is
+    /// dead, the eligible backup of lowest priority p whose INPUT has been
+    /// quiet for p cycles takes over now; `None`: no frame this cycle.
+    fn clock_base(&mut self, ev: &mut Vec<Event>) -> Option<usize> {
+        if self.nodes[self.base].up {
+            return Some(self.base);
+        }
+        let (k, prio) = self.cfg.backups().into_iter().find(|&(k, p)| {
+            let nd = &self.nodes[k];
+            nd.up && nd.armed && nd.elig && !nd.failsafe && nd.quiet >= u32::from(p)
+        })?;
+        self.base = k;
+        // What a clock base learns from returning frames starts afresh; the
+        // return store is empty, as after a frame that did not come back.
+        self.store = vec![Slot::Void; self.cfg.slots];
+        self.emitted = vec![Slot::Void; self.cfg.slots];
+        self.returned_rwc = false;
+        self.exit = SmExit::default();
+        let c = self.cycle;
+        self.event(ev, c, At::Hdr, k, EventKind::Takeover { prio });
+        Some(k)
+    }
+
+    /// Section 3 of a cycle: clock base `sm` sends the DATA frame, every
+    /// node on its path processes or passes it, and it comes back (or not)
+    /// into the return store. Returns whether `sm` got a good header back.
+    #[allow(clippy::too_many_arguments)]
+    fn data_frame(
+        &mut self,
+        sm: usize,
+        f: &CycleFaults,
+        fibres: &mut [Carry],
+        got_frame: &mut [bool],
+        path: &mut Vec<usize>,
+        ev: &mut Vec<Event>,
+    ) -> bool {
+        let c = self.cycle;
+        let n = self.n();
+        let s_count = self.cfg.slots;
+        let clr = self.sm_frame_start(ev);
+        let hdr = Header {
+            fs: self.nodes[sm].failsafe,
+            rwc: self.nodes[sm].mode != Mode::N,
+            rwp: self.returned_rwc,
+            cyc: (c & 7) as u8,
+            hop: 0,
+            clr,
+        };
+        let mut frame = Frame {
+            hdr: HeaderRx::Ok(hdr),
+            hdr_bad: (false, false),
+            hdr_marked: false,
+            words: self.store.clone(),
+        };
+        if !self.nodes[sm].failsafe {
+            for s in 0..s_count {
+                self.write_slot(sm, s, &mut frame.words[s], ev);
+            }
+        }
+        // The clock base dies while it sends (a kill before slot s).
+        let dies = f.cut_node.iter().find(|(nd, _)| *nd == sm).map(|x| x.1);
+        if let Some(s) = dies {
+            truncate(&mut frame, s);
+        }
+        let dies = dies.is_some();
+        self.emitted = frame.words.clone();
+        path.push(sm);
+        let mut fib = self.out_fibre(sm, table1(self.nodes[sm].mode).1);
+        let mut returned = None;
+        for _hop in 0..4 * n + 4 {
+            if !self.lit(fib) {
+                break;
+            }
+            if let Some(&(_, s)) = f.cut_fibre.iter().find(|(x, _)| *x == fib) {
+                truncate(&mut frame, s);
+            }
+            self.apply_flips(&mut frame, fib, &f.flips);
+            for b in &f.bursts {
+                if let Fault::Burst { fibre, .. } = *b {
+                    if fibre == fib {
+                        self.apply_burst(&mut frame, *b);
+                    }
+                }
+            }
+            let fi = self.fibre_index(fib);
+            fibres[fi] = Carry::Data(frame.clone());
+            let (k, port) = self.dst(fib);
+            if !self.nodes[k].up {
+                break;
+            }
+            let (inp, out, bsr, bss) = table1(self.nodes[k].mode);
+            // A run of bad words on the receiver: channel failure at
+            // that word (§9). In mode N the node wraps there (§10), so
+            // its outputs carry nothing of this frame from that word on.
+            let cf_at = if port == inp || (port == bsr && self.nodes[k].mode == Mode::N) {
+                self.count_bad_words(k, port, &frame, ev)
+            } else {
+                None
+            };
+            let cut_at = cf_at.filter(|_| self.nodes[k].mode == Mode::N);
+            if port == inp && self.lose_next.contains(&k) {
+                // A WU end that unwrapped at this frame's J K on PI.
+                frame.hdr = HeaderRx::NoCs;
+            }
+            if port == inp {
+                if k == sm {
+                    if let Some(at) = cut_at {
+                        cut(&mut frame, at);
+                    }
+                    returned = Some(frame.clone());
+                    break;
+                }
+                path.push(k);
+                got_frame[k] = self.process(k, &mut frame, ev);
+                mark(&mut frame);
+                if let Some(&(_, s)) = f.cut_node.iter().find(|(nd, _)| *nd == k) {
+                    truncate(&mut frame, s);
+                }
+                if let Some(at) = cut_at {
+                    cut(&mut frame, at);
+                }
+                fib = self.out_fibre(k, out);
+            } else if port == bsr && self.nodes[k].mode == Mode::N {
+                if let Some(&(_, s)) = f.cut_node.iter().find(|(nd, _)| *nd == k) {
+                    truncate(&mut frame, s);
+                }
+                if let Some(at) = cut_at {
+                    cut(&mut frame, at);
+                }
+                fib = self.out_fibre(k, bss);
+            } else {
+                break;
+            }
+        }
+        if dies {
+            returned = None;
+        }
+        self.sm_return(returned, ev)
+    }
+
+    /// Section 4 of a cycle: the secondary test frame of clock base `sm`
+    /// in mode N (§8). Returns the fibres where it went ahead of a DATA
+    /// frame, with its `ok`.
+    fn sec_frame(
+        &mut self,
+        sm: usize,
+        f: &CycleFaults,
+        fibres: &mut [Carry],
+        ev: &mut Vec<Event>,
+    ) -> Vec<(usize, bool)> {
+        let c = self.cycle;
+        let n = self.n();
+        let mut sec_with_data = vec![];
+        let mut ok = true;
+        let mut lost = false;
+        let mut back = false;
+        let mut fib = self.out_fibre(sm, Port::So);
+        for _ in 0..2 * n + 2 {
+            if !self.lit(fib) || f.cut_fibre.iter().any(|(x, _)| *x == fib) {
+                break;
+            }
+            for &(ff, t, _) in &f.flips {
+                if ff == fib {
+                    match t {
+                        FlipTarget::Cs => lost = true,
+                        FlipTarget::H0 | FlipTarget::H1 => ok = false,
+                        FlipTarget::Slot(_) => {}
+                    }
+                }
+            }
+            if lost {
+                break;
+            }
+            let fi = self.fibre_index(fib);
+            let (k, port) = self.dst(fib);
+            if ok && self.nodes[k].up {
+                // Its good header words end a run of bad words (§9).
+                self.nodes[k].bad_run[usize::from(port == Port::Si)] = 0;
+            }
+            // A fibre that also carries the (wrapped) DATA frame shows
+            // the frame; the SEC that went ahead of it is listed apart.
+            if matches!(fibres[fi], Carry::Data(_)) {
+                sec_with_data.push((fi, ok));
+            } else {
+                fibres[fi] = Carry::Sec { ok };
+            }
+            if !self.nodes[k].up || f.cut_node.iter().any(|(nd, _)| *nd == k) {
+                break;
+            }
+            let (inp, out, bsr, bss) = table1(self.nodes[k].mode);
+            if port == bsr && self.nodes[k].mode == Mode::N {
+                if k == sm {
+                    back = true;
+                    break;
+                }
+                fib = self.out_fibre(k, bss);
+            } else if port == inp && k != sm {
+                // A forwarder passes a SEC on its INPUT unchanged (a
+                // wrapped node's INPUT is a secondary fibre, §5).
+                fib = self.out_fibre(k, out);
+            } else {
+                break;
+            }
+        }
+        if !(back && ok) {
+            self.nodes[sm].serr += 1;
+            self.event(ev, c, At::End, sm, EventKind::SecFail);
+        }
+        sec_with_data
     }
 
     /// Value the writer of slot `s` produces in cycle `c` (without alarms).
@@ -1224,6 +1341,7 @@ impl Ring {
         }
         let wrapped = self.nodes[k].mode != Mode::N;
         self.nodes[k].rw = h.rwc || h.rwp || wrapped;
+        self.nodes[k].elig = !self.nodes[k].rw;
         h.hop = (h.hop + 1) & 0xfff;
         h.rwc |= wrapped;
         self.nodes[k].hop = Some(h.hop);
@@ -1317,7 +1435,7 @@ impl Ring {
     /// [`WHOLE_RETURNS`] frames came back whole (and the host's clear
     /// command where it is needed); returns whether this frame carries CLR.
     fn sm_frame_start(&mut self, ev: &mut Vec<Event>) -> bool {
-        let sm = self.cfg.sm;
+        let sm = self.base;
         let c = self.cycle;
         if self.nodes[sm].failsafe {
             let host = self.cfg.nodes[sm].fs_exit_host || self.exit.request;
@@ -1345,7 +1463,7 @@ impl Ring {
     /// came back (§12): `hop_ref`, frames back whole, the CLR frames, and
     /// rule 3.
     fn exit_return(&mut self, h: &Header, ev: &mut Vec<Event>) {
-        let sm = self.cfg.sm;
+        let sm = self.base;
         let was_fs = self.nodes[sm].failsafe;
         if !was_fs && !h.fs {
             self.exit.hop_ref = Some(h.hop);
@@ -1365,7 +1483,7 @@ impl Ring {
     }
 
     fn sm_return(&mut self, returned: Option<Frame>, ev: &mut Vec<Event>) -> bool {
-        let sm = self.cfg.sm;
+        let sm = self.base;
         let s_count = self.cfg.slots;
         let Some(frame) = returned else {
             self.store = vec![Slot::Void; s_count];
@@ -1808,7 +1926,7 @@ impl Ring {
     fn reintegrate(&mut self, seen: &Inputs) {
         let n = self.n();
         let c = self.cycle;
-        let sm = self.cfg.sm;
+        let sm = self.base;
         let was_lost = std::mem::take(&mut self.lose_next);
         // A node forwards a frame on PO next cycle: it is not wrapped
         // towards PO (not WD), a frame reaches its INPUT (it had one, or it
@@ -1911,7 +2029,12 @@ fn rx_slot(r: Rx) -> Slot {
 pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)> {
     let last = cfg.cycles.saturating_sub(1);
     let n = cfg.nodes.len();
-    let sm = cfg.sm;
+    // The clock base before cycle c (§8: a backup may have taken over).
+    let base_before = |c: u32| {
+        c.checked_sub(1)
+            .and_then(|p| records.get(p as usize))
+            .map_or(cfg.sm, |r| r.base)
+    };
     let mut v: Vec<(u32, u32, String)> = cfg
         .faults
         .iter()
@@ -1927,16 +2050,30 @@ pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)>
             // the special master brings the ring out (§12, §13).
             let in_fs = records
                 .get(*c as usize)
-                .is_some_and(|r| r.nodes[sm].failsafe);
+                .is_some_and(|r| r.nodes[r.base].failsafe);
             if let (Fault::Repair { .. }, true) = (f, in_fs) {
                 let exit = records
                     .iter()
                     .flat_map(|r| &r.events)
                     .find(|e| {
-                        e.node == sm && e.cycle > *c && matches!(e.kind, EventKind::FailsafeExit)
+                        e.cycle > *c
+                            && matches!(e.kind, EventKind::FailsafeExit)
+                            && records.get(e.cycle as usize).map(|r| r.base) == Some(e.node)
                     })
                     .map_or(last, |e| e.cycle + EXIT_WINDOW);
                 end = end.max(exit);
+            }
+            // The clock base's death: the window runs to 3 cycles after a
+            // backup's takeover (§8, §13), to the end without one.
+            if let Fault::Kill { node, .. } = f {
+                if *node == base_before(*c) {
+                    let takeover = records
+                        .iter()
+                        .flat_map(|r| &r.events)
+                        .find(|e| e.cycle >= *c && matches!(e.kind, EventKind::Takeover { .. }))
+                        .map_or(last, |e| e.cycle + 3);
+                    end = end.max(takeover);
+                }
             }
             Some((*c, end.min(last), f.to_string()))
         })

@@ -108,6 +108,10 @@ pub struct RawNode {
     /// host's clear command too (`host`).
     #[serde(default)]
     pub fs_exit: Option<Spanned<FsExit>>,
+    /// Masters: a backup clock base of this priority (1..7, 1 first;
+    /// protocol §8, the flying special master).
+    #[serde(default)]
+    pub backup: Option<Spanned<u32>>,
 }
 
 /// How the special master leaves failsafe (docs/protocol.md §12).

@@ -64,6 +64,7 @@ fn event_text(k: &EventKind) -> String {
         EventKind::AliveLost { slot } => format!("alive-lost s{slot}"),
         EventKind::AliveRestored { slot } => format!("alive-ok s{slot}"),
         EventKind::SecFail => "sec-fail".to_string(),
+        EventKind::Takeover { prio } => format!("takeover p{prio}"),
         EventKind::BadWords { port } => format!("bad-words {}", port.name().to_lowercase()),
     }
 }

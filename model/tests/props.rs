@@ -13,45 +13,6 @@ mod common;
 use common::*;
 use merkur_model::ring;
 use proptest::prelude::*;
-use proptest::test_runner::{Config as PConfig, RngAlgorithm, TestRng, TestRunner};
-
-const DEFAULT_SEED: u64 = 0x6d65_726b_7572;
-
-fn seed() -> u64 {
-    std::env::var("MERKUR_SEED")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(DEFAULT_SEED)
-}
-
-fn runner(cases: u32) -> (TestRunner, u64) {
-    let s = seed();
-    let mut bytes = [0u8; 32];
-    bytes[..8].copy_from_slice(&s.to_le_bytes());
-    let cfg = PConfig {
-        cases,
-        failure_persistence: None,
-        ..PConfig::default()
-    };
-    (
-        TestRunner::new_with_rng(cfg, TestRng::from_seed(RngAlgorithm::ChaCha, &bytes)),
-        s,
-    )
-}
-
-/// Kinds of a random ring: one special master at `sm`, the others drawn
-/// from `pick` (0 sensor, 1 actuator, 2 master).
-fn kinds(n: usize, sm: usize, pick: &[u8]) -> Vec<&'static str> {
-    (0..n)
-        .map(|i| {
-            if i == sm {
-                "special_master"
-            } else {
-                ["sensor", "actuator", "master"][pick[i % pick.len()] as usize % 3]
-            }
-        })
-        .collect()
-}
 
 /// A structural fault: 0 break P, 1 break S, 2 kill.
 fn fault_text(kind: u8, pos: usize, n: usize, sm: usize, cycle: u32, slot: Option<u32>) -> String {

@@ -143,6 +143,11 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
             "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
         );
     }
+    if let Some(&(k, p)) = cfg.backups().first() {
+        return Some(format!(
+            "node[{k}].backup = {p}: the flying special master (protocol §8) is in the model only; no RTL master carries the special master's logic yet"
+        ));
+    }
     if cfg
         .faults
         .iter()

@@ -4,6 +4,7 @@
 use merkur_model::config::{self, Config, SlotKind};
 use merkur_model::ring::{self, CycleRecord};
 use merkur_model::scenario::Kind;
+use proptest::test_runner::{Config as PConfig, RngAlgorithm, TestRng, TestRunner};
 
 /// Loads a scenario from text, panicking with the error's display.
 pub fn load(text: &str) -> Config {
@@ -105,4 +106,46 @@ pub fn ring_text(kinds: &[&str], cycles: u32, extra: &str) -> String {
         );
     }
     t + extra
+}
+
+/// The property tests' seed when MERKUR_SEED is not set.
+pub const DEFAULT_SEED: u64 = 0x6d65_726b_7572;
+
+/// The property tests' seed: MERKUR_SEED, or [`DEFAULT_SEED`]; the tests
+/// print it on failure.
+pub fn seed() -> u64 {
+    std::env::var("MERKUR_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(DEFAULT_SEED)
+}
+
+/// A proptest runner of `cases` cases seeded from [`seed`], and the seed.
+pub fn runner(cases: u32) -> (TestRunner, u64) {
+    let s = seed();
+    let mut bytes = [0u8; 32];
+    bytes[..8].copy_from_slice(&s.to_le_bytes());
+    let cfg = PConfig {
+        cases,
+        failure_persistence: None,
+        ..PConfig::default()
+    };
+    (
+        TestRunner::new_with_rng(cfg, TestRng::from_seed(RngAlgorithm::ChaCha, &bytes)),
+        s,
+    )
+}
+
+/// Kinds of a random ring: one special master at `sm`, the others drawn
+/// from `pick` (0 sensor, 1 actuator, 2 master).
+pub fn kinds(n: usize, sm: usize, pick: &[u8]) -> Vec<&'static str> {
+    (0..n)
+        .map(|i| {
+            if i == sm {
+                "special_master"
+            } else {
+                ["sensor", "actuator", "master"][pick[i % pick.len()] as usize % 3]
+            }
+        })
+        .collect()
 }
