@@ -464,7 +464,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20   // later), code 1s in a row, and the armed flip: J found (its first 0 code bit after 5 or more 1s), count to line\n\
                  \x20   // bit fl_tgt, invert from that boundary to the next. The line is the sender's delayed by 4 ticks, so a flip\n\
                  \x20   // decided a half late still starts on time.\n\
-                 \x20   reg hp_{f} = 1'b0, pend_{f} = 1'b0, fl_arm_{f} = 1'b0, fl_run_{f} = 1'b0, fl_open_{f} = 1'b0;\n\
+                 \x20   reg hp_{f} = 1'b0, pend_{f} = 1'b0, fl_arm_{f} = 1'b0, fl_run_{f} = 1'b0, fl_open_{f} = 1'b0, trk_{f} = 1'b0;\n\
                  \x20   reg [2:0] hc_{f} = 3'd0, ones_{f} = 3'd0;\n    reg [3:0] txd_{f} = 4'd0;\n    reg [11:0] fl_tgt_{f} = 12'd0, fl_cnt_{f} = 12'd0;\n\
                  \x20   reg [31:0] tc_{f} = 32'd0, fl_is_{f} = 32'hffffffff, fl_ie_{f} = 32'hffffffff;\n\
                  \x20   wire edge_{f} = txl_{f} != hp_{f};\n    wire [2:0] hn_{f} = hc_{f} + 3'd1;\n\
@@ -481,13 +481,13 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20   wire bu_gr_{f} = (bu_z_{f} == 2'd2) ? 1'b1 : ((bu_o_{f} == 4'd9) ? 1'b0 : bu_s_{f}[0]);\n\
                  \x20   wire bu_g_{f} = (bu_start_{f} | (bu_len_{f} == 12'd1)) ? 1'b1 : bu_gr_{f};\n\
                  \x20   wire [15:0] bu_sn_{f} = bu_s_{f}[0] ? ({{1'b0, bu_s_{f}[15:1]}} ^ 16'hb400) : {{1'b0, bu_s_{f}[15:1]}};\n\
-                 \x20   wire inv_{f} = ((tickd_{f} >= fl_is_{f}) & (tickd_{f} < fl_ie_{f})) ^ ((tickd_{f} >= bu_t_{f}) ? bu_m_{f} : bu_pm_{f});\n\
+                 \x20   wire inv_{f} = trk_{f} & (((tickd_{f} >= fl_is_{f}) & (tickd_{f} < fl_ie_{f})) ^ ((tickd_{f} >= bu_t_{f}) ? bu_m_{f} : bu_pm_{f}));\n\
                  \x20   always @(posedge clk) begin\n        txd_{f} <= {{txd_{f}[2:0], txl_{f}}};\n\
                  \x20       line_{f} <= (brk_{f} | dead_{src}) ? 1'b0 : (txd_{f}[3] ^ inv_{f});\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
-                 \x20       if (hs_{src}) begin\n            hp_{f} <= txl_{f};\n\
+                 \x20       if (trk_{f} & hs_{src}) begin\n            hp_{f} <= txl_{f};\n\
                  \x20           if (edge_{f}) begin\n                hc_{f} <= 3'd0;\n                pend_{f} <= 1'b0;\n            end else if (pend_{f}) begin\n                hc_{f} <= 3'd1;\n                pend_{f} <= 1'b0;\n\
                  \x20           end else begin\n                hc_{f} <= hn_{f};\n                if (hn_{f} == 3'd4) begin\n                    pend_{f} <= 1'b1;\n                    tc_{f} <= tick;\n                end\n            end\n        end\n\
-                 \x20       if (bev_{f}) begin\n            ones_{f} <= b0_{f} ? 3'd0 : (ones_{f} == 3'd7 ? 3'd7 : ones_{f} + 3'd1);\n\
+                 \x20       if (trk_{f} & bev_{f}) begin\n            ones_{f} <= b0_{f} ? 3'd0 : (ones_{f} == 3'd7 ? 3'd7 : ones_{f} + 3'd1);\n\
                  \x20           if (jdet_{f}) begin\n                fl_arm_{f} <= 1'b0;\n                fl_run_{f} <= fl_tgt_{f} > 12'd2;\n                fl_cnt_{f} <= fl_tgt_{f} - 12'd2;\n\
                  \x20           end else if (fl_run_{f}) begin\n                fl_cnt_{f} <= fl_cnt_{f} - 12'd1;\n                if (fl_cnt_{f} == 12'd1) fl_run_{f} <= 1'b0;\n            end\n\
                  \x20           if (hit_{f} & (bu_cfg_{f} == 12'd0)) begin\n                fl_is_{f} <= bt_{f};\n                fl_ie_{f} <= 32'hffffffff;\n                fl_open_{f} <= 1'b1;\n            end else if (fl_open_{f}) begin\n                fl_ie_{f} <= bt_{f};\n                fl_open_{f} <= 1'b0;\n            end\n\
@@ -498,8 +498,12 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20               if (bu_start_{f}) begin\n                    bu_z_{f} <= 2'd0;\n                    bu_o_{f} <= 4'd1;\n                    bu_cfg_{f} <= 12'd0;\n                end\n\
                  \x20           end else if (bu_ret_{f}) begin\n                // After the last garbage bit the level is the sender's again.\n\
                  \x20               bu_pm_{f} <= bu_m_{f};\n                bu_m_{f} <= 1'b0;\n                bu_t_{f} <= bt_{f};\n                bu_ret_{f} <= 1'b0;\n            end\n        end\n\
+                 \x20       // The fault point works only while a flip or burst is armed or running (trk); arming it starts the bit grid\n\
+                 \x20       // afresh from the line's level (an armed packet is always after an idle gap: edges every bit, ones enough).\n\
+                 \x20       trk_{f} <= trk_{f} & (fl_arm_{f} | fl_run_{f} | fl_open_{f} | (bu_len_{f} != 12'd0) | bu_ret_{f} | bu_m_{f} | (tickd_{f} < fl_ie_{f}) | (tickd_{f} < bu_t_{f}));\n\
                  \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_brk}) brk_{f} <= i_cfg_val[0];\n\
                  \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) begin\n            fl_arm_{f} <= 1'b1;\n            fl_run_{f} <= 1'b0;\n            fl_tgt_{f} <= i_cfg_val[11:0];\n\
+                 \x20           trk_{f} <= 1'b1;\n            hp_{f} <= txl_{f};\n            hc_{f} <= 3'd0;\n            pend_{f} <= 1'b0;\n            ones_{f} <= 3'd0;\n\
                  \x20           bu_cfg_{f} <= i_cfg_val[23:12];\n            bu_s_{f} <= {{i_cfg_val[31:24], 8'ha5}};\n        end\n    end\n\
                  \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
                  \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
