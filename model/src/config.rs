@@ -107,6 +107,12 @@ pub enum Fault {
         /// Slot before which it happens (None: before the delimiter).
         slot: Option<usize>,
     },
+    /// A dead node gets power again before the cycle's start delimiter
+    /// and rejoins (protocol §12).
+    Restart {
+        /// The node.
+        node: usize,
+    },
     /// One line bit inverted.
     Flip {
         /// The fibre.
@@ -140,6 +146,7 @@ impl fmt::Display for Fault {
             Fault::Break { fibre, slot } => write!(f, "break {fibre} at {}", at(slot)),
             Fault::Repair { fibre, slot } => write!(f, "repair {fibre} at {}", at(slot)),
             Fault::Kill { node, slot } => write!(f, "kill node{node} at {}", at(slot)),
+            Fault::Restart { node } => write!(f, "restart node{node}"),
             Fault::Flip { fibre, target, bit } => write!(f, "flip {fibre} {target} bit {bit}"),
             Fault::Burst {
                 fibre,
@@ -366,6 +373,9 @@ impl Config {
                 Fault::Kill { node, slot: s } => {
                     let _ = writeln!(o, "kind = \"kill\"\nnode = {node}");
                     slot(&mut o, s);
+                }
+                Fault::Restart { node } => {
+                    let _ = writeln!(o, "kind = \"restart\"\nnode = {node}");
                 }
                 Fault::Burst {
                     fibre,
@@ -968,6 +978,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             FaultKind::Break => "break",
             FaultKind::Repair => "repair",
             FaultKind::Kill => "kill",
+            FaultKind::Restart => "restart",
             FaultKind::Flip => "flip",
             FaultKind::Burst => "burst",
         };
@@ -1050,6 +1061,39 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                     node,
                     slot: slot_at(&f.slot)?,
                 }
+            }
+            FaultKind::Restart => {
+                need(f.node.is_some(), "node")?;
+                forbid(span(&f.fibre), "fibre")?;
+                forbid(span(&f.word), "word")?;
+                forbid(spanu(&f.slot), "slot")?;
+                forbid(spanu(&f.bit), "bit")?;
+                forbid(spanu(&f.length), "length")?;
+                forbid(spanu(&f.pattern), "pattern")?;
+                let ns = f.node.as_ref().expect("checked");
+                let node = check_node(ns, format!("fault[{j}].node"))?;
+                // Dead at this cycle: killed in an earlier cycle, not
+                // restarted since (faults in file order; kills and restarts
+                // of one node alternate in time).
+                let mut life: Vec<(u32, bool)> = faults
+                    .iter()
+                    .filter_map(|(fc, x): &(u32, Fault)| match *x {
+                        Fault::Kill { node: y, .. } if y == node => Some((*fc, false)),
+                        Fault::Restart { node: y } if y == node => Some((*fc, true)),
+                        _ => None,
+                    })
+                    .collect();
+                life.sort();
+                let dead = life.iter().rev().find(|x| x.0 < c).is_some_and(|x| !x.1);
+                if !dead {
+                    return Err(m.at(
+                        ns,
+                        format!(
+                            "fault[{j}].node = {node}: a restart in cycle {c} needs the node dead before it (a kill in an earlier cycle, listed before the restart); node {node} is alive then"
+                        ),
+                    ));
+                }
+                Fault::Restart { node }
             }
             FaultKind::Burst => {
                 need(f.fibre.is_some(), "fibre")?;

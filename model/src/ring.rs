@@ -445,6 +445,18 @@ pub struct NodeState {
     /// At its last good header the node did not know the ring was wrapped
     /// (§8: a backup may then take over as from a first fault).
     elig: bool,
+    /// A restarted master before its reload frame (§12): it reads every
+    /// slot, its own too, and writes nothing.
+    reload: bool,
+    /// Masters: per slot, the data memory holds a value to write: always,
+    /// but after a restart (§12) only once the reload frame brought a good
+    /// word or the host wrote it (its LOCAL and ACT slots are written only
+    /// then; the reload leaves what the host wrote).
+    valid: Vec<bool>,
+    /// Restarted and not yet whole again (§12): when its upstream link
+    /// reintegrates and its downstream neighbour is wrapped towards it, it
+    /// turns to WD instead of N.
+    rejoin: bool,
 }
 
 /// The ring.
@@ -572,44 +584,7 @@ impl Ring {
     pub fn new(cfg: Config) -> Ring {
         let n = cfg.nodes.len();
         let s = cfg.slots;
-        let nodes = cfg
-            .nodes
-            .iter()
-            .map(|nc| NodeState {
-                mode: Mode::N,
-                up: true,
-                failsafe: false,
-                rw: false,
-                armed: false,
-                missed: 0,
-                no_cs: 0,
-                perr: 0,
-                ferr: 0,
-                aerr: 0,
-                serr: 0,
-                hop: None,
-                db: if nc.kind.is_master() {
-                    vec![0; s]
-                } else {
-                    vec![]
-                },
-                output: 0,
-                toggle: false,
-                last_alive: vec![None; if nc.kind.is_master() { s } else { 0 }],
-                alive_lost: vec![false; if nc.kind.is_master() { s } else { 0 }],
-                act_alive: vec![false; if nc.kind.is_master() { s } else { 0 }],
-                prev_home_alarm: false,
-                pending: BTreeSet::new(),
-                inflight: None,
-                awaiting: false,
-                seq: true,
-                last_seq: vec![true; if nc.kind.is_master() { s } else { 0 }],
-                bad_run: [0; 2],
-                cf_words: [false; 2],
-                quiet: 0,
-                elig: false,
-            })
-            .collect();
+        let nodes = (0..n).map(|k| fresh_node(&cfg, k)).collect();
         Ring {
             nodes,
             cycle: 0,
@@ -716,6 +691,7 @@ impl Ring {
         for &(wc, node, slot, data) in &self.cfg.host_writes {
             if wc == c {
                 self.nodes[node].db[slot] = data;
+                self.nodes[node].valid[slot] = true;
             }
         }
         let irqs: Vec<(usize, IrqLine)> = self
@@ -761,6 +737,16 @@ impl Ring {
                     slot: Some(s),
                 } => cut_fibre.push((fibre, s)),
                 Fault::Kill { node, slot: None } => self.nodes[node].up = false,
+                Fault::Restart { node } => {
+                    // Power-up state (§12); a master reloads from the ring.
+                    let mut fresh = fresh_node(&self.cfg, node);
+                    fresh.reload = self.cfg.nodes[node].kind.is_master();
+                    fresh.valid.iter_mut().for_each(|v| *v = false);
+                    fresh.rejoin = true;
+                    self.nodes[node] = fresh;
+                    self.unwrapped_at[node] = None;
+                    self.lose_next.retain(|&x| x != node);
+                }
                 Fault::Kill {
                     node,
                     slot: Some(s),
@@ -1356,6 +1342,10 @@ impl Ring {
             return true;
         }
         frame.hdr = HeaderRx::Ok(h);
+        if self.nodes[k].reload {
+            self.reload(k, frame, ev);
+            return true;
+        }
         for s in 0..frame.words.len() {
             self.read_slot(k, s, frame.words[s], ev);
             if !self.nodes[k].failsafe {
@@ -1363,6 +1353,16 @@ impl Ring {
             }
         }
         true
+    }
+
+    /// A restarted master's reload frame (§12): it reads the frame like
+    /// any master (taking the good words of its own slots too, as long as
+    /// it has no value for them: `valid`) and writes nothing.
+    fn reload(&mut self, k: usize, frame: &Frame, ev: &mut Vec<Event>) {
+        for (s, &w) in frame.words.iter().enumerate() {
+            self.read_slot(k, s, w, ev);
+        }
+        self.nodes[k].reload = false;
     }
 
     /// A stream controller's run of bad words (§9) on node `k`'s receiver
@@ -1602,8 +1602,11 @@ impl Ring {
                             }
                         }
                     }
-                    if !own && (ext || !d.alarm) {
+                    // Its own slots only while it has no value for them
+                    // after a restart (§12).
+                    if (!own || !self.nodes[k].valid[s]) && (ext || !d.alarm) {
                         self.nodes[k].db[s] = d.data;
+                        self.nodes[k].valid[s] = true;
                     }
                     let check = self.cfg.nodes[k].alive_check
                         && !matches!(self.cfg.slot_kind[s], SlotKind::Local if own);
@@ -1718,8 +1721,17 @@ impl Ring {
             }
             (Kind::Master | Kind::SpecialMaster, SlotKind::Local) if self.cfg.writer[s] == k => {
                 let v = self.nodes[k].db[s];
-                *w = Slot::Data(self.fresh_word(k, v, ev, home));
+                if self.nodes[k].valid[s] {
+                    *w = Slot::Data(self.fresh_word(k, v, ev, home));
+                } else if home {
+                    // No value yet after a restart (§12): an alarm still goes.
+                    if let Some(p) = self.take_alarm(k, ev) {
+                        *w = Slot::Data(self.alarm_word(k, p, v));
+                    }
+                }
             }
+            (Kind::Master | Kind::SpecialMaster, SlotKind::Act { .. })
+                if self.cfg.writer[s] == k && !self.nodes[k].valid[s] => {}
             (Kind::Master | Kind::SpecialMaster, SlotKind::Act { .. })
                 if self.cfg.writer[s] == k =>
             {
@@ -1827,8 +1839,16 @@ impl Ring {
                 let hard_in = !self.lit(fi) || (tst_fails && self.carries_tst(fi));
                 let hard_bsr = !self.lit(fb) || (tst_fails && self.carries_tst(fb));
                 let soft = mode == Mode::N && !rw[k];
-                let in_fail = hard_in || (soft && words(inp));
-                let bsr_fail = hard_bsr || (soft && words(bsr));
+                let armed = self.nodes[k].armed;
+                // Stream controllers act once the node is armed, but for a
+                // TST where DATA is expected on INPUT (§12, a restarted node
+                // between wrapped neighbours).
+                let in_fail = if armed {
+                    hard_in || (soft && words(inp))
+                } else {
+                    tst_fails && self.lit(fi) && self.carries_tst(fi)
+                };
+                let bsr_fail = armed && (hard_bsr || (soft && words(bsr)));
                 let new = match mode {
                     Mode::N if in_fail => Some(Mode::Wu),
                     Mode::N if bsr_fail => Some(Mode::Wd),
@@ -1838,7 +1858,7 @@ impl Ring {
                     Mode::N => (!self.lit(fi) && !self.lit(fb)) || ((hard_in || hard_bsr) && rw[k]),
                     _ => !self.lit(fi),
                 };
-                if second && start[k] == mode {
+                if second && armed && start[k] == mode {
                     self.enter_failsafe(ev, k, At::End, FsCause::SecondFault);
                 }
                 if let Some(m) = new {
@@ -1848,6 +1868,17 @@ impl Ring {
             }
         }
         self.reintegrate(seen);
+        // A rejoining node is whole again once it is in mode N, armed, and
+        // no TST arrives on its INPUT or BSR.
+        for (k, &was) in start.iter().enumerate() {
+            let (inp, _, bsr, _) = table1(self.nodes[k].mode);
+            let tst =
+                self.carries_tst(self.in_fibre(k, inp)) || self.carries_tst(self.in_fibre(k, bsr));
+            let nd = &mut self.nodes[k];
+            if nd.rejoin && nd.armed && was == Mode::N && nd.mode == Mode::N && !tst {
+                nd.rejoin = false;
+            }
+        }
 
         for (k, &from) in start.iter().enumerate() {
             let to = self.nodes[k].mode;
@@ -1968,11 +1999,58 @@ impl Ring {
                     && self.nodes[b].mode == Mode::Wu
                     && self.lit(Fibre::P(a)));
             if up_ok && self.nodes[a].mode != Mode::Wd && forwards(self, a) {
-                self.nodes[b].mode = Mode::N;
+                // A rejoining node whose downstream neighbour is wrapped
+                // towards it (its TST on SI) turns round to it instead
+                // (WU → WD), so the ring stays closed (§12).
+                let next = self.nodes[b].rejoin && self.carries_tst(Fibre::S(b));
+                self.nodes[b].mode = if next { Mode::Wd } else { Mode::N };
                 self.acked[a] = false;
                 self.lose_next.push(b);
             }
         }
+    }
+}
+
+/// A node at power-up (§12): switchbox N, not armed, memories zero.
+fn fresh_node(cfg: &Config, k: usize) -> NodeState {
+    // Per-slot state only masters keep.
+    let m = if cfg.nodes[k].kind.is_master() {
+        cfg.slots
+    } else {
+        0
+    };
+    NodeState {
+        mode: Mode::N,
+        up: true,
+        failsafe: false,
+        rw: false,
+        armed: false,
+        missed: 0,
+        no_cs: 0,
+        perr: 0,
+        ferr: 0,
+        aerr: 0,
+        serr: 0,
+        hop: None,
+        db: vec![0; m],
+        output: 0,
+        toggle: false,
+        last_alive: vec![None; m],
+        alive_lost: vec![false; m],
+        act_alive: vec![false; m],
+        prev_home_alarm: false,
+        pending: BTreeSet::new(),
+        inflight: None,
+        awaiting: false,
+        seq: true,
+        last_seq: vec![true; m],
+        bad_run: [0; 2],
+        cf_words: [false; 2],
+        quiet: 0,
+        elig: false,
+        reload: false,
+        valid: vec![true; m],
+        rejoin: false,
     }
 }
 
@@ -2043,6 +2121,17 @@ pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)>
                 + match f {
                     Fault::Break { .. } | Fault::Kill { .. } => 3,
                     Fault::Repair { .. } => REPAIR_WINDOW,
+                    // Rejoining (§12): to RESTART_WINDOW cycles after the
+                    // node and both neighbours are back in mode N.
+                    Fault::Restart { node } => {
+                        let nb = [(node + n - 1) % n, *node, (node + 1) % n];
+                        let settled = records
+                            .iter()
+                            .skip(*c as usize)
+                            .find(|r| nb.iter().all(|&x| r.nodes[x].mode == Mode::N))
+                            .map_or(last, |r| r.cycle);
+                        settled.saturating_sub(*c) + RESTART_WINDOW
+                    }
                     Fault::Flip { .. } | Fault::Burst { .. } => return None,
                 };
             // A repair of a ring in failsafe: which frames come back whole
@@ -2095,6 +2184,12 @@ pub fn windows(cfg: &Config, records: &[CycleRecord]) -> Vec<(u32, u32, String)>
     v.sort_by_key(|w| w.0);
     v
 }
+
+/// Cycles after a restarted node's rejoin (it and both neighbours back in
+/// mode N) that its recovery window covers (protocol §13): the WU end of
+/// the last link loses a frame, the RECONFIG(N) alarms follow, and a
+/// restarted master's first writes reach every memory a cycle later.
+pub const RESTART_WINDOW: u32 = 4;
 
 /// Cycles after a repair's first cycle that its recovery window covers
 /// (protocol §13): the WD end unwraps at the end of c+1 or c+2, the WU end

@@ -234,6 +234,8 @@ pub enum FaultKind {
     Repair,
     /// A node dies: all its outputs go dark.
     Kill,
+    /// A dead node gets power again and rejoins (protocol §12).
+    Restart,
     /// One line bit of one word on one fibre is inverted.
     Flip,
     /// A fibre carries garbage for some line bits of a frame.
@@ -256,7 +258,7 @@ pub struct RawFault {
     /// `S<k>` (node k+1 SO -> node k SI).
     #[serde(default)]
     pub fibre: Option<Spanned<String>>,
-    /// Kill: node index.
+    /// Kill, restart: node index.
     #[serde(default)]
     pub node: Option<Spanned<u32>>,
     /// Flip: word hit when not a slot: "cs", "h0" or "h1".

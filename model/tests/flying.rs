@@ -271,3 +271,43 @@ fn the_starter_scenarios() {
         }
     }
 }
+
+/// The other order: the special master dies, a backup takes over, then a
+/// fibre breaks (the second fault: failsafe everywhere), and the break is
+/// repaired: the new clock base brings the ring out of failsafe by the
+/// exit of §12, with the HOP reference it learnt from its own frames.
+#[test]
+fn a_break_after_the_takeover_fails_safe_and_the_new_base_heals_it() {
+    let kinds = [
+        "special_master",
+        "sensor",
+        "master",
+        "actuator",
+        "master",
+        "sensor",
+        "sensor",
+    ];
+    let mut text = flying_text(&kinds, &[(2, 1), (4, 2)], 3, None);
+    text += "\n[[fault]]\nkind = \"break\"\ncycle = 8\nfibre = \"P4\"\n";
+    text += "\n[[fault]]\nkind = \"repair\"\ncycle = 12\nfibre = \"P4\"\n";
+    text = text.replace("cycles = 13", "cycles = 30");
+    let cfg = load(&text);
+    let recs = ring::run(&cfg);
+    assert_eq!(takeovers(&recs), vec![(4, 2, 1)], "{text}");
+    let fs_at = |c: usize| recs[c].nodes.iter().filter(|x| x.up && x.failsafe).count();
+    assert!(
+        fs_at(11) > 0,
+        "the break after the takeover is a second fault\n{text}"
+    );
+    let last = recs.last().unwrap();
+    assert!(
+        last.nodes.iter().all(|x| !x.failsafe),
+        "the new clock base brings the ring out of failsafe\n{text}"
+    );
+    assert!(
+        recs.iter()
+            .flat_map(|r| &r.events)
+            .any(|e| e.node == 2 && matches!(e.kind, EventKind::FailsafeExit)),
+        "{text}"
+    );
+}

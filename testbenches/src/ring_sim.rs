@@ -143,6 +143,16 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
             "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
         );
     }
+    if let Some((i, (c, f))) = cfg
+        .faults
+        .iter()
+        .enumerate()
+        .find(|(_, (_, f))| matches!(f, Fault::Restart { .. }))
+    {
+        return Some(format!(
+            "fault[{i}] (cycle {c}, {f}): a node's restart (protocol §12) is in the model only; the RTL nodes have no reset yet"
+        ));
+    }
     if let Some(&(k, p)) = cfg.backups().first() {
         return Some(format!(
             "node[{k}].backup = {p}: the flying special master (protocol §8) is in the model only; no RTL master carries the special master's logic yet"
@@ -516,6 +526,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                     (fi, field::BREAK, dark as u64),
                 )
             }
+            Fault::Restart { .. } => unreachable!("refused by unsupported()"),
             Fault::Kill { node, slot } => {
                 let rec = &recs[if slot.is_some() {
                     c
