@@ -453,9 +453,10 @@ pub struct NodeState {
     /// word or the host wrote it (its LOCAL and ACT slots are written only
     /// then; the reload leaves what the host wrote).
     valid: Vec<bool>,
-    /// Restarted and not yet whole again (§12): when its upstream link
-    /// reintegrates and its downstream neighbour is wrapped towards it, it
-    /// turns to WD instead of N.
+    /// From power-up (a restart is one) until it is whole (§12: mode N,
+    /// armed, no TST on INPUT or BSR): when its upstream link reintegrates
+    /// and its downstream neighbour is wrapped towards it, it turns to WD
+    /// instead of N.
     rejoin: bool,
 }
 
@@ -742,7 +743,6 @@ impl Ring {
                     let mut fresh = fresh_node(&self.cfg, node);
                     fresh.reload = self.cfg.nodes[node].kind.is_master();
                     fresh.valid.iter_mut().for_each(|v| *v = false);
-                    fresh.rejoin = true;
                     self.nodes[node] = fresh;
                     self.unwrapped_at[node] = None;
                     self.lose_next.retain(|&x| x != node);
@@ -2050,7 +2050,7 @@ fn fresh_node(cfg: &Config, k: usize) -> NodeState {
         elig: false,
         reload: false,
         valid: vec![true; m],
-        rejoin: false,
+        rejoin: true,
     }
 }
 

@@ -311,3 +311,121 @@ fn a_break_after_the_takeover_fails_safe_and_the_new_base_heals_it() {
         "{text}"
     );
 }
+
+/// No false election (§8). The model elects only when the clock base is
+/// dead; what keeps the RTL's timers from electing a second clock base is
+/// the margin the spec claims: under a single structural fault that is not
+/// the clock base's death, with bit errors on top (up to 8 flips, on any
+/// fibre, in the J K, a header word or a slot), no living backup of
+/// priority p ever goes more than p cycles without a packet (or a frame's
+/// body) on its INPUT, so its timer of (1.5 + p) periods never expires.
+#[test]
+fn no_backup_takes_over_while_the_clock_base_lives() {
+    let (mut r, s) = runner(64);
+    let strat = (
+        (3usize..=100, any::<usize>()),
+        prop::collection::vec(0u8..3, 1..16),
+        (0u8..4, any::<usize>(), 3u32..6),
+        prop::collection::vec((any::<u32>(), any::<u32>(), 0u8..4, 0u32..25), 0..8),
+    );
+    let res = r.run(&strat, |((n, smr), pick, (fk, pos, c), flips)| {
+        let sm = smr % n;
+        let mut kinds = kinds(n, sm, &pick);
+        let m = (sm + 1 + pos % (n - 1)) % n;
+        kinds[m] = "master";
+        let masters: Vec<usize> = (0..n).filter(|&k| kinds[k] == "master").collect();
+        let prios: Vec<(usize, u8)> = masters.iter().take(3).copied().zip(1u8..).collect();
+        // A structural fault (0 break P, 1 break S, 2 kill) or none (3).
+        let mut extra = String::new();
+        match fk {
+            0 | 1 => {
+                let f = if fk == 0 { "P" } else { "S" };
+                extra += &format!(
+                    "\n[[fault]]\nkind = \"break\"\ncycle = {c}\nfibre = \"{f}{}\"\n",
+                    pos % n
+                );
+            }
+            2 => {
+                let mut node = pos % n;
+                if node == sm {
+                    node = (node + 1) % n;
+                }
+                extra += &format!("\n[[fault]]\nkind = \"kill\"\ncycle = {c}\nnode = {node}\n");
+            }
+            _ => {}
+        }
+        let cycles = c + 12;
+        let mut flipped = std::collections::BTreeSet::new();
+        for (fc, ff, t, bit) in flips {
+            let cyc = 1 + fc % (cycles - 1);
+            let fibre = if ff % 2 == 0 { "P" } else { "S" };
+            let fibre = format!("{fibre}{}", (ff / 2) as usize % n);
+            // One flip per fibre and cycle.
+            if !flipped.insert((cyc, fibre.clone())) {
+                continue;
+            }
+            let target = match t {
+                0 => format!("word = \"cs\"\nbit = {}", 2 + bit % 8),
+                1 => format!("word = \"h0\"\nbit = {bit}"),
+                2 => format!("word = \"h1\"\nbit = {bit}"),
+                _ => format!("slot = {}\nbit = {bit}", bit as usize % n),
+            };
+            extra += &format!(
+                "\n[[fault]]\nkind = \"flip\"\ncycle = {cyc}\nfibre = \"{fibre}\"\n{target}\n"
+            );
+        }
+        let mut text = ring_text(&kinds, cycles, &extra);
+        for &(k, p) in &prios {
+            let at = format!("kind = \"master\"\naddress = {k}\n");
+            let i = text.find(&at).unwrap() + at.len();
+            text.insert_str(i, &format!("backup = {p}\n"));
+        }
+        let cfg = load(&text);
+        let recs = ring::run(&cfg);
+        prop_assert!(takeovers(&recs).is_empty(), "a backup took over\n{text}");
+        for r in &recs {
+            for &(k, p) in &prios {
+                let q = r.nodes[k].quiet;
+                prop_assert!(
+                    !r.nodes[k].up || q <= u32::from(p),
+                    "cycle {}: backup {k} (priority {p}) quiet for {q} cycles\n{text}",
+                    r.cycle
+                );
+            }
+        }
+        Ok(())
+    });
+    if let Err(e) = res {
+        panic!("MERKUR_SEED={s}: {e}");
+    }
+}
+
+/// Two frames in a row whose J K a bit error destroyed just upstream of the
+/// priority-1 backup: it sees the frames' bodies, so its election timer
+/// does not run (a timer on start delimiters would have been quiet for two
+/// cycles, past its slot, §8).
+#[test]
+fn lost_start_delimiters_do_not_start_the_election_timer() {
+    let kinds = ["special_master", "sensor", "master", "sensor", "sensor"];
+    let mut text = flying_text(&kinds, &[(2, 1)], 30, None);
+    text = text.replace("cycles = 40", "cycles = 10");
+    // Drop the kill: the clock base lives.
+    let kill = text.find("\n[[fault]]\nkind = \"kill\"").unwrap();
+    text.truncate(kill);
+    for c in [4, 5] {
+        text += &format!(
+            "\n[[fault]]\nkind = \"flip\"\ncycle = {c}\nfibre = \"P1\"\nword = \"cs\"\nbit = 4\n"
+        );
+    }
+    let cfg = load(&text);
+    let recs = ring::run(&cfg);
+    for c in [4usize, 5] {
+        assert_eq!(recs[c].nodes[2].quiet, 0, "cycle {c}\n{text}");
+        assert_eq!(
+            recs[c].nodes[2].no_cs,
+            (c - 3) as u32,
+            "the J K is gone\n{text}"
+        );
+    }
+    assert!(takeovers(&recs).is_empty());
+}
