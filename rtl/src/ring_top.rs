@@ -61,10 +61,10 @@
 //! |---|---|---|---|
 //! | `clk` | in | 1 | simulation tick (4 per nominal bit time) |
 //! | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | configuration write (table below) |
-//! | `i_rd_sel`, `i_rd_field` | in | 16, 8 | status read address |
-//! | `o_rd` | out | 32 | status read data (combinational) |
-//! | `i_cap_fibre`, `i_cap_idx` | in | 16, log2(4·CAP) | capture read address (fibre P0.. then S0..) |
-//! | `o_cap` | out | 32 | captured entry (combinational) |
+//! | `i_rd_en`, `i_rd_sel`, `i_rd_field` | in | 1, 16, 8 | status read enable and address |
+//! | `o_rd` | out | 32 | status read data (combinational; 0 while `i_rd_en` is low) |
+//! | `i_cap_en`, `i_cap_fibre`, `i_cap_idx` | in | 1, 16, log2(4·CAP) | capture read enable and address (fibre P0.. then S0..) |
+//! | `o_cap` | out | 32 | captured entry (combinational; 0 while `i_cap_en` is low) |
 //! | `i_wb_node`, `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr`, `i_wb_dat` | in | | Wishbone of master `i_wb_node` (its own clock) |
 //! | `o_wb_dat`, `o_wb_ack` | out | 16, 1 | its Wishbone answer |
 //!
@@ -274,14 +274,14 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     };
     w(
         &mut v,
-        "module merkur_ring(clk, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_rd_sel, i_rd_field, o_rd,\n\
-         \x20   i_cap_fibre, i_cap_idx, o_cap, i_wb_node, i_wb_cyc, i_wb_stb, i_wb_we, i_wb_adr, i_wb_dat, o_wb_dat, o_wb_ack);",
+        "module merkur_ring(clk, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_rd_en, i_rd_sel, i_rd_field, o_rd,\n\
+         \x20   i_cap_en, i_cap_fibre, i_cap_idx, o_cap, i_wb_node, i_wb_cyc, i_wb_stb, i_wb_we, i_wb_adr, i_wb_dat, o_wb_dat, o_wb_ack);",
     );
     w(
         &mut v,
         "    input wire clk;\n    input wire i_cfg_we;\n    input wire [15:0] i_cfg_sel;\n    input wire [7:0] i_cfg_field;\n    input wire [31:0] i_cfg_val;\n\
-         \x20   input wire [15:0] i_rd_sel;\n    input wire [7:0] i_rd_field;\n    output reg [31:0] o_rd;\n\
-         \x20   input wire [15:0] i_cap_fibre;\n    input wire [CAPW-1:0] i_cap_idx;\n    output reg [31:0] o_cap;\n\
+         \x20   input wire i_rd_en;\n    input wire [15:0] i_rd_sel;\n    input wire [7:0] i_rd_field;\n    output reg [31:0] o_rd;\n\
+         \x20   input wire i_cap_en;\n    input wire [15:0] i_cap_fibre;\n    input wire [CAPW-1:0] i_cap_idx;\n    output reg [31:0] o_cap;\n\
          \x20   input wire [15:0] i_wb_node;\n    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
          \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n    output reg [15:0] o_wb_dat;\n    output reg o_wb_ack;",
     );
@@ -565,7 +565,9 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     ];
     w(
         &mut v,
-        "    always @(*) begin\n        o_rd = 32'd0;\n        case ({i_rd_sel, i_rd_field})",
+        "    // The read multiplexers work only while the harness reads (i_rd_en, i_cap_en): a simulator evaluates\n\
+         \x20   // them whenever a status register changes, i.e. at every tick, and they have a case per node and fibre field.\n\
+         \x20   always @(*) begin\n        o_rd = 32'd0;\n        if (i_rd_en) case ({i_rd_sel, i_rd_field})",
     );
     for (count, fields) in [(n, &node_fields[..]), (nf, &fibre_fields[..])] {
         for i in 0..count {
@@ -585,7 +587,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     // Capture read.
     w(
         &mut v,
-        "    always @(*) begin\n        o_cap = 32'd0;\n        case (i_cap_fibre)",
+        "    always @(*) begin\n        o_cap = 32'd0;\n        if (i_cap_en) case (i_cap_fibre)",
     );
     for f in 0..nf {
         w(

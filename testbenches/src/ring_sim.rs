@@ -262,9 +262,11 @@ struct Ring {
     cfg_sel: usize,
     cfg_field: usize,
     cfg_val: usize,
+    rd_en: usize,
     rd_sel: usize,
     rd_field: usize,
     rd: usize,
+    cap_en: usize,
     cap_f: usize,
     cap_i: usize,
     cap: usize,
@@ -298,17 +300,25 @@ impl Ring {
         self.tick();
         self.m.set(self.cfg_we, 0);
     }
+    /// A status read: the ring top's read multiplexer works only while its
+    /// enable is high (so the simulation does not evaluate it every tick).
     fn rd(&mut self, sel: usize, field: u32) -> u64 {
+        self.m.set(self.rd_en, 1);
         self.m.set(self.rd_sel, sel as u64);
         self.m.set(self.rd_field, field as u64);
         self.m.eval();
-        self.m.get(self.rd)
+        let v = self.m.get(self.rd);
+        self.m.set(self.rd_en, 0);
+        v
     }
     fn cap(&mut self, fibre: usize, idx: usize) -> u64 {
+        self.m.set(self.cap_en, 1);
         self.m.set(self.cap_f, fibre as u64);
         self.m.set(self.cap_i, idx as u64);
         self.m.eval();
-        self.m.get(self.cap)
+        let v = self.m.get(self.cap);
+        self.m.set(self.cap_en, 0);
+        v
     }
     /// One Wishbone B4 classic transfer with master `node` (on its own
     /// clock; the ring runs on meanwhile).
@@ -389,9 +399,11 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         cfg_sel: p("i_cfg_sel"),
         cfg_field: p("i_cfg_field"),
         cfg_val: p("i_cfg_val"),
+        rd_en: p("i_rd_en"),
         rd_sel: p("i_rd_sel"),
         rd_field: p("i_rd_field"),
         rd: p("o_rd"),
+        cap_en: p("i_cap_en"),
         cap_f: p("i_cap_fibre"),
         cap_i: p("i_cap_idx"),
         cap: p("o_cap"),
