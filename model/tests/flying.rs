@@ -31,19 +31,12 @@ fn takeovers(recs: &[CycleRecord]) -> Vec<(u32, usize, u8)> {
 fn flying_text(kinds: &[&str], prios: &[(usize, u8)], c: u32, slot: Option<u32>) -> String {
     let sm = kinds.iter().position(|k| *k == "special_master").unwrap();
     let slot = slot.map(|s| format!("slot = {s}\n")).unwrap_or_default();
-    let mut t = ring_text(
+    let t = ring_text(
         kinds,
         c + 10,
         &format!("\n[[fault]]\nkind = \"kill\"\ncycle = {c}\n{slot}node = {sm}\n"),
     );
-    for &(k, p) in prios {
-        let at = format!("kind = \"master\"\naddress = {k}\n");
-        let i = t
-            .find(&at)
-            .unwrap_or_else(|| panic!("node {k} is a master"));
-        t.insert_str(i + at.len(), &format!("backup = {p}\n"));
-    }
-    t
+    with_backups(t, prios)
 }
 
 /// The checks every single death of the clock base must pass; `Err` names
@@ -374,12 +367,7 @@ fn no_backup_takes_over_while_the_clock_base_lives() {
                 "\n[[fault]]\nkind = \"flip\"\ncycle = {cyc}\nfibre = \"{fibre}\"\n{target}\n"
             );
         }
-        let mut text = ring_text(&kinds, cycles, &extra);
-        for &(k, p) in &prios {
-            let at = format!("kind = \"master\"\naddress = {k}\n");
-            let i = text.find(&at).unwrap() + at.len();
-            text.insert_str(i, &format!("backup = {p}\n"));
-        }
+        let text = with_backups(ring_text(&kinds, cycles, &extra), &prios);
         let cfg = load(&text);
         let recs = ring::run(&cfg);
         prop_assert!(takeovers(&recs).is_empty(), "a backup took over\n{text}");
@@ -407,11 +395,8 @@ fn no_backup_takes_over_while_the_clock_base_lives() {
 #[test]
 fn lost_start_delimiters_do_not_start_the_election_timer() {
     let kinds = ["special_master", "sensor", "master", "sensor", "sensor"];
-    let mut text = flying_text(&kinds, &[(2, 1)], 30, None);
-    text = text.replace("cycles = 40", "cycles = 10");
-    // Drop the kill: the clock base lives.
-    let kill = text.find("\n[[fault]]\nkind = \"kill\"").unwrap();
-    text.truncate(kill);
+    // The clock base lives.
+    let mut text = with_backups(ring_text(&kinds, 10, ""), &[(2, 1)]);
     for c in [4, 5] {
         text += &format!(
             "\n[[fault]]\nkind = \"flip\"\ncycle = {c}\nfibre = \"P1\"\nword = \"cs\"\nbit = 4\n"

@@ -183,15 +183,15 @@ fn a_restarted_special_master_rejoins_as_a_master() {
         "sensor",
         "sensor",
     ];
-    let mut text = ring_text(
-        &kinds,
-        24,
-        "\n[[fault]]\nkind = \"kill\"\ncycle = 3\nnode = 0\n\
-         \n[[fault]]\nkind = \"restart\"\ncycle = 9\nnode = 0\n",
+    let text = with_backups(
+        ring_text(
+            &kinds,
+            24,
+            "\n[[fault]]\nkind = \"kill\"\ncycle = 3\nnode = 0\n\
+             \n[[fault]]\nkind = \"restart\"\ncycle = 9\nnode = 0\n",
+        ),
+        &[(2, 1)],
     );
-    let at = "kind = \"master\"\naddress = 2\n";
-    let i = text.find(at).unwrap() + at.len();
-    text.insert_str(i, "backup = 1\n");
     let cfg = load(&text);
     let recs = ring::run(&cfg);
     let takeovers: Vec<(u32, usize)> = recs

@@ -108,6 +108,19 @@ pub fn ring_text(kinds: &[&str], cycles: u32, extra: &str) -> String {
     t + extra
 }
 
+/// Adds `backup = p` to the masters of a [`ring_text`] ring, per (node, p)
+/// (protocol §8, the flying special master).
+pub fn with_backups(mut text: String, prios: &[(usize, u8)]) -> String {
+    for &(k, p) in prios {
+        let at = format!("kind = \"master\"\naddress = {k}\n");
+        let i = text
+            .find(&at)
+            .unwrap_or_else(|| panic!("node {k} is a master"));
+        text.insert_str(i + at.len(), &format!("backup = {p}\n"));
+    }
+    text
+}
+
 /// The property tests' seed when MERKUR_SEED is not set.
 pub const DEFAULT_SEED: u64 = 0x6d65_726b_7572;
 
