@@ -94,6 +94,8 @@ pub mod cause {
     pub const SWITCHED: u8 = 10;
     /// Both channels faulty (→ IDLE).
     pub const BOTH: u8 = 11;
+    /// Status Check = SWITCH (→ Manual_Normal, switch between frames).
+    pub const CHECK_SW: u8 = 12;
     /// Name in traces.
     pub fn name(c: u8) -> &'static str {
         [
@@ -109,6 +111,7 @@ pub mod cause {
             "cmd_sent",
             "switched",
             "both",
+            "check_sw",
         ]
         .get(c as usize)
         .copied()
@@ -224,6 +227,8 @@ pub struct RmmOut {
     pub stale: u32,
     /// Status check = OK (pulse at the end of a scan).
     pub chk_ok: bool,
+    /// Status check = SWITCH (pulse at the end of a scan, §20).
+    pub chk_sw: bool,
     /// MAC events seen (sticky).
     pub ev_seen: u8,
     /// The stored status frame read for the network manager (or by the scan).
@@ -268,8 +273,11 @@ pub struct Rmm {
     st_rd: u16,
     prev_rd: u8,
     all_ok: bool,
+    /// Per channel: a fresh station of this scan reported it not good.
+    any_bad: [bool; 2],
     stale: u32,
     chk_ok: bool,
+    chk_sw: bool,
     nm_valid: bool,
     // fault correction machine
     state: u8,
@@ -305,8 +313,10 @@ impl Rmm {
             st_rd: 0,
             prev_rd: 0,
             all_ok: false,
+            any_bad: [false; 2],
             stale: 0,
             chk_ok: false,
+            chk_sw: false,
             nm_valid: false,
             state: state::IDLE,
             cause: cause::NONE,
@@ -368,6 +378,7 @@ impl Rmm {
             stat_b: self.stat(1),
             stale: self.stale,
             chk_ok: self.chk_ok,
+            chk_sw: self.chk_sw,
             ev_seen: self.ev_seen,
             nm_word: self.st_rd,
             nm_valid: self.nm_valid,
@@ -447,6 +458,10 @@ impl Rmm {
                     } else if i.auto {
                         st = state::AUTO_NORMAL;
                         cs = Some(cause::AUTO_CMD);
+                    } else if self.chk_sw {
+                        pend = true;
+                        pend_ch = !self.act;
+                        cs = Some(cause::CHECK_SW);
                     }
                 }
                 state::AUTO_NORMAL => {
@@ -476,6 +491,11 @@ impl Rmm {
                         pend = true;
                         pend_ch = i.cmd_ch;
                         cs = Some(cause::CMD_RX);
+                    } else if self.chk_sw {
+                        st = state::MANUAL_NORMAL;
+                        pend = true;
+                        pend_ch = !self.act;
+                        cs = Some(cause::CHECK_SW);
                     }
                 }
                 state::MEDIUM_ERROR => {
@@ -503,7 +523,8 @@ impl Rmm {
         if self.pend && !self.in_frame && !sw_now {
             sw_cmd = self.pend_ch != self.act;
             // A new command this octet replaces the one just carried out.
-            if !(cs == Some(cause::CMD_RX) || cs == Some(cause::CMD_SENT)) {
+            let new_cmd = matches!(cs, Some(cause::CMD_RX | cause::CMD_SENT | cause::CHECK_SW));
+            if !new_cmd {
                 pend = false;
             }
         }
@@ -534,7 +555,9 @@ impl Rmm {
         let own_good = !self.ch[0].bad && !self.ch[1].bad;
         let mut stale = self.stale;
         let mut all_ok = self.all_ok;
+        let mut any_bad = self.any_bad;
         let mut chk_ok = false;
+        let mut chk_sw = false;
         let mut prev_write: Option<(usize, u8)> = None;
         if self.s2_valid {
             let k = self.s2_i as usize;
@@ -552,6 +575,16 @@ impl Rmm {
                 self.all_ok && good_k
             };
             chk_ok = k == 31 && all_ok && own_good;
+            // §20 Status Check = SWITCH: what fresh stations report.
+            let fresh = member && !stale_k;
+            for (c, bit) in [(0, 0b010), (1, 0b100)] {
+                let bad_c = fresh && self.st_rd & bit == 0;
+                any_bad[c] = bad_c || (k != 0 && self.any_bad[c]);
+            }
+            let (a, s) = (self.act as usize, 1 - self.act as usize);
+            let suspect = self.ch[a].bad || any_bad[a];
+            let clear = !self.ch[s].bad && !any_bad[s];
+            chk_sw = k == 31 && suspect && clear;
         }
         let stale_rise = stale & !self.stale != 0;
         // --- commit ---
@@ -587,8 +620,10 @@ impl Rmm {
         self.st_rd = st_rd;
         self.prev_rd = prev_rd;
         self.all_ok = all_ok;
+        self.any_bad = any_bad;
         self.stale = stale;
         self.chk_ok = chk_ok;
+        self.chk_sw = chk_sw;
         self.irq = cs.is_some() || stale_rise;
         if let Some(c) = cs {
             self.cause = c;
@@ -639,6 +674,69 @@ mod tests {
         assert_eq!(o.state, state::MEDIUM_ERROR);
         r.clock(&RmmIn::default());
         assert_eq!(r.out(true).state, state::MANUAL_NORMAL);
+    }
+
+    /// A station in Manual_Normal (address 0, station 1 configured) that
+    /// receives one status frame from station 1 with status byte `st1`
+    /// before the first scan; `div_a`: its own channel A misses what B
+    /// carries from octet 5 on. Returns the octets at which Status Check = SWITCH pulsed and
+    /// the outputs after the run.
+    fn scan_with_report(st1: u8, live1: u8, div_a: bool) -> (Vec<usize>, RmmOut) {
+        let mut r = Rmm::new(cfg());
+        let mut pulses = vec![];
+        for t in 0..120 {
+            let mut i = RmmIn {
+                init: true,
+                ..Default::default()
+            };
+            if t >= 5 && div_a {
+                // B carries frame octets A misses, all along.
+                i.rx_b = sym::data(0x55);
+            }
+            if t == 10 {
+                i.rx_sf = true;
+                i.rx_sa = 1;
+                i.rx_sfw = (live1 as u16) << 8 | st1 as u16;
+            }
+            r.clock(&i);
+            if r.out(true).chk_sw {
+                pulses.push(t);
+            }
+        }
+        (pulses, r.out(true))
+    }
+
+    #[test]
+    fn a_fresh_report_of_a_bad_active_channel_switches_at_the_end_of_the_scan() {
+        // Station 1 reports A bad (bit 1 clear) and B good (bit 2 set); this
+        // station's own channels are good. The scan starts at octet 49 and
+        // its verdict on address 31 is registered 34 octets later.
+        let (pulses, o) = scan_with_report(0b100, 1, false);
+        assert_eq!(pulses, vec![49 + 33]);
+        assert!(o.act, "switched to B");
+        assert_eq!(o.state, state::MANUAL_NORMAL);
+        assert_eq!(o.cause, cause::CHECK_SW);
+    }
+
+    #[test]
+    fn a_stale_report_is_evidence_of_nothing() {
+        // The same report with the live counter still at its power-up value:
+        // station 1 is stale, its status byte does not count.
+        let (pulses, o) = scan_with_report(0b100, 0, false);
+        assert!(pulses.is_empty(), "{pulses:?}");
+        assert!(!o.act);
+    }
+
+    #[test]
+    fn a_standby_reported_bad_vetoes_the_switch() {
+        // Own A latched bad (a divergence), but station 1 reports B bad.
+        let (pulses, o) = scan_with_report(0b010, 1, true);
+        assert!(pulses.is_empty(), "{pulses:?}");
+        assert!(!o.act);
+        // With station 1 reporting both good, the own latch alone switches.
+        let (pulses, o) = scan_with_report(0b110, 1, true);
+        assert_eq!(pulses, vec![49 + 33]);
+        assert!(o.act);
     }
 
     #[test]

@@ -887,6 +887,12 @@ fn log_changes(run: &mut TbRun, t: u64, k: usize, p: Option<&RmmOut>, o: Option<
             if o.chk_ok && !p.chk_ok {
                 push("status check ok".into());
             }
+            if o.chk_sw && !p.chk_sw {
+                push(format!(
+                    "status check switch (active {} suspect)",
+                    if o.act { 'B' } else { 'A' }
+                ));
+            }
             if o.cmd_req && !p.cmd_req {
                 push(format!(
                     "switch command to {}",

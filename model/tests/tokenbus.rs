@@ -118,3 +118,76 @@ fn scenario_errors_name_the_field_and_where_it_stands() {
     assert!(e.msg.contains("takes no `duration`"), "{}", e.msg);
     assert_eq!(e.line, 9);
 }
+
+#[test]
+fn the_status_check_switches_what_no_mac_event_and_no_dual_mode_can() {
+    use merkur_model::rmm::{cause, state};
+    let cfg = load("dcm8_status_switch");
+    let r = tokenbus::run(&cfg);
+    let first_burst = cfg.events[1].at;
+    // The intermittent fault raises none of the six MAC events.
+    let late: Vec<&Change> = r
+        .changes
+        .iter()
+        .filter(|c| c.t >= first_burst && c.what.starts_with("mac "))
+        .collect();
+    assert!(late.is_empty(), "{late:?}");
+    // Every live station (7 died at power-up) switches to B once, in the
+    // Manual_Normal the dead station keeps it in (station 1 leaves the
+    // Auto_Normal its host asked for), on the status check's own cause.
+    let mut switched_at = vec![];
+    for (k, outs) in r.outs.iter().enumerate().take(7) {
+        let o: Vec<_> = outs.iter().map(|o| o.expect("powered")).collect();
+        let sw: Vec<usize> = (1..o.len()).filter(|&t| o[t].act != o[t - 1].act).collect();
+        assert_eq!(sw.len(), 1, "station {k} switches {sw:?}");
+        let t = sw[0];
+        assert!(o[t].act, "station {k} switches to B");
+        assert!(t as u64 > first_burst);
+        assert_eq!(o[t].state, state::MANUAL_NORMAL, "station {k}");
+        let pulse = (0..t).rev().find(|&u| o[u].chk_sw).expect("a SWITCH pulse");
+        assert!(
+            t - pulse <= 30,
+            "station {k}: the switch waits only for the frame's end"
+        );
+        assert_eq!(o[pulse + 1].cause, cause::CHECK_SW, "station {k}");
+        assert!(o[..t]
+            .iter()
+            .all(|x| x.state != state::AUTO_NORMAL || k == 1));
+        switched_at.push((k, pulse));
+    }
+    // Station 3 did not see the first burst itself: its own channel A was
+    // good at its scan, and the switch came from the others' status frames.
+    let (_, p3) = switched_at[3];
+    let o3 = r.outs[3][p3].unwrap();
+    assert_eq!(o3.stat_a & 1, 0, "station 3's own A was good at {p3}");
+    assert!(switched_at.iter().all(|&(k, p)| k == 3 || p < p3));
+    // After every station has switched, the bursts cost nothing.
+    let last = switched_at.iter().map(|x| x.1).max().unwrap() as u64;
+    for (f, e) in cfg.events.iter().enumerate() {
+        if e.at > last {
+            assert_eq!(r.lost_by_fault[f], 0, "burst at {}", e.at);
+        }
+    }
+    // Not blind: with the check period beyond the run nobody switches and
+    // the later bursts do lose frames.
+    let mut off = cfg.clone();
+    off.check_period = u16::MAX;
+    let r_off = tokenbus::run(&off);
+    assert!(r_off
+        .outs
+        .iter()
+        .take(7)
+        .all(|o| o.iter().all(|x| x.map_or(true, |x| !x.chk_sw))));
+    let later: u64 = cfg
+        .events
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| e.at > last)
+        .map(|(f, _)| r_off.lost_by_fault[f])
+        .sum();
+    assert!(
+        later > 0,
+        "the later bursts lose nothing even without the switch"
+    );
+    assert!(r_off.receptions_lost > r.receptions_lost);
+}

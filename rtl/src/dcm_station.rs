@@ -30,7 +30,7 @@
 //! | `o_sf_pend`, `o_sf_word` | out | 1/16 | status frame due, its bytes |
 //! | `o_cmd_req`, `o_cmd_ch` | out | 1 | broadcast the switch command |
 //! | `o_stat_a`, `o_stat_b` | out | 16 | channel status registers |
-//! | `o_stale`, `o_chk_ok`, `o_ev_seen` | out | 32/1/6 | status check, events seen |
+//! | `o_stale`, `o_chk_ok`, `o_chk_sw`, `o_ev_seen` | out | 32/1/1/6 | status check (stale, OK, SWITCH), events seen |
 //! | `i_nm_addr`, `o_nm_word`, `o_nm_valid` | in/out | 5/16/1 | network manager reads a station's stored status frame |
 //!
 //! Latency: as its blocks; `o_rx` one octet after the PHY symbol.
@@ -124,6 +124,8 @@ pub struct DcmStation {
     pub o_stale: Signal<Out, Bits<32>>,
     /// Status Check = OK.
     pub o_chk_ok: Signal<Out, Bit>,
+    /// Status Check = SWITCH.
+    pub o_chk_sw: Signal<Out, Bit>,
     /// Events seen.
     pub o_ev_seen: Signal<Out, Bits<6>>,
     /// Network manager: station whose stored status frame to read.
@@ -162,6 +164,7 @@ impl Logic for DcmStation {
         self.fcm.i_sc.next = self.detect.o_sc.val();
         self.fcm.i_ns.next = self.detect.o_ns.val();
         self.fcm.i_chk_ok.next = self.sfc.o_chk_ok.val();
+        self.fcm.i_chk_sw.next = self.sfc.o_chk_sw.val();
         self.fcm.i_fault_a.next = self.dcm.o_fault_a.val();
         self.fcm.i_fault_b.next = self.dcm.o_fault_b.val();
         self.fcm.i_bad_a.next = self.dcm.o_bad_a.val();
@@ -195,7 +198,9 @@ impl Logic for DcmStation {
         self.sfc.i_chk_period.next = self.i_chk_period.val();
         self.sfc.i_addr.next = self.i_addr.val();
         self.sfc.i_stations.next = self.i_stations.val();
-        self.sfc.i_own_good.next = !self.dcm.o_bad_a.val() & !self.dcm.o_bad_b.val();
+        self.sfc.i_bad_a.next = self.dcm.o_bad_a.val();
+        self.sfc.i_bad_b.next = self.dcm.o_bad_b.val();
+        self.sfc.i_act.next = self.dcm.o_act.val();
         self.sfc.i_rx_sf.next = self.i_rx_sf.val();
         self.sfc.i_rx_sa.next = self.i_rx_sa.val();
         self.sfc.i_rx_sfw.next = self.i_rx_sfw.val();
@@ -218,6 +223,7 @@ impl Logic for DcmStation {
         self.o_stat_b.next = self.dcm.o_stat_b.val();
         self.o_stale.next = self.sfc.o_stale.val();
         self.o_chk_ok.next = self.sfc.o_chk_ok.val();
+        self.o_chk_sw.next = self.sfc.o_chk_sw.val();
         self.o_ev_seen.next = self.detect.o_ev_seen.val();
     }
 }

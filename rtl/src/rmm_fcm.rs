@@ -11,19 +11,22 @@
 //! | Manual_Normal | switch command received | Manual_Normal | switch between frames; `cmd_rx` |
 //! | Manual_Normal | Status Check = OK | Auto_Normal | `check_ok` |
 //! | Manual_Normal | AUTO_SW_MODE | Auto_Normal | `auto_cmd` |
+//! | Manual_Normal | Status Check = SWITCH | Manual_Normal | switch to the standby between frames; `check_sw` |
 //! | Auto_Normal | active fault or NS, standby faulty | Manual_Normal | `standby_fault` |
 //! | Auto_Normal | active fault or NS | Medium_Error | switch **now**; `active_fault` / `ns` |
 //! | Auto_Normal | standby faulty | Manual_Normal | dual mode off; `standby_fault` |
 //! | Auto_Normal | SC | Config_Error | broadcast the switch command; `sc` |
 //! | Auto_Normal | switch command received | Manual_Normal | switch between frames; `cmd_rx` |
+//! | Auto_Normal | Status Check = SWITCH | Manual_Normal | switch to the standby between frames; `check_sw` |
 //! | Medium_Error | — | Manual_Normal | `switched` |
 //! | Config_Error | switch command received | Manual_Normal | switch between frames; `cmd_rx` |
 //! | Config_Error | own command sent | Manual_Normal | switch between frames; `cmd_sent` |
 //!
 //! "Active fault" is the DCM's combinational fault of the active channel
 //! this octet; "standby faulty" its combinational fault or latched `bad`.
-//! A commanded switch waits while the MAC is inside a frame (`i_in_frame`)
-//! and never falls in the octet of a fault switch. Every transition or
+//! A commanded switch (a switch command, or the status check's switch)
+//! waits while the MAC is inside a frame (`i_in_frame`) and never falls in
+//! the octet of a fault switch. Every transition or
 //! command writes the cause register and raises the report interrupt
 //! (`o_irq`, one octet).
 //!
@@ -32,7 +35,7 @@
 //! | `clock` | in | 1 | octet clock |
 //! | `i_init`, `i_auto` | in | 1 | host: initialised (level), AUTO_SW_MODE (pulse) |
 //! | `i_sc`, `i_ns` | in | 1 | from rmm_detect |
-//! | `i_chk_ok` | in | 1 | from rmm_sfc |
+//! | `i_chk_ok`, `i_chk_sw` | in | 1 | from rmm_sfc: Status Check = OK, = SWITCH |
 //! | `i_fault_a`, `i_fault_b`, `i_bad_a`, `i_bad_b`, `i_act`, `i_in_frame` | in | 1 | from the DCM |
 //! | `i_cmd_rx`, `i_cmd_ch` | in | 1 | MAC: switch command received, its target |
 //! | `i_cmd_sent` | in | 1 | MAC: our command went out |
@@ -71,6 +74,8 @@ pub struct RmmFcm {
     pub i_ns: Signal<In, Bit>,
     /// Status Check = OK.
     pub i_chk_ok: Signal<In, Bit>,
+    /// Status Check = SWITCH.
+    pub i_chk_sw: Signal<In, Bit>,
     /// Fault of A this octet.
     pub i_fault_a: Signal<In, Bit>,
     /// Fault of B this octet.
@@ -117,6 +122,7 @@ pub struct RmmFcm {
     c_cmd_sent: Constant<Bits<4>>,
     c_switched: Constant<Bits<4>>,
     c_both: Constant<Bits<4>>,
+    c_check_sw: Constant<Bits<4>>,
     st: DFF<Bits<3>>,
     cause: DFF<Bits<4>>,
     irq: DFF<Bit>,
@@ -152,6 +158,7 @@ impl Default for RmmFcm {
             i_sc: Default::default(),
             i_ns: Default::default(),
             i_chk_ok: Default::default(),
+            i_chk_sw: Default::default(),
             i_fault_a: Default::default(),
             i_fault_b: Default::default(),
             i_bad_a: Default::default(),
@@ -183,6 +190,7 @@ impl Default for RmmFcm {
             c_cmd_sent: k4(cause::CMD_SENT),
             c_switched: k4(cause::SWITCHED),
             c_both: k4(cause::BOTH),
+            c_check_sw: k4(cause::CHECK_SW),
             st: Default::default(),
             cause: Default::default(),
             irq: Default::default(),
@@ -248,6 +256,12 @@ impl Logic for RmmFcm {
                 self.st.d.next = self.s_auto.val();
                 self.cs_set.next = true;
                 self.cs.next = self.c_auto_cmd.val();
+            } else if self.i_chk_sw.val() {
+                self.pend.d.next = true;
+                self.pend_ch.d.next = !self.i_act.val();
+                self.new_cmd.next = true;
+                self.cs_set.next = true;
+                self.cs.next = self.c_check_sw.val();
             }
         } else if self.st.q.val() == self.s_auto.val() {
             if self.f_act.val() | self.i_ns.val() {
@@ -281,6 +295,13 @@ impl Logic for RmmFcm {
                 self.new_cmd.next = true;
                 self.cs_set.next = true;
                 self.cs.next = self.c_cmd_rx.val();
+            } else if self.i_chk_sw.val() {
+                self.st.d.next = self.s_manual.val();
+                self.pend.d.next = true;
+                self.pend_ch.d.next = !self.i_act.val();
+                self.new_cmd.next = true;
+                self.cs_set.next = true;
+                self.cs.next = self.c_check_sw.val();
             }
         } else if self.st.q.val() == self.s_medium.val() {
             self.st.d.next = self.s_manual.val();

@@ -9,7 +9,12 @@
 //! not this one) whose live counter has not moved since the last scan is
 //! flagged **stale**; the scan ends with **Status Check = OK** (`o_chk_ok`,
 //! one octet) when no station is stale, every station reports both channels
-//! good, and this station's own channels are good (`i_own_good`).
+//! good, and this station's own channels are good (`i_bad_a`, `i_bad_b`
+//! clear). The same scan is the backup fault detector: it collects, per
+//! channel, whether a fresh (not stale) configured station reports it not
+//! good, and ends with **Status Check = SWITCH** (`o_chk_sw`, one octet) when
+//! the active channel (`i_act`) is suspect — own `bad` or a fresh report —
+//! and the standby is clear — own `bad` clear and no fresh report.
 //!
 //! | port | dir | width | meaning |
 //! |---|---|---|---|
@@ -17,23 +22,26 @@
 //! | `i_chk_period` | in | 16 | check period, octets (≥ 64) |
 //! | `i_addr` | in | 5 | own address |
 //! | `i_stations` | in | 32 | configured stations (bit per address) |
-//! | `i_own_good` | in | 1 | both own channels good |
+//! | `i_bad_a`, `i_bad_b` | in | 1 | own channels faulty (the DCM's latched `bad`) |
+//! | `i_act` | in | 1 | own active channel (0 A, 1 B) |
 //! | `i_rx_sf` | in | 1 | a valid status frame was received |
 //! | `i_rx_sa` | in | 8 | its source address (≥ 32 ignored) |
 //! | `i_rx_sfw` | in | 16 | its status bytes |
 //! | `o_stale` | out | 32 | stations whose live counter stopped |
 //! | `o_chk_ok` | out | 1 | Status Check = OK |
+//! | `o_chk_sw` | out | 1 | Status Check = SWITCH (protocol §20) |
 //! | `o_rise` | out | 1 | a station became stale (report interrupt) |
 //! | `i_nm_addr` | in | 5 | network manager: station whose stored status to read between scans |
 //! | `o_nm_word`, `o_nm_valid` | out | 16/1 | its latest status frame, one octet later; valid outside scans |
 //!
 //! Latency: a scan starts the octet after the period ends; station k's
-//! verdict is registered at octet k+2 of the scan, `o_chk_ok` after k = 31.
+//! verdict is registered at octet k+2 of the scan, `o_chk_ok` and
+//! `o_chk_sw` after k = 31.
 //!
 //! ```text
 //! octet     0(start) 1      2      ..     33     34
 //! read      -        st[0]  st[1]  ..     st[31]
-//! verdict   -        -      s0     ..     s30    s31, o_chk_ok
+//! verdict   -        -      s0     ..     s30    s31, o_chk_ok / o_chk_sw
 //! ```
 
 use rust_hdl::prelude::*;
@@ -49,8 +57,12 @@ pub struct RmmSfc {
     pub i_addr: Signal<In, Bits<5>>,
     /// Configured stations.
     pub i_stations: Signal<In, Bits<32>>,
-    /// Own channels good.
-    pub i_own_good: Signal<In, Bit>,
+    /// Own channel A faulty.
+    pub i_bad_a: Signal<In, Bit>,
+    /// Own channel B faulty.
+    pub i_bad_b: Signal<In, Bit>,
+    /// Own active channel.
+    pub i_act: Signal<In, Bit>,
     /// Status frame received.
     pub i_rx_sf: Signal<In, Bit>,
     /// Its source address.
@@ -61,6 +73,8 @@ pub struct RmmSfc {
     pub o_stale: Signal<Out, Bits<32>>,
     /// Status Check = OK.
     pub o_chk_ok: Signal<Out, Bit>,
+    /// Status Check = SWITCH.
+    pub o_chk_sw: Signal<Out, Bit>,
     /// A station became stale.
     pub o_rise: Signal<Out, Bit>,
     /// Network manager read address.
@@ -77,14 +91,22 @@ pub struct RmmSfc {
     s2_valid: DFF<Bit>,
     s2_i: DFF<Bits<5>>,
     all_ok: DFF<Bit>,
+    a_bad: DFF<Bit>,
+    b_bad: DFF<Bit>,
     stale: DFF<Bits<32>>,
     chk_ok: DFF<Bit>,
+    chk_sw: DFF<Bit>,
     rise: DFF<Bit>,
     nm_valid: DFF<Bit>,
     member: Signal<Local, Bit>,
     stale_k: Signal<Local, Bit>,
     good_k: Signal<Local, Bit>,
     all_ok_n: Signal<Local, Bit>,
+    fresh: Signal<Local, Bit>,
+    a_bad_n: Signal<Local, Bit>,
+    b_bad_n: Signal<Local, Bit>,
+    suspect: Signal<Local, Bit>,
+    clear: Signal<Local, Bit>,
     stale_n: Signal<Local, Bits<32>>,
     mask: Signal<Local, Bits<32>>,
 }
@@ -93,8 +115,8 @@ impl Logic for RmmSfc {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, cnt, scanning, scan_i, s2_valid, s2_i, all_ok, stale, chk_ok, rise,
-            nm_valid
+            self, clock, cnt, scanning, scan_i, s2_valid, s2_i, all_ok, a_bad, b_bad, stale,
+            chk_ok, chk_sw, rise, nm_valid
         );
         self.st.read_clock.next = self.clock.val();
         self.st.write_clock.next = self.clock.val();
@@ -139,6 +161,11 @@ impl Logic for RmmSfc {
         self.stale_n.next = self.stale.q.val();
         self.all_ok_n.next = self.all_ok.q.val();
         self.chk_ok.d.next = false;
+        self.chk_sw.d.next = false;
+        // Status Check = SWITCH: a fresh station's report of each channel.
+        self.fresh.next = self.member.val() & !self.stale_k.val();
+        self.a_bad_n.next = self.a_bad.q.val();
+        self.b_bad_n.next = self.b_bad.q.val();
         self.prev.write_enable.next = false;
         self.prev.write_address.next = self.s2_i.q.val();
         self.prev.write_data.next = self.st.read_data.val().get_bits::<8>(8);
@@ -154,14 +181,36 @@ impl Logic for RmmSfc {
             } else {
                 self.all_ok_n.next = self.all_ok.q.val() & self.good_k.val();
             }
-            self.chk_ok.d.next =
-                (self.s2_i.q.val() == 31) & self.all_ok_n.val() & self.i_own_good.val();
+            self.chk_ok.d.next = (self.s2_i.q.val() == 31)
+                & self.all_ok_n.val()
+                & !self.i_bad_a.val()
+                & !self.i_bad_b.val();
+            self.a_bad_n.next = self.fresh.val() & !self.st.read_data.val().get_bit(1);
+            self.b_bad_n.next = self.fresh.val() & !self.st.read_data.val().get_bit(2);
+            if self.s2_i.q.val() != 0 {
+                self.a_bad_n.next = self.a_bad_n.val() | self.a_bad.q.val();
+                self.b_bad_n.next = self.b_bad_n.val() | self.b_bad.q.val();
+            }
         }
+        if self.i_act.val() {
+            self.suspect.next = self.i_bad_b.val() | self.b_bad_n.val();
+            self.clear.next = !self.i_bad_a.val() & !self.a_bad_n.val();
+        } else {
+            self.suspect.next = self.i_bad_a.val() | self.a_bad_n.val();
+            self.clear.next = !self.i_bad_b.val() & !self.b_bad_n.val();
+        }
+        self.chk_sw.d.next = self.s2_valid.q.val()
+            & (self.s2_i.q.val() == 31)
+            & self.suspect.val()
+            & self.clear.val();
+        self.a_bad.d.next = self.a_bad_n.val();
+        self.b_bad.d.next = self.b_bad_n.val();
         self.all_ok.d.next = self.all_ok_n.val();
         self.stale.d.next = self.stale_n.val();
         self.rise.d.next = (self.stale_n.val() & !self.stale.q.val()) != 0;
         self.o_stale.next = self.stale.q.val();
         self.o_chk_ok.next = self.chk_ok.q.val();
+        self.o_chk_sw.next = self.chk_sw.q.val();
         self.o_rise.next = self.rise.q.val();
         self.o_nm_word.next = self.st.read_data.val();
         self.o_nm_valid.next = self.nm_valid.q.val();

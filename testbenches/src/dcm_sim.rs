@@ -46,6 +46,7 @@ struct Ports {
     o_stat_b: usize,
     o_stale: usize,
     o_chk_ok: usize,
+    o_chk_sw: usize,
     o_ev_seen: usize,
     o_nm_word: usize,
     o_nm_valid: usize,
@@ -85,6 +86,7 @@ impl Ports {
             o_stat_b: m.port("o_stat_b"),
             o_stale: m.port("o_stale"),
             o_chk_ok: m.port("o_chk_ok"),
+            o_chk_sw: m.port("o_chk_sw"),
             o_ev_seen: m.port("o_ev_seen"),
             o_nm_word: m.port("o_nm_word"),
             o_nm_valid: m.port("o_nm_valid"),
@@ -136,6 +138,7 @@ impl StationHw for VStation {
             stat_b: m.get(p.o_stat_b) as u16,
             stale: m.get(p.o_stale) as u32,
             chk_ok: m.get(p.o_chk_ok) == 1,
+            chk_sw: m.get(p.o_chk_sw) == 1,
             ev_seen: m.get(p.o_ev_seen) as u8,
             nm_word: m.get(p.o_nm_word) as u16,
             nm_valid: m.get(p.o_nm_valid) == 1,
@@ -258,7 +261,7 @@ pub fn diff(a: &RmmOut, b: &RmmOut) -> Vec<String> {
     }
     f!(
         rx, act, state, cause, irq, sf_pend, sf_word, cmd_req, cmd_ch, stat_a, stat_b, stale,
-        chk_ok, ev_seen, nm_word, nm_valid
+        chk_ok, chk_sw, ev_seen, nm_word, nm_valid
     );
     d
 }

@@ -99,6 +99,7 @@ fn every_transition_is_reached_in_rtl() {
         (state::MANUAL_NORMAL, state::MANUAL_NORMAL, cause::CMD_RX),
         (state::MANUAL_NORMAL, state::AUTO_NORMAL, cause::CHECK_OK),
         (state::MANUAL_NORMAL, state::AUTO_NORMAL, cause::AUTO_CMD),
+        (state::MANUAL_NORMAL, state::MANUAL_NORMAL, cause::CHECK_SW),
         (state::MANUAL_NORMAL, state::IDLE, cause::BOTH),
         (state::AUTO_NORMAL, state::MEDIUM_ERROR, cause::ACTIVE_FAULT),
         (state::AUTO_NORMAL, state::MEDIUM_ERROR, cause::NS),
@@ -109,6 +110,7 @@ fn every_transition_is_reached_in_rtl() {
         ),
         (state::AUTO_NORMAL, state::CONFIG_ERROR, cause::SC),
         (state::AUTO_NORMAL, state::MANUAL_NORMAL, cause::CMD_RX),
+        (state::AUTO_NORMAL, state::MANUAL_NORMAL, cause::CHECK_SW),
         (state::MEDIUM_ERROR, state::MANUAL_NORMAL, cause::SWITCHED),
         (state::CONFIG_ERROR, state::MANUAL_NORMAL, cause::CMD_RX),
         (state::CONFIG_ERROR, state::MANUAL_NORMAL, cause::CMD_SENT),
@@ -185,6 +187,30 @@ fn single_channel_faults_in_auto_normal_lose_no_frame() {
     // above is not blind.
     let (_, r) = rtl("dcm8_manual");
     assert!(r.rtl.receptions_lost > 100, "{}", r.rtl.receptions_lost);
+}
+
+#[test]
+fn with_dual_mode_off_the_status_check_switches_every_station() {
+    // docs/protocol.md §20 Status Check = SWITCH, in RTL: the intermittent
+    // fault raises no MAC event and every live station (7 of 8) switches;
+    // the bursts after the last switch lose nothing.
+    let (cfg, r) = rtl("dcm8_status_switch");
+    assert_eq!(
+        r.rtl.switch_latency(1).map(|s| s.2),
+        Some(7),
+        "every live station switched"
+    );
+    let last = r.rtl.switches[1].iter().map(|x| x.1).max().unwrap() + cfg.events[1].at;
+    for (f, e) in cfg.events.iter().enumerate().filter(|(_, e)| e.at > last) {
+        assert_eq!(r.rtl.lost_by_fault[f], 0, "burst at {}", e.at);
+    }
+    assert!(r
+        .rtl
+        .outs
+        .iter()
+        .flatten()
+        .flatten()
+        .any(|o| o.chk_sw && !o.chk_ok));
 }
 
 #[test]
