@@ -113,6 +113,9 @@ pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
                     merkur_model::ring::BAD_WORDS,
                     port.name()
                 ),
+                EventKind::Rtx { sent, requested } => format!(
+                    "retransmission packet for {sent} of {requested} damaged critical slots"
+                ),
             };
             println!("            node {} at {}: {what}", e.node, e.at);
         }

@@ -332,8 +332,17 @@ fn check(path: &Path, line_rate: Option<f64>) -> Result<(), String> {
         cfg.period,
         cfg.period as f64 / rate,
         rate,
-        config::min_period(cfg.slots, cfg.nodes.len(), cfg.ext)
+        cfg.min_period()
     );
+    if let (Some(t), Some(tw)) = (cfg.rtx_start(false), cfg.rtx_start(true)) {
+        let crit: Vec<String> = cfg.critical_slots().iter().map(|s| s.to_string()).collect();
+        println!(
+            "critical   slots {}: retransmission at bit {t} of the period ({tw} in a wrapped ring), room for {} requests ({} wrapped)",
+            crit.join(", "),
+            cfg.rtx_capacity(false),
+            cfg.rtx_capacity(true)
+        );
+    }
     println!(
         "run        {} cycles, seed {}, {} host writes, {} interrupt requests, {} faults",
         cfg.cycles,

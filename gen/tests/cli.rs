@@ -242,6 +242,13 @@ fn sim_refuses_what_the_rtl_does_not_run_and_bad_wave_names() {
         e.contains("restart node2") && e.contains("not simulated in RTL"),
         "{e}"
     );
+    let o = merkur(&["sim", "tb-data/ring8_rtx.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = text(&o.stderr);
+    assert!(
+        e.contains("frame.critical (slot 7)") && e.contains("not simulated in RTL"),
+        "{e}"
+    );
     let o = merkur(&["sim", "tb-data/ring2.toml", "--wave", "/tmp/x.vcd"]);
     assert!(!o.status.success());
     let e = text(&o.stderr);

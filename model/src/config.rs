@@ -70,6 +70,12 @@ pub enum FlipTarget {
     H1,
     /// A slot word.
     Slot(usize),
+    /// The retransmission packet's start delimiter or header (§8): the
+    /// packet is lost to every node behind the error.
+    RtxHead,
+    /// Word j of the retransmission packet after its header (request
+    /// j / 2: its index word if j is even, its data word if odd).
+    Rtx(usize),
 }
 
 impl fmt::Display for FlipTarget {
@@ -79,6 +85,8 @@ impl fmt::Display for FlipTarget {
             FlipTarget::H0 => write!(f, "h0"),
             FlipTarget::H1 => write!(f, "h1"),
             FlipTarget::Slot(s) => write!(f, "s{s}"),
+            FlipTarget::RtxHead => write!(f, "rtx_head"),
+            FlipTarget::Rtx(j) => write!(f, "rtx{j}"),
         }
     }
 }
@@ -237,6 +245,9 @@ pub struct Config {
     pub fs_clears: Vec<u32>,
     /// Faults: (cycle, fault), in file order.
     pub faults: Vec<(u32, Fault)>,
+    /// Per slot: critical, retransmitted on demand (protocol §8; the
+    /// configuration byte's CRIT bit).
+    pub critical: Vec<bool>,
 }
 
 /// Bits of a master's configuration byte (protocol §7).
@@ -249,6 +260,8 @@ pub mod cfg_bits {
     pub const ALIVE_EN: u8 = 4;
     /// Written by this master's host.
     pub const LOCAL: u8 = 8;
+    /// A critical slot, retransmitted on demand.
+    pub const CRIT: u8 = 16;
 }
 
 impl Config {
@@ -281,7 +294,52 @@ impl Config {
         if self.nodes[node].alive_check && b & cfg_bits::LOCAL == 0 {
             b |= cfg_bits::ALIVE_EN;
         }
+        if self.critical[slot] {
+            b |= cfg_bits::CRIT;
+        }
         b
+    }
+
+    /// The smallest legal period of this ring (protocol §8): the ring's
+    /// own, and with critical slots room for one retransmission request.
+    pub fn min_period(&self) -> u32 {
+        let n = self.nodes.len();
+        let ring = min_period(self.slots, n, self.ext);
+        self.last_critical().map_or(ring, |c| {
+            ring.max(rtx_min_period(self.slots, n, self.ext, c))
+        })
+    }
+
+    /// The critical slots, in order (protocol §8).
+    pub fn critical_slots(&self) -> Vec<usize> {
+        (0..self.slots).filter(|&s| self.critical[s]).collect()
+    }
+
+    /// The highest critical slot, if any.
+    pub fn last_critical(&self) -> Option<usize> {
+        self.critical.iter().rposition(|&c| c)
+    }
+
+    /// When the clock base sends its retransmission packet (protocol §8),
+    /// bit times after the frame's J K; `None` without critical slots.
+    pub fn rtx_start(&self, wrapped: bool) -> Option<u32> {
+        let c = self.last_critical()?;
+        Some(rtx_start(
+            self.slots,
+            self.nodes.len(),
+            self.ext,
+            c,
+            wrapped,
+        ))
+    }
+
+    /// How many requests fit in the retransmission packet of a cycle
+    /// (protocol §8): 0 without critical slots or when none fits.
+    pub fn rtx_capacity(&self, wrapped: bool) -> usize {
+        let n = self.nodes.len();
+        self.last_critical().map_or(0, |c| {
+            rtx_capacity(self.period, self.slots, n, self.ext, c, wrapped)
+        })
     }
 
     /// The configuration as a scenario file (docs/scenarios.md) that
@@ -296,9 +354,18 @@ impl Config {
         let _ = writeln!(o, "seed = {}\ncycles = {}\n", self.seed, self.cycles);
         let _ = writeln!(
             o,
-            "[frame]\nalarm_bits = {}\nperiod_bits = {}\nline_rate_mbps = {:?}\n",
+            "[frame]\nalarm_bits = {}\nperiod_bits = {}\nline_rate_mbps = {:?}",
             self.ext, self.period, self.line_rate_mbps
         );
+        let crit: Vec<String> = self
+            .critical_slots()
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        if !crit.is_empty() {
+            let _ = writeln!(o, "critical = [{}]", crit.join(", "));
+        }
+        let _ = writeln!(o);
         let generator = match self.generator {
             Generator::Counter => "counter",
             Generator::Random => "random",
@@ -452,6 +519,47 @@ pub fn frame_bits(slots: usize, ext: bool) -> u32 {
     JK_BITS + (2 + slots as u32) * word_bits(ext)
 }
 
+/// When the clock base sends a retransmission packet (protocol §8,
+/// "Retransmission on demand"), in bit times after the frame's J K: once
+/// the frame has left and the word of the highest critical slot `c_max`
+/// has returned in a ring whose latency is at most `N · 12` (`N · 24`
+/// when `wrapped`), plus the gap.
+pub fn rtx_start(slots: usize, nodes: usize, ext: bool, c_max: usize, wrapped: bool) -> u32 {
+    let per_node = if wrapped {
+        NODE_DELAY_BITS + PASS_DELAY_BITS
+    } else {
+        NODE_DELAY_BITS
+    };
+    let back = nodes as u32 * per_node + JK_BITS + word_bits(ext) * (c_max as u32 + 3);
+    frame_bits(slots, ext).max(back) + MIN_GAP_BITS
+}
+
+/// How many requests fit in a retransmission packet (protocol §8) that
+/// must end a gap before the next frame.
+pub fn rtx_capacity(
+    period: u32,
+    slots: usize,
+    nodes: usize,
+    ext: bool,
+    c_max: usize,
+    wrapped: bool,
+) -> usize {
+    let fixed = rtx_start(slots, nodes, ext, c_max, wrapped) + rtx_bits(0, ext) + MIN_GAP_BITS;
+    (period.saturating_sub(fixed) / (2 * word_bits(ext))) as usize
+}
+
+/// The period a ring with critical slots up to `c_max` needs at least
+/// for one retransmission request in the healthy ring (protocol §8).
+pub fn rtx_min_period(slots: usize, nodes: usize, ext: bool, c_max: usize) -> u32 {
+    rtx_start(slots, nodes, ext, c_max, false) + rtx_bits(1, ext) + MIN_GAP_BITS
+}
+
+/// Bit times of a retransmission packet with `k` requests: J K, two
+/// header words, an index and a data word per request.
+pub fn rtx_bits(k: usize, ext: bool) -> u32 {
+    JK_BITS + (2 + 2 * k as u32) * word_bits(ext)
+}
+
 /// Highest backup clock-base priority (protocol §8).
 pub const MAX_BACKUP: u32 = 7;
 
@@ -476,6 +584,7 @@ fn fault_target(
     j: usize,
     slots: usize,
     kind: &str,
+    rtx_words: usize,
 ) -> Result<FlipTarget, ScenarioError> {
     let flip = kind == "flip";
     let words = if flip {
@@ -488,10 +597,11 @@ fn fault_target(
             "cs" if flip => Ok(FlipTarget::Cs),
             "h0" => Ok(FlipTarget::H0),
             "h1" => Ok(FlipTarget::H1),
+            r if flip && r.starts_with("rtx") => rtx_target(m, x, j, rtx_words),
             other => Err(m.at(
                 x,
                 if flip {
-                    format!("fault[{j}].word = \"{other}\": use \"cs\", \"h0\", \"h1\", or give `slot` instead")
+                    format!("fault[{j}].word = \"{other}\": use \"cs\", \"h0\", \"h1\" (\"rtx_head\", \"rtx<j>\" in the retransmission packet), or give `slot` instead")
                 } else {
                     format!("fault[{j}].word = \"{other}\": a burst starts in \"h0\", \"h1\" or a `slot` (not in the start delimiter)")
                 },
@@ -517,6 +627,36 @@ fn fault_target(
     }
 }
 
+/// A flip in the retransmission packet (protocol §8): `word = "rtx_head"`
+/// or `"rtx<j>"`, j below twice the requests that fit.
+fn rtx_target(
+    m: &SourceMap,
+    x: &Spanned<String>,
+    j: usize,
+    rtx_words: usize,
+) -> Result<FlipTarget, ScenarioError> {
+    let w = x.get_ref().as_str();
+    if rtx_words == 0 {
+        return Err(m.at(
+            x,
+            format!("fault[{j}].word = \"{w}\": there is no retransmission packet without `frame.critical` slots"),
+        ));
+    }
+    if w == "rtx_head" {
+        return Ok(FlipTarget::RtxHead);
+    }
+    match w[3..].parse::<usize>() {
+        Ok(i) if i < rtx_words => Ok(FlipTarget::Rtx(i)),
+        _ => Err(m.at(
+            x,
+            format!(
+                "fault[{j}].word = \"{w}\": the retransmission packet has \"rtx_head\" and words \"rtx0\"..\"rtx{}\" (two per request that fits)",
+                rtx_words - 1
+            ),
+        )),
+    }
+}
+
 /// A `kind = "burst"` fault (its fibre already read): where it starts
 /// (a header word or a slot, not the start delimiter: garbage there would
 /// move the packet's start), its length, inside the frame, and its pattern.
@@ -530,7 +670,7 @@ fn burst(
     seed: u64,
 ) -> Result<Fault, ScenarioError> {
     let w = word_bits(ext);
-    let target = fault_target(m, f, j, slots, "burst")?;
+    let target = fault_target(m, f, j, slots, "burst", 0)?;
     let b = f.bit.as_ref().expect("checked");
     if *b.get_ref() >= w {
         return Err(m.at(
@@ -547,7 +687,7 @@ fn burst(
         FlipTarget::H0 => 0,
         FlipTarget::H1 => w,
         FlipTarget::Slot(s) => (2 + s as u32) * w,
-        FlipTarget::Cs => unreachable!("refused above"),
+        FlipTarget::Cs | FlipTarget::RtxHead | FlipTarget::Rtx(_) => unreachable!("refused above"),
     } + b.get_ref();
     let room = (2 + slots as u32) * w - start;
     if *l.get_ref() == 0 || *l.get_ref() > room {
@@ -840,9 +980,30 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         ));
     }
     let ext = raw.frame.alarm_bits;
+    let critical = critical_slots(&m, raw, slots)?;
     let min = min_period(slots, n, ext);
+    // With critical slots, room for one request in the healthy ring.
+    let rtx_min = critical
+        .iter()
+        .rposition(|&c| c)
+        .map(|c| (c, rtx_min_period(slots, n, ext, c)));
+    if let (Some((c, need)), Some(p), Some(cr)) =
+        (rtx_min, &raw.frame.period_bits, &raw.frame.critical)
+    {
+        let v = *p.get_ref();
+        if v >= min && v < need {
+            return Err(m.at(
+                cr,
+                format!(
+                    "frame.critical: critical slot {c} needs room for a retransmission packet after the frame (protocol §8): frame.period_bits = {v} leaves none; it must be at least {need} bit times (the packet leaves {} bit times after the J K and one request takes {}, plus the gap {MIN_GAP_BITS}; lower critical slots need less)",
+                    rtx_start(slots, n, ext, c, false),
+                    rtx_bits(1, ext)
+                ),
+            ));
+        }
+    }
     let period = match &raw.frame.period_bits {
-        None => min,
+        None => min.max(rtx_min.map_or(0, |x| x.1)),
         Some(p) => {
             let v = *p.get_ref();
             if v < min {
@@ -970,6 +1131,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
     for (j, q) in raw.fs_clear.iter().enumerate() {
         fs_clears.push(check_cycle(&q.cycle, format!("fs_clear[{j}].cycle"))?);
     }
+    let rtx_words = critical
+        .iter()
+        .rposition(|&c| c)
+        .map_or(0, |c| 2 * rtx_capacity(period, slots, n, ext, c, false));
     let mut faults = vec![];
     for (j, f) in raw.fault.iter().enumerate() {
         let c = check_cycle(&f.cycle, format!("fault[{j}].cycle"))?;
@@ -1110,24 +1275,22 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 forbid(spanu(&f.length), "length")?;
                 forbid(spanu(&f.pattern), "pattern")?;
                 let fibre = fibre(j)?;
-                let target = fault_target(&m, f, j, slots, "flip")?;
+                let target = fault_target(&m, f, j, slots, "flip", rtx_words)?;
                 let b = f.bit.as_ref().expect("checked");
-                let max = if target == FlipTarget::Cs {
-                    JK_BITS
-                } else {
-                    word_bits(ext)
+                let (max, what) = match target {
+                    FlipTarget::Cs => (JK_BITS, "start delimiter"),
+                    FlipTarget::RtxHead => (
+                        JK_BITS + 2 * word_bits(ext),
+                        "retransmission packet's head (J K, H0, H1)",
+                    ),
+                    _ => (word_bits(ext), "word"),
                 };
                 if *b.get_ref() >= max {
                     return Err(m.at(
                         b,
                         format!(
-                            "fault[{j}].bit = {}: a {} has line bits 0..{}",
+                            "fault[{j}].bit = {}: a {what} has line bits 0..{}",
                             b.get_ref(),
-                            if target == FlipTarget::Cs {
-                                "start delimiter"
-                            } else {
-                                "word"
-                            },
                             max - 1
                         ),
                     ));
@@ -1159,5 +1322,35 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
         irqs,
         fs_clears,
         faults,
+        critical,
     })
+}
+
+/// `[frame] critical`: slots of the frame, each once (protocol §8).
+fn critical_slots(
+    m: &SourceMap,
+    raw: &RawScenario,
+    slots: usize,
+) -> Result<Vec<bool>, ScenarioError> {
+    let mut v = vec![false; slots];
+    let Some(list) = &raw.frame.critical else {
+        return Ok(v);
+    };
+    for &s in list.get_ref() {
+        let s = s as usize;
+        if s >= slots {
+            return Err(m.at(
+                list,
+                format!(
+                    "frame.critical: slot {s} is not in the frame (slots 0..{})",
+                    slots - 1
+                ),
+            ));
+        }
+        if v[s] {
+            return Err(m.at(list, format!("frame.critical: slot {s} is listed twice")));
+        }
+        v[s] = true;
+    }
+    Ok(v)
 }

@@ -13,6 +13,10 @@ use crate::scenario::{Generator, IrqLine, Kind};
 use std::collections::BTreeSet;
 use std::fmt;
 
+mod age;
+mod rtx;
+pub use age::ages;
+
 /// Switchbox mode: the rows of the paper's Table 1.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Mode {
@@ -344,6 +348,14 @@ pub enum EventKind {
         /// The receiver.
         port: Port,
     },
+    /// The clock base sent a retransmission packet (§8) with `sent` of the
+    /// `requested` damaged critical slots (0 when none fitted).
+    Rtx {
+        /// Requests in the packet.
+        sent: usize,
+        /// Critical slots that came back damaged.
+        requested: usize,
+    },
 }
 
 /// Consecutive bad words that make a run (protocol §9).
@@ -417,8 +429,15 @@ pub struct NodeState {
     pub hop: Option<u16>,
     /// Masters: the data memory (real-time database).
     pub db: Vec<u16>,
+    /// Masters: per slot, the cycle in which the writer wrote the value
+    /// `db` holds (its data age is the cycle minus this); `None` before
+    /// the first.
+    pub db_born: Vec<Option<u32>>,
     /// Actuators: the output register.
     pub output: u16,
+    /// Actuators: the cycle in which the output register's value was
+    /// written by its master.
+    pub out_born: Option<u32>,
     /// The node's Alive flip-flop (value used this cycle).
     pub toggle: bool,
     last_alive: Vec<Option<bool>>,
@@ -496,10 +515,18 @@ pub struct Ring {
     /// The clock base: the special master, or the backup that took over
     /// from it (§8, the flying special master).
     pub base: usize,
+    /// Per slot of the packet in flight: the cycle its word's value was
+    /// written by the slot's writer (data age, not on the line).
+    cur_born: Vec<Option<u32>>,
+    /// The same for the return store.
+    store_born: Vec<Option<u32>>,
+    /// Critical slots whose word of this cycle's frame came back bad or
+    /// not at all (§8, retransmission on demand), in slot order.
+    damaged: Vec<usize>,
 }
 
-/// The faults of one cycle that act inside its frames.
-struct CycleFaults {
+/// The faults of one cycle that act inside its packets.
+pub(crate) struct CycleFaults {
     /// Fibres that break before a slot (fibre, slot).
     cut_fibre: Vec<(Fibre, usize)>,
     /// Nodes that die before a slot (node, slot).
@@ -549,6 +576,23 @@ pub struct CycleRecord {
     /// Fibres on which the SEC went ahead of the DATA frame that the fibre
     /// shows (a ring wrapped in this cycle), with the SEC's `ok`.
     pub sec_with_data: Vec<(usize, bool)>,
+    /// The retransmission packet the clock base sent this cycle (§8).
+    pub rtx: Option<RtxRecord>,
+}
+
+/// A retransmission packet of one cycle (protocol §8).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RtxRecord {
+    /// The slots it requested, in order.
+    pub slots: Vec<usize>,
+    /// Damaged critical slots that did not fit.
+    pub left: usize,
+    /// Line bits it took.
+    pub bits: u32,
+    /// Per request: the clock base got a good copy back.
+    pub back: Vec<bool>,
+    /// Fibres it travelled (indices as in `fibres`), in order.
+    pub fibres: Vec<usize>,
 }
 
 /// SplitMix64 finaliser: the model's (and the campaign's) seed mixer.
@@ -594,6 +638,9 @@ impl Ring {
             acked: vec![false; n],
             unwrapped_at: vec![None; n],
             store: vec![Slot::Void; s],
+            cur_born: vec![None; s],
+            store_born: vec![None; s],
+            damaged: vec![],
             emitted: vec![Slot::Void; s],
             returned_rwc: false,
             exit: SmExit::default(),
@@ -799,6 +846,8 @@ impl Ring {
         // the last frame that returned before it (protocol §8).
         let sec_rwc = self.returned_rwc;
         let mut sec_with_data = vec![];
+        let mut rtx = None;
+        let mut rtx_acted = vec![false; n];
         if let Some(sm) = base {
             got_frame[sm] =
                 self.data_frame(sm, &cf, &mut fibres, &mut got_frame, &mut path, &mut ev);
@@ -806,6 +855,8 @@ impl Ring {
             if self.nodes[sm].mode == Mode::N && !sec_rwc {
                 sec_with_data = self.sec_frame(sm, &cf, &mut fibres, &mut ev);
             }
+            // 4b. The retransmission packet, after the frame (§8).
+            rtx = self.rtx_packet(sm, &cf, &mut rtx_acted, &mut ev);
         }
 
         // 5. Link tests from wrapped nodes.
@@ -901,9 +952,10 @@ impl Ring {
             },
         );
         // Alive flip-flops toggle after each frame a node processed (the
-        // special master after each frame it sent).
+        // special master after each frame it sent), and in a node that
+        // missed the frame but wrote into the retransmission packet (§8).
         for (k, nd) in self.nodes.iter_mut().enumerate() {
-            if got_frame[k] || base == Some(k) {
+            if got_frame[k] || base == Some(k) || rtx_acted[k] {
                 nd.toggle = !nd.toggle;
             }
         }
@@ -917,6 +969,7 @@ impl Ring {
             path,
             base: self.base,
             sec_with_data,
+            rtx,
         }
     }
 
@@ -936,6 +989,7 @@ impl Ring {
         // What a clock base learns from returning frames starts afresh; the
         // return store is empty, as after a frame that did not come back.
         self.store = vec![Slot::Void; self.cfg.slots];
+        self.store_born = vec![None; self.cfg.slots];
         self.emitted = vec![Slot::Void; self.cfg.slots];
         self.returned_rwc = false;
         self.exit = SmExit::default();
@@ -975,6 +1029,7 @@ impl Ring {
             hdr_marked: false,
             words: self.store.clone(),
         };
+        self.cur_born = self.store_born.clone();
         if !self.nodes[sm].failsafe {
             for s in 0..s_count {
                 self.write_slot(sm, s, &mut frame.words[s], ev);
@@ -1087,7 +1142,7 @@ impl Ring {
                     match t {
                         FlipTarget::Cs => lost = true,
                         FlipTarget::H0 | FlipTarget::H1 => ok = false,
-                        FlipTarget::Slot(_) => {}
+                        FlipTarget::Slot(_) | FlipTarget::RtxHead | FlipTarget::Rtx(_) => {}
                     }
                 }
             }
@@ -1189,24 +1244,8 @@ impl Ring {
                         };
                     }
                 }
-                FlipTarget::Slot(s) => {
-                    let code = |w: &Slot| match w {
-                        Slot::Data(d) => Some(line::word_code_bits(d, ext)),
-                        Slot::Void => Some(line::void_code_bits(ext)),
-                        _ => None,
-                    };
-                    // A word already bad or missing stays as it is.
-                    let Some(this) = code(&frame.words[s]) else {
-                        continue;
-                    };
-                    let next = frame.words.get(s + 1).and_then(code);
-                    let (r, r2) =
-                        line::flip_code_and_decode(&this, next.as_deref(), ext, bit as usize);
-                    frame.words[s] = rx_slot(r);
-                    if let Some(r2) = r2 {
-                        frame.words[s + 1] = rx_slot(r2);
-                    }
-                }
+                FlipTarget::Slot(s) => flip_word(&mut frame.words, s, bit, ext),
+                FlipTarget::RtxHead | FlipTarget::Rtx(_) => {}
             }
         }
     }
@@ -1251,7 +1290,7 @@ impl Ring {
             FlipTarget::H0 => 0,
             FlipTarget::H1 => w,
             FlipTarget::Slot(s) => (2 + s) * w,
-            FlipTarget::Cs => return,
+            FlipTarget::Cs | FlipTarget::RtxHead | FlipTarget::Rtx(_) => return,
         } + bit as usize;
         let len = len as usize;
         let g = line::garbage(pattern, len);
@@ -1485,8 +1524,10 @@ impl Ring {
     fn sm_return(&mut self, returned: Option<Frame>, ev: &mut Vec<Event>) -> bool {
         let sm = self.base;
         let s_count = self.cfg.slots;
+        self.damaged.clear();
         let Some(frame) = returned else {
             self.store = vec![Slot::Void; s_count];
+            self.store_born = vec![None; s_count];
             self.nodes[sm].hop = None;
             self.exit.whole = 0;
             return false;
@@ -1501,7 +1542,12 @@ impl Ring {
             self.exit.request = true;
         }
         let HeaderRx::Ok(h) = frame.hdr else {
+            // The frame came back, its header (or start delimiter) damaged:
+            // every node behind the damage ignored it, so every critical
+            // slot is requested (§8).
+            self.damaged = self.cfg.critical_slots();
             self.store = vec![Slot::Void; s_count];
+            self.store_born = vec![None; s_count];
             self.nodes[sm].hop = None;
             self.exit.whole = 0;
             return false;
@@ -1522,6 +1568,13 @@ impl Ring {
             if !failsafe {
                 self.read_slot(sm, s, w, ev);
             }
+            if self.cfg.critical[s] && matches!(w, Slot::Bad(_) | Slot::Marked(_) | Slot::Missing) {
+                self.damaged.push(s);
+            }
+            self.store_born[s] = match w {
+                Slot::Data(_) => self.cur_born[s],
+                _ => None,
+            };
             self.store[s] = match w {
                 Slot::Data(d) => {
                     // An alarm word is retransmitted once: if it comes back
@@ -1583,6 +1636,7 @@ impl Ring {
             Slot::Data(d) => {
                 if kind == Kind::Actuator && s == self.cfg.nodes[k].address && (ext || !d.alarm) {
                     self.nodes[k].output = d.data;
+                    self.nodes[k].out_born = self.cur_born[s];
                 }
                 if kind.is_master() {
                     let own = self.cfg.writer[s] == k;
@@ -1606,6 +1660,7 @@ impl Ring {
                     // after a restart (§12).
                     if (!own || !self.nodes[k].valid[s]) && (ext || !d.alarm) {
                         self.nodes[k].db[s] = d.data;
+                        self.nodes[k].db_born[s] = self.cur_born[s];
                         self.nodes[k].valid[s] = true;
                     }
                     let check = self.cfg.nodes[k].alive_check
@@ -1718,11 +1773,13 @@ impl Ring {
             (Kind::Sensor, SlotKind::Sensor) if home => {
                 let v = sensor_value(&self.cfg, s, c);
                 *w = Slot::Data(self.fresh_word(k, v, ev, true));
+                self.cur_born[s] = Some(c);
             }
             (Kind::Master | Kind::SpecialMaster, SlotKind::Local) if self.cfg.writer[s] == k => {
                 let v = self.nodes[k].db[s];
                 if self.nodes[k].valid[s] {
                     *w = Slot::Data(self.fresh_word(k, v, ev, home));
+                    self.cur_born[s] = Some(c);
                 } else if home {
                     // No value yet after a restart (§12): an alarm still goes.
                     if let Some(p) = self.take_alarm(k, ev) {
@@ -1744,6 +1801,7 @@ impl Ring {
                         self.nodes[k].act_alive[s] = d.alive;
                         if self.cfg.ext || !d.alarm {
                             d.data = self.nodes[k].db[s];
+                            self.cur_born[s] = Some(c);
                         }
                     }
                     // Data replaced from the first group on; still bad.
@@ -1757,6 +1815,7 @@ impl Ring {
                             alarm: false,
                             reason: 0,
                         });
+                        self.cur_born[s] = Some(c);
                     }
                     _ => {}
                 }
@@ -1779,6 +1838,7 @@ impl Ring {
                         alarm: false,
                         reason: 0,
                     });
+                    self.cur_born[s] = self.nodes[k].out_born;
                 }
             }
             _ => {}
@@ -2033,7 +2093,9 @@ fn fresh_node(cfg: &Config, k: usize) -> NodeState {
         serr: 0,
         hop: None,
         db: vec![0; m],
+        db_born: vec![None; m],
         output: 0,
+        out_born: None,
         toggle: false,
         last_alive: vec![None; m],
         alive_lost: vec![false; m],
@@ -2051,6 +2113,26 @@ fn fresh_node(cfg: &Config, k: usize) -> NodeState {
         reload: false,
         valid: vec![true; m],
         rejoin: true,
+    }
+}
+
+/// One line bit of word `s` of a packet's words inverted (protocol §4): the
+/// word is decoded again bit-exactly; an error in its last bit also hits
+/// the next word's first. A word already bad or missing stays as it is.
+pub(crate) fn flip_word(words: &mut [Slot], s: usize, bit: u32, ext: bool) {
+    let code = |w: &Slot| match w {
+        Slot::Data(d) => Some(line::word_code_bits(d, ext)),
+        Slot::Void => Some(line::void_code_bits(ext)),
+        _ => None,
+    };
+    let Some(this) = words.get(s).and_then(code) else {
+        return;
+    };
+    let next = words.get(s + 1).and_then(code);
+    let (r, r2) = line::flip_code_and_decode(&this, next.as_deref(), ext, bit as usize);
+    words[s] = rx_slot(r);
+    if let Some(r2) = r2 {
+        words[s + 1] = rx_slot(r2);
     }
 }
 

@@ -147,6 +147,9 @@ pub struct RawFrame {
     /// Line rate in Mbit/s used for summaries (default 50).
     #[serde(default)]
     pub line_rate_mbps: Option<Spanned<f64>>,
+    /// Critical slots, retransmitted on demand (protocol §8).
+    #[serde(default)]
+    pub critical: Option<Spanned<Vec<u32>>>,
 }
 
 /// Stimulus generator kinds.

@@ -66,6 +66,7 @@ fn event_text(k: &EventKind) -> String {
         EventKind::SecFail => "sec-fail".to_string(),
         EventKind::Takeover { prio } => format!("takeover p{prio}"),
         EventKind::BadWords { port } => format!("bad-words {}", port.name().to_lowercase()),
+        EventKind::Rtx { sent, requested } => format!("rtx {sent}/{requested}"),
     }
 }
 
@@ -94,6 +95,10 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
     let _ = writeln!(o, "# kinds {}", kinds.join(","));
     let writers: Vec<String> = cfg.writer.iter().map(|w| w.to_string()).collect();
     let _ = writeln!(o, "# writers {}", writers.join(","));
+    let critical: Vec<String> = cfg.critical_slots().iter().map(|s| s.to_string()).collect();
+    if !critical.is_empty() {
+        let _ = writeln!(o, "# critical {}", critical.join(","));
+    }
     for (a, b, d) in ring::windows(cfg, records) {
         let _ = writeln!(o, "window {a} {b} {d}");
     }
@@ -149,6 +154,20 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
             o.push_str(" sec-ahead");
             for &(i, ok) in &r.sec_with_data {
                 let _ = write!(o, " {}{}", fibre_name(i), if ok { "" } else { "!" });
+            }
+            o.push('\n');
+        }
+        if let Some(x) = &r.rtx {
+            // The retransmission packet (§8): its requests, those that did
+            // not fit, which came back good, and the fibres it travelled.
+            o.push_str(" rtx");
+            for s in &x.slots {
+                let _ = write!(o, " s{s}");
+            }
+            let back: String = x.back.iter().map(|&b| if b { '1' } else { '0' }).collect();
+            let _ = write!(o, " left {} back {back} via", x.left);
+            for &i in &x.fibres {
+                let _ = write!(o, " {}", fibre_name(i));
             }
             o.push('\n');
         }

@@ -153,6 +153,11 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
             "fault[{i}] (cycle {c}, {f}): a node's restart (protocol §12) is in the model only; the RTL nodes have no reset yet"
         ));
     }
+    if let Some(s) = cfg.last_critical() {
+        return Some(format!(
+            "frame.critical (slot {s}): retransmission on demand (protocol §8) is in the model only; no RTL node sends or fills the retransmission packet yet"
+        ));
+    }
     if let Some(&(k, p)) = cfg.backups().first() {
         return Some(format!(
             "node[{k}].backup = {p}: the flying special master (protocol §8) is in the model only; no RTL master carries the special master's logic yet"
@@ -191,6 +196,11 @@ pub fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Opt
         } => (fibre, target, bit),
         _ => return None,
     };
+    if matches!(target, FlipTarget::RtxHead | FlipTarget::Rtx(_)) {
+        return Some(
+            "a flip in the retransmission packet: the RTL has no retransmission packet yet".into(),
+        );
+    }
     if target == FlipTarget::Cs && bit < 2 {
         return Some(format!(
             "bit = {bit}: the RTL harness finds J K by its first 0 code bit (bit 2) and can flip delimiter bits 2..9 only (a single error anywhere in J K destroys it, protocol §3)"
@@ -232,6 +242,8 @@ fn packet_bit(target: FlipTarget, bit: u32) -> u64 {
         FlipTarget::H0 => 10,
         FlipTarget::H1 => 35,
         FlipTarget::Slot(s) => 60 + 25 * s as u64,
+        // Refused by `flip_unsupported` before any run.
+        FlipTarget::RtxHead | FlipTarget::Rtx(_) => unreachable!("no RTX in the RTL"),
     };
     word + bit as u64
 }
