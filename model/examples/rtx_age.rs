@@ -66,6 +66,11 @@ fn errors(
     for rec in clean.iter().skip(1) {
         let c = rec.cycle;
         let mut hit: Vec<(bool, u64)> = vec![];
+        let data_fibres = rec
+            .fibres
+            .iter()
+            .filter(|x| matches!(x, Carry::Data(_)))
+            .count() as f64;
         for (fi, carry) in rec.fibres.iter().enumerate() {
             if !matches!(carry, Carry::Data(_)) {
                 continue;
@@ -120,7 +125,7 @@ fn errors(
                     ));
                 }
             }
-            if burst > 0.0 && d.unit() < burst / rec.fibres.len() as f64 {
+            if burst > 0.0 && d.unit() < burst / data_fibres {
                 let len = 25 + d.below(51) as u32;
                 let s = d.below(cfg.slots.saturating_sub(3) as u64) as usize;
                 v.push((

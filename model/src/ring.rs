@@ -593,6 +593,9 @@ pub struct RtxRecord {
     pub back: Vec<bool>,
     /// Fibres it travelled (indices as in `fibres`), in order.
     pub fibres: Vec<usize>,
+    /// Nodes whose INPUT it reached with its start delimiter and header
+    /// intact (a packet for §12's rule 4).
+    pub jk: Vec<usize>,
 }
 
 /// SplitMix64 finaliser: the model's (and the campaign's) seed mixer.
@@ -911,6 +914,8 @@ impl Ring {
                 Carry::Sec { .. } => true,
                 Carry::Tst { .. } | Carry::Silent | Carry::Idle => false,
             };
+            // The retransmission packet's J K counts as well (§8).
+            let jk = jk || rtx.as_ref().is_some_and(|x| x.jk.contains(&k));
             packet_in[k] = jk;
             // A backup's election timer (§8): any packet on INPUT, or the
             // body of a frame whose J K was destroyed, restarts it.

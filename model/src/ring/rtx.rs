@@ -50,6 +50,7 @@ impl Ring {
             bits: 0,
             back: vec![false; k],
             fibres: vec![],
+            jk: vec![],
         };
         if k == 0 {
             return Some(rec);
@@ -105,6 +106,9 @@ impl Ring {
             }
             if counted && self.rtx_bad_words(r, port, &p, ev) && mode == Mode::N {
                 break;
+            }
+            if port == inp && p.head_ok {
+                rec.jk.push(r);
             }
             if port == inp {
                 if r == sm {
