@@ -521,12 +521,13 @@ pub struct Ring {
     /// The same for the return store.
     store_born: Vec<Option<u32>>,
     /// Critical slots whose word of this cycle's frame came back bad or
-    /// not at all (§8, retransmission on demand), in slot order.
+    /// not at all, or every critical slot when the frame came back with
+    /// its header damaged (§8, retransmission on demand), in slot order.
     damaged: Vec<usize>,
 }
 
 /// The faults of one cycle that act inside its packets.
-pub(crate) struct CycleFaults {
+struct CycleFaults {
     /// Fibres that break before a slot (fibre, slot).
     cut_fibre: Vec<(Fibre, usize)>,
     /// Nodes that die before a slot (node, slot).
