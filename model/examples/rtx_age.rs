@@ -76,6 +76,26 @@ fn errors(
                 continue;
             }
             let fb = fibre(fi, n);
+            // One flip per word and cycle (`.0`: in the retransmission
+            // packet): a second error in a word is a double error.
+            let place = |hit: &mut Vec<(bool, u64)>,
+                         v: &mut Vec<(u32, Fault)>,
+                         word: (bool, u64),
+                         target: FlipTarget,
+                         bit: u64| {
+                if !hit.contains(&word) {
+                    hit.push(word);
+                    let bit = bit as u32;
+                    v.push((
+                        c,
+                        Fault::Flip {
+                            fibre: fb,
+                            target,
+                            bit,
+                        },
+                    ));
+                }
+            };
             let (lo, bits) = if slots_only {
                 (head, frame - head)
             } else {
@@ -93,17 +113,7 @@ fn errors(
                         3 + (a - head) / w,
                     ),
                 };
-                if !hit.contains(&(false, word)) {
-                    hit.push((false, word));
-                    v.push((
-                        c,
-                        Fault::Flip {
-                            fibre: fb,
-                            target,
-                            bit: bit as u32,
-                        },
-                    ));
-                }
+                place(&mut hit, &mut v, (false, word), target, bit);
             }
             if !slots_only && rtx_words > 0 && d.unit() < p_of(head + rtx_words * w) {
                 let at = d.below(head + rtx_words * w);
@@ -113,17 +123,7 @@ fn errors(
                     let j = (at - head) / w;
                     (FlipTarget::Rtx(j as usize), (at - head) % w, 1 + j)
                 };
-                if !hit.contains(&(true, word)) {
-                    hit.push((true, word));
-                    v.push((
-                        c,
-                        Fault::Flip {
-                            fibre: fb,
-                            target,
-                            bit: bit as u32,
-                        },
-                    ));
-                }
+                place(&mut hit, &mut v, (true, word), target, bit);
             }
             if burst > 0.0 && d.unit() < burst / data_fibres {
                 let len = 25 + d.below(51) as u32;
