@@ -557,7 +557,8 @@ fn synth_fits_the_lean_slave_into_the_hx1k() {
     assert!(
         [
             "`synth_ice40 -dff -nocarry -nodffe`",
-            "`synth_ice40 -nocarry -dffe_min_ce_use 16`"
+            "`synth_ice40 -nocarry -dffe_min_ce_use 16`",
+            "`synth_ice40 -dff -nocarry -dffe_min_ce_use 16`"
         ]
         .contains(&strategy.as_str()),
         "{n}"

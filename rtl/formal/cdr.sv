@@ -25,7 +25,7 @@ module cdr_props (
     cdr dut (
         .clock(clock), .i_samples(i_samples), .o_valid(o_valid),
         .o_bit(o_bit), .o_los(o_los), .o_phase(o_phase),
-        .quiet$q(quiet_q), .last$q(last_q)
+        .quiet_q(quiet_q), .last_q(last_q)
     );
 
     // Shadow: the last sample of the clock before, and clocks since the

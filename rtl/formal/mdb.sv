@@ -50,10 +50,10 @@ module mdb_props (
         .i_alarm(i_alarm), .i_ok(i_ok), .i_hdr_bad(i_hdr_bad),
         .i_tx_slot(i_tx_slot), .i_fs_cleared(i_fs_cleared),
         .o_running(o_running),
-        .db$write_enable(db_we), .db$write_address(db_waddr),
-        .db$write_data(db_wdata), .cfg_tx$write_enable(cfg_tx_we),
-        .cfg_rx$write_enable(cfg_rx_we), .cfg_rx$write_address(cfg_rx_waddr),
-        .cfg_rx$write_data(cfg_rx_wdata), .s2_write(s2_write)
+        .db__write_enable(db_we), .db__write_address(db_waddr),
+        .db__write_data(db_wdata), .cfg_tx__write_enable(cfg_tx_we),
+        .cfg_rx__write_enable(cfg_rx_we), .cfg_rx__write_address(cfg_rx_waddr),
+        .cfg_rx__write_data(cfg_rx_wdata), .s2_write(s2_write)
     );
 
     reg past_valid = 1'b0;

@@ -16,7 +16,7 @@ module nrzi_tx_props (
     wire [4:0] shift_q;
     nrzi_tx dut (
         .clock(clock), .i_bit_en(i_bit_en), .i_code(i_code),
-        .o_take(o_take), .o_line(o_line), .count$q(count_q), .shift$q(shift_q)
+        .o_take(o_take), .o_line(o_line), .count_q(count_q), .shift_q(shift_q)
     );
 
     // Shadow: the group being sent and the index of its next bit

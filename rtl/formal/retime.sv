@@ -54,7 +54,7 @@ module retime_props (
     retime dut (
         .clock(clock), .i_valid(i_valid), .i_code(i_code), .i_phase(i_phase),
         .o_line(o_line), .o_slip(o_slip),
-        .send0(send0), .send1(send1), .len(len), .run$q(run_q)
+        .send0(send0), .send1(send1), .len(len), .run_q(run_q)
     );
 
     // Bits started since the last correction (saturating; power-up: many).

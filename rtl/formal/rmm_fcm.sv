@@ -41,7 +41,7 @@ module rmm_fcm_props (
         .i_cmd_ch(i_cmd_ch), .i_cmd_sent(i_cmd_sent), .o_sw(o_sw),
         .o_state(o_state), .o_cause(o_cause), .o_irq(o_irq),
         .o_cmd_req(o_cmd_req), .o_cmd_ch(o_cmd_ch),
-        .pend$q(pend_q), .pend_ch$q(pend_ch_q)
+        .pend_q(pend_q), .pend_ch_q(pend_ch_q)
     );
 
     // ---- §21, row by row --------------------------------------------------

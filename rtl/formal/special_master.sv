@@ -46,10 +46,10 @@ module special_master_props (
         .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),
         .i_wb_dat(i_wb_dat), .i_irq1(i_irq1), .i_irq2(i_irq2),
         .i_fs_req(i_fs_req),
-        .ftx$i_start(tick), .mdb$o_running(running), .half$q(half_q),
-        .bcnt$q(bcnt_q), .quiet$q(quiet_q), .armed$q(armed_q),
-        .failsafe$q(failsafe_q), .rx_in$o_wvalid(rx_wvalid),
-        .rx_in$o_kind(rx_kind), .rx_in$o_ok(rx_ok), .rx_in$o_ptype(rx_ptype)
+        .ftx__i_start(tick), .mdb__o_running(running), .half_q(half_q),
+        .bcnt_q(bcnt_q), .quiet_q(quiet_q), .armed_q(armed_q),
+        .failsafe_q(failsafe_q), .rx_in__o_wvalid(rx_wvalid),
+        .rx_in__o_kind(rx_kind), .rx_in__o_ok(rx_ok), .rx_in__o_ptype(rx_ptype)
     );
 
     reg past_valid = 1'b0;

@@ -41,7 +41,7 @@ module stream_ctrl_props (
         .i_ok(i_ok), .i_void(i_void), .i_marked(i_marked), .i_d12(i_d12), .i_compl(i_compl),
         .i_ptype(i_ptype), .i_tst_fail(i_tst_fail), .i_flush(i_flush),
         .o_cf(o_cf), .o_hard(o_hard), .o_run(o_run), .o_tst(o_tst),
-        .o_ack(o_ack), .bad$q(bad_q), .hold$q(hold_q)
+        .o_ack(o_ack), .bad_q(bad_q), .hold_q(hold_q)
     );
 
     reg past_valid = 1'b0;

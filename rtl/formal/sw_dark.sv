@@ -23,8 +23,8 @@ module sw_dark_props (
     sw_dark dut (
         .clock(clock), .i_change(i_change), .i_keep_po(i_keep_po),
         .i_po(i_po), .i_so(i_so), .o_po(o_po), .o_so(o_so),
-        .dark$q(dark_q), .dark_po$q(dark_po_q), .lvl_po$q(lvl_po_q),
-        .lvl_so$q(lvl_so_q)
+        .dark_q(dark_q), .dark_po_q(dark_po_q), .lvl_po_q(lvl_po_q),
+        .lvl_so_q(lvl_so_q)
     );
 
     // Shadow: clocks of dark time left, whether PO darkens, the levels

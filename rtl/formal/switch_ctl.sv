@@ -58,8 +58,8 @@ module switch_ctl_props (
         .i_cs_timeout(i_cs_timeout), .o_mode(o_mode), .o_change(o_change),
         .o_relink(o_relink), .o_tst_start(o_tst_start), .o_fs_set(o_fs_set),
         .o_grace_over(o_grace_over),
-        .settle$q(settle_q), .ack_time$q(ack_time_q), .grace$q(grace_q),
-        .seen_ack$q(seen_ack_q), .pend_up$q(pend_up_q)
+        .settle_q(settle_q), .ack_time_q(ack_time_q), .grace_q(grace_q),
+        .seen_ack_q(seen_ack_q), .pend_up_q(pend_up_q)
     );
 
     wire [3:0] o_input, o_bsr;

@@ -232,5 +232,5 @@ impl Logic for DcmStation {
 /// `merkur_dcm$...` submodules), every memory zero at power-up.
 pub fn dcm_verilog() -> String {
     let v = crate::verilog::block_verilog(DcmStation::default());
-    crate::ring_top::renamed(&v, "merkur_dcm")
+    crate::verilog::rename_top(&v, "merkur_dcm")
 }

@@ -127,7 +127,7 @@ fn cdr() -> Proof {
         name: "cdr",
         what: "loss of signal: raised after 32 bit times without an edge, never earlier",
         duts: vec![dut("cdr", block_verilog(crate::cdr::Cdr::default()))],
-        expose: vec![("cdr", "quiet$q"), ("cdr", "last$q")],
+        expose: vec![("cdr", "quiet_q"), ("cdr", "last_q")],
         props: include_str!("../formal/cdr.sv"),
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 70)],
     }
@@ -139,7 +139,7 @@ fn stream_ctrl() -> Proof {
         name: "stream_ctrl",
         what: "channel failure: 8 bad words raise a run, 7 never; TST held 130 bit times",
         duts: vec![dut("stream_ctrl", v)],
-        expose: ["bad$q", "hold$q"].map(|w| ("stream_ctrl", w)).to_vec(),
+        expose: ["bad_q", "hold_q"].map(|w| ("stream_ctrl", w)).to_vec(),
         props: include_str!("../formal/stream_ctrl.sv"),
         // The longest cover: a TST (2 words) and its 260-clock hold.
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 266)],
@@ -154,7 +154,7 @@ fn sw_dark() -> Proof {
             "sw_dark",
             block_verilog(crate::sw_dark::SwDark::default()),
         )],
-        expose: ["dark$q", "dark_po$q", "lvl_po$q", "lvl_so$q"]
+        expose: ["dark_q", "dark_po_q", "lvl_po_q", "lvl_so_q"]
             .map(|w| ("sw_dark", w))
             .to_vec(),
         props: include_str!("../formal/sw_dark.sv"),
@@ -167,7 +167,7 @@ fn retime() -> Proof {
         name: "retime",
         what: "elastic buffer: no slip for a sender 20,000 ppm off, one-half-clock corrections 8 bits apart",
         duts: vec![dut("retime", block_verilog(crate::retime::Retime::default()))],
-        expose: ["send0", "send1", "len", "run$q"].map(|w| ("retime", w)).to_vec(),
+        expose: ["send0", "send1", "len", "run_q"].map(|w| ("retime", w)).to_vec(),
         props: include_str!("../formal/retime.sv"),
         tasks: vec![task(Mode::Bmc, 100), task(Mode::Cover, 100)],
     }
@@ -181,7 +181,7 @@ fn rmm_fcm() -> Proof {
             "rmm_fcm",
             block_verilog(crate::rmm_fcm::RmmFcm::default()),
         )],
-        expose: vec![("rmm_fcm", "pend$q"), ("rmm_fcm", "pend_ch$q")],
+        expose: vec![("rmm_fcm", "pend_q"), ("rmm_fcm", "pend_ch_q")],
         props: include_str!("../formal/rmm_fcm.sv"),
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 8)],
     }
@@ -190,13 +190,13 @@ fn rmm_fcm() -> Proof {
 fn mdb() -> Proof {
     let v = crate::verilog::size_memories(&block_verilog(crate::mdb::Mdb::default()), 256);
     let wires = [
-        "db$write_enable",
-        "db$write_address",
-        "db$write_data",
-        "cfg_tx$write_enable",
-        "cfg_rx$write_enable",
-        "cfg_rx$write_address",
-        "cfg_rx$write_data",
+        "db__write_enable",
+        "db__write_address",
+        "db__write_data",
+        "cfg_tx__write_enable",
+        "cfg_rx__write_enable",
+        "cfg_rx__write_address",
+        "cfg_rx__write_data",
         "s2_write",
     ];
     Proof {
@@ -217,17 +217,17 @@ fn special_master() -> Proof {
         256,
     );
     let wires = [
-        "ftx$i_start",
-        "mdb$o_running",
-        "half$q",
-        "bcnt$q",
-        "quiet$q",
-        "armed$q",
-        "failsafe$q",
-        "rx_in$o_wvalid",
-        "rx_in$o_kind",
-        "rx_in$o_ok",
-        "rx_in$o_ptype",
+        "ftx__i_start",
+        "mdb__o_running",
+        "half_q",
+        "bcnt_q",
+        "quiet_q",
+        "armed_q",
+        "failsafe_q",
+        "rx_in__o_wvalid",
+        "rx_in__o_kind",
+        "rx_in__o_ok",
+        "rx_in__o_ptype",
     ];
     Proof {
         name: "special_master",
@@ -248,7 +248,7 @@ fn nrzi_tx() -> Proof {
             "nrzi_tx",
             block_verilog(crate::nrzi_tx::NrziTx::default()),
         )],
-        expose: vec![("nrzi_tx", "count$q"), ("nrzi_tx", "shift$q")],
+        expose: vec![("nrzi_tx", "count_q"), ("nrzi_tx", "shift_q")],
         props: include_str!("../formal/nrzi_tx.sv"),
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 12)],
     }
@@ -273,11 +273,11 @@ fn sbox() -> (&'static str, String) {
 fn switch_ctl() -> Proof {
     let v = block_verilog(crate::switch_ctl::SwitchCtl::default());
     let regs = [
-        "settle$q",
-        "ack_time$q",
-        "grace$q",
-        "seen_ack$q",
-        "pend_up$q",
+        "settle_q",
+        "ack_time_q",
+        "grace_q",
+        "seen_ack_q",
+        "pend_up_q",
     ];
     Proof {
         name: "switch_ctl",

@@ -22,6 +22,7 @@
 //! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`pkt_tx`]: packet generator (DATA frames, SEC) of the special master
+//! - [`readable`]: our emission pass after rust-hdl's (registers in clocked blocks, plain names), with [`literals`] (rust-hdl's 32-bit literals sized to what they meet) and [`headers`] (each module's block and its doc)
 //! - [`retime`]: elastic output buffer, sends forwarded bits on the node's own clock
 //! - [`ring_top`]: Verilog of a whole ring for simulation (clock gates, fibres, fault points, monitors)
 //! - [`rmm_detect`]: RMM fault detection from the six MAC events (SC, NS)
@@ -48,12 +49,15 @@ pub mod dec5b4b;
 pub mod enc4b5b;
 pub mod formal;
 pub mod fwd;
+pub mod headers;
+pub mod literals;
 pub mod master;
 pub mod mdb;
 pub mod monitor;
 pub mod nrzi_tx;
 pub mod pkt_tx;
 pub mod port_rx;
+pub mod readable;
 pub mod retime;
 pub mod ring_top;
 pub mod rmm_detect;

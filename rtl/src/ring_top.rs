@@ -76,7 +76,7 @@
 //! the request's CYC, i.e. before the next frame; a sensor sees the value
 //! of the frame whose H1 its PI fibre showed last (its slot comes after).
 
-use crate::verilog::{block_verilog, mem_depth, size_memories};
+use crate::verilog::{block_verilog, mem_depth, rename_top, size_memories};
 use merkur_model::scenario::Kind;
 
 /// Ticks of the simulation clock per nominal bit time (one tick per
@@ -182,15 +182,6 @@ pub fn module_name(kind: Kind) -> &'static str {
     }
 }
 
-/// Renames rust-hdl's `top` and `top$…` modules of one block.
-pub fn renamed(verilog: &str, name: &str) -> String {
-    verilog
-        .replace("module top(", &format!("module {name}("))
-        .replace("module top$", &format!("module {name}$"))
-        .replace("\ntop$", &format!("\n{name}$"))
-        .replace(" top$", &format!(" {name}$"))
-}
-
 /// The Verilog of a node kind's modules, named after [`module_name`], for a
 /// ring of `slots` slots: the memories are [`mem_depth`]`(slots)` deep
 /// ([`size_memories`]). Simulation and synthesis both use this text.
@@ -200,7 +191,7 @@ pub fn node_verilog(kind: Kind, slots: usize) -> String {
         Kind::Master => block_verilog(crate::master::Master::default()),
         Kind::SpecialMaster => block_verilog(crate::special_master::SpecialMaster::default()),
     };
-    renamed(&size_memories(&v, mem_depth(slots)), module_name(kind))
+    rename_top(&size_memories(&v, mem_depth(slots)), module_name(kind))
 }
 
 /// Capture entries per cycle buffer: slots rounded up to a power of two.
@@ -228,7 +219,7 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
     for k in need {
         out.push_str(&node_verilog(k, slots));
     }
-    out.push_str(&renamed(
+    out.push_str(&rename_top(
         &block_verilog(crate::monitor::Monitor::new(false)),
         "merkur_monitor",
     ));

@@ -86,6 +86,9 @@ pub struct RmmSfc {
     st: RAM<Bits<16>, 5>,
     prev: RAM<Bits<8>, 5>,
     cnt: DFF<Bits<16>>,
+    /// `cnt + 1` in 17 bits: it never wraps, so the comparison with the
+    /// period is the same as Verilog's 32-bit sum, with no mixed widths.
+    cnt_p1: Signal<Local, Bits<17>>,
     scanning: DFF<Bit>,
     scan_i: DFF<Bits<5>>,
     s2_valid: DFF<Bit>,
@@ -127,7 +130,8 @@ impl Logic for RmmSfc {
         self.st.write_address.next = self.i_rx_sa.val().get_bits::<5>(0);
         self.st.write_data.next = self.i_rx_sfw.val();
         // The check period and the scan (stage 1: read).
-        if (self.cnt.q.val() + 1) >= self.i_chk_period.val() {
+        self.cnt_p1.next = bit_cast::<17, 16>(self.cnt.q.val()) + 1;
+        if self.cnt_p1.val() >= bit_cast::<17, 16>(self.i_chk_period.val()) {
             self.cnt.d.next = 0.into();
             self.scanning.d.next = true;
             self.scan_i.d.next = 0.into();

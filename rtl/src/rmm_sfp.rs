@@ -44,6 +44,9 @@ pub struct RmmSfp {
     /// Live counter and status byte.
     pub o_sf_word: Signal<Out, Bits<16>>,
     cnt: DFF<Bits<16>>,
+    /// `cnt + 1` in 17 bits: it never wraps, so the comparison with the
+    /// period is the same as Verilog's 32-bit sum, with no mixed widths.
+    cnt_p1: Signal<Local, Bits<17>>,
     live: DFF<Bits<8>>,
     pend: DFF<Bit>,
     due: Signal<Local, Bit>,
@@ -53,7 +56,8 @@ impl Logic for RmmSfp {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, cnt, live, pend);
-        self.due.next = (self.cnt.q.val() + 1) >= self.i_sf_period.val();
+        self.cnt_p1.next = bit_cast::<17, 16>(self.cnt.q.val()) + 1;
+        self.due.next = self.cnt_p1.val() >= bit_cast::<17, 16>(self.i_sf_period.val());
         if self.due.val() {
             self.cnt.d.next = 0.into();
             self.live.d.next = self.live.q.val() + 1;

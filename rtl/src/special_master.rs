@@ -197,6 +197,11 @@ pub struct SpecialMaster {
     bss_pair: Signal<Local, Bits<2>>,
     relay_len: Constant<Bits<7>>,
     unwrap_lead: Constant<Bits<20>>,
+    /// 1 in the period counter's width: `bcnt + one` wraps in 20 bits in
+    /// the Verilog as in Rust (a bare `+ 1` is a 32-bit sum in Verilog).
+    /// The counter's next value is the same either way (0 after the last
+    /// bit time); the sized sum keeps the comparison free of mixed widths.
+    one: Constant<Bits<20>>,
     unwrap_at: Signal<Local, Bit>,
     rdl: DFF<Bits<76>>,
     rcd: DFF<Bits<7>>,
@@ -395,6 +400,7 @@ impl Default for SpecialMaster {
             seq_tx: Default::default(),
             tick: Default::default(),
             unwrap_lead: Constant::new(UNWRAP_LEAD_BITS.to_bits()),
+            one: Constant::new(1.into()),
             unwrap_at: Default::default(),
             st: Default::default(),
             st_ok: Default::default(),
@@ -511,7 +517,7 @@ impl Logic for SpecialMaster {
                 self.unwrap_at.next = true;
             }
             self.bcnt.d.next = self.bcnt.q.val() + 1;
-            if (self.bcnt.q.val() + 1) == self.i_period.val() {
+            if (self.bcnt.q.val() + self.one.val()) == self.i_period.val() {
                 self.bcnt.d.next = 0.into();
             }
             if self.bcnt.q.val() == 0 {

@@ -3,11 +3,18 @@
 use rust_hdl::prelude::*;
 
 /// The Verilog of a block as a top module named `top`, after rust-hdl's
-/// connectivity and logic-loop checks, with every memory zero at power-up
-/// ([`zero_memories`]).
+/// connectivity and logic-loop checks, rewritten by our emission pass
+/// ([`crate::readable`]: registers in clocked blocks, `__` for `$`, sized
+/// literals), a header before every module ([`crate::headers`]: the block,
+/// its source file and, once per block, its documentation), with every
+/// memory zero at power-up ([`zero_memories`]).
 pub fn block_verilog<U: Block>(mut uut: U) -> String {
     uut.connect_all();
-    zero_memories(&generate_verilog(&uut))
+    let root = std::any::type_name::<U>();
+    let root = root.split('<').next().unwrap_or(root);
+    let root = root.rsplit("::").next().unwrap_or(root);
+    let text = crate::readable::readable(&generate_verilog(&uut));
+    zero_memories(&crate::headers::with_headers(&text, root))
 }
 
 /// Gives every rust-hdl memory (`reg[W:0] mem[D:0];`) an `initial` loop
@@ -114,9 +121,11 @@ pub fn size_memories(verilog: &str, depth: usize) -> String {
 }
 
 /// Renames the top module of [`block_verilog`]'s text from `top` to `name`
-/// (and its children `top$x` to `name$x`), so that several blocks can be
-/// read into one tool run (the formal proofs, [`crate::formal`]). Only
-/// module headers, instantiations and `endmodule` comments change.
+/// (and its children `top__x` to `name__x`), so that several blocks can be
+/// read into one tool run (the formal proofs, [`crate::formal`], and a
+/// ring's node modules, [`crate::ring_top`]). Only module headers,
+/// instantiations, `endmodule` comments and the module names in the headers'
+/// comments change.
 pub fn rename_top(verilog: &str, name: &str) -> String {
     let mut out = String::with_capacity(verilog.len() + 256);
     for line in verilog.lines() {
@@ -126,8 +135,12 @@ pub fn rename_top(verilog: &str, name: &str) -> String {
             format!("{indent}module {name}{rest}")
         } else if let Some(rest) = t.strip_prefix("endmodule // top") {
             format!("{indent}endmodule // {name}{rest}")
-        } else if let Some(rest) = t.strip_prefix("top$") {
-            format!("{indent}{name}${rest}")
+        } else if let Some(rest) = t.strip_prefix("top__").filter(|r| r.ends_with('(')) {
+            format!("{indent}{name}__{rest}")
+        } else if t.starts_with("//") {
+            // Module names in the headers (crate::headers) are in backticks.
+            line.replace("`top`", &format!("`{name}`"))
+                .replace("`top__", &format!("`{name}__"))
         } else {
             line.to_string()
         };
@@ -208,15 +221,16 @@ mod tests {
 
     #[test]
     fn rename_top_renames_modules_and_instances_only() {
-        let v = block_verilog(crate::switch_ctl::SwitchCtl::default());
-        let r = rename_top(&v, "switch_ctl");
-        assert!(r.contains("module switch_ctl(clock,"));
-        assert!(r.contains("module switch_ctl$settle(d,q,clock);"));
-        assert!(r.contains("    switch_ctl$settle settle("));
+        let v = block_verilog(crate::special_master::SpecialMaster::default());
+        let r = rename_top(&v, "special_master");
+        assert!(r.contains("module special_master(clock,"));
+        assert!(r.contains("module special_master__dark(clock,"), "{r}");
+        assert!(r.contains("    special_master__dark dark("), "{r}");
+        assert!(r.contains("endmodule // special_master__dark"), "{r}");
         assert!(!r.contains("module top"), "{r}");
-        assert!(!r.lines().any(|l| l.trim_start().starts_with("top$")));
+        assert!(!r.lines().any(|l| l.trim_start().starts_with("top__")));
         // Signals are not touched.
-        assert_eq!(r.matches("settle$q").count(), v.matches("settle$q").count());
+        assert_eq!(r.matches("dark__").count(), v.matches("dark__").count());
         assert_eq!(r.lines().count(), v.lines().count());
     }
 

@@ -339,8 +339,9 @@ fn no_inline_config(verilog: &str) -> String {
                 .chars()
                 .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
                 .collect();
-            // `merkur_x$y` are the node's own submodules: leave them inlined.
-            if !rest[name.len()..].starts_with('$') {
+            // `merkur_x__y` are the node's own submodules (rtl/src/readable.rs
+            // names a child block `parent__child`): leave them inlined.
+            if !name.contains("__") {
                 v.push_str(&format!("no_inline -module \"merkur_{name}\"\n"));
             }
         }
