@@ -229,7 +229,7 @@ impl Logic for DcmStation {
 }
 
 /// The Verilog of the station, top module `merkur_dcm` (its blocks as
-/// `merkur_dcm$...` submodules), every memory zero at power-up.
+/// `merkur_dcm__...` submodules), every memory zero at power-up.
 pub fn dcm_verilog() -> String {
     let v = crate::verilog::block_verilog(DcmStation::default());
     crate::verilog::rename_top(&v, "merkur_dcm")

@@ -252,8 +252,7 @@ fn module(m: &Module, dffs: &HashMap<&str, Dff>) -> String {
         text.push_str(&rename(l, &map));
         text.push('\n');
     }
-    let text = headings(&text);
-    let mut text = text;
+    let mut text = headings(&text);
     if !regs.is_empty() {
         text.push_str(&registers(&regs));
     }
@@ -339,9 +338,10 @@ fn direct_inputs(body: &[String], inputs: &HashSet<String>) -> HashMap<String, S
 /// The register section of a module: per register its power-up value and
 /// the clocked assignment of its next value, one line each. (One `always`
 /// block per module reads as well, but Yosys maps it differently: the lean
-/// sensor then needs 1,287 iCE40 logic cells, 7 more than an HX1K has, and
-/// with one line per register 1,269, as measured in docs/benchmarks.md;
-/// the cell counts of ABC's mapping move with the order of the netlist.)
+/// sensor then needed 1,287 iCE40 logic cells, 7 more than an HX1K has, and
+/// with one line per register 1,269, both before the literal sizing;
+/// docs/architecture.md. The cell counts of ABC's mapping move with the
+/// order of the netlist.)
 fn registers(regs: &[Reg]) -> String {
     let map = HashMap::new();
     let mut s = String::from(

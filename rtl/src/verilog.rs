@@ -229,6 +229,13 @@ mod tests {
         assert!(r.contains("endmodule // special_master__dark"), "{r}");
         assert!(!r.contains("module top"), "{r}");
         assert!(!r.lines().any(|l| l.trim_start().starts_with("top__")));
+        // The headers' module names follow (crate::headers).
+        assert!(
+            v.contains("Documented at module `top__rx_bsr` above."),
+            "the second receive port's header names the first"
+        );
+        assert!(r.contains("Documented at module `special_master__rx_bsr` above."));
+        assert!(!r.contains("`top"), "{r}");
         // Signals are not touched.
         assert_eq!(r.matches("dark__").count(), v.matches("dark__").count());
         assert_eq!(r.lines().count(), v.lines().count());
