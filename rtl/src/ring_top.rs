@@ -45,7 +45,9 @@
 //! the single line-bit error the model applies; burst: from such a bit on,
 //! the line carries the model's garbage for a number of bits, made by the
 //! same generator, the level inverted where the garbage's code bit differs
-//! from the sender's) and a **monitor** (clock recovery,
+//! from the sender's; the line and its fault point are one module per fibre,
+//! `merkur_fibre`, [`FIBRE_MODULE`], so that a simulator runs one copy of
+//! their code for every fibre) and a **monitor** (clock recovery,
 //! framer, word decoder at the nominal rate) whose DATA words are captured
 //! per cycle: entry `(cyc & 3) · CAP + slot` holds `{EPOCH[7:0], CYC[2:0],
 //! status[1:0], ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3
@@ -199,6 +201,157 @@ pub fn cap_slots(slots: usize) -> usize {
     slots.next_power_of_two().max(2)
 }
 
+/// The fibre module of the ring top (`@BREAK@` and `@FLIP@` stand for the
+/// configuration fields [`cfg::BREAK`] and [`cfg::FLIP`]).
+const FIBRE_MODULE: &str = r#"// ---- merkur_fibre: one fibre of the simulated ring (rtl/src/ring_top.rs) ----
+// The line from a sender's output to a receiver's input, 4 ticks long, with
+// the fault point of the ring top's module doc: break (the line dark while
+// field BREAK is 1, or while the sender is dead), flip and burst (field
+// FLIP: armed for the next packet, on the sender's own bit grid). One module
+// for every fibre, so that a simulator runs one copy of its code for all of
+// them (docs/benchmarks.md, issue 24).
+//
+// | port | dir | width | meaning |
+// |---|---|---|---|
+// | `clk` | in | 1 | simulation tick |
+// | `i_tick` | in | 32 | ticks since the start |
+// | `i_txl` | in | 1 | the sender's line level this tick (the half of its DDR output pair on the line) |
+// | `i_hs` | in | 1 | a new half of the sender's DDR pair starts this tick |
+// | `i_dead` | in | 1 | the sender is dead: the line is dark |
+// | `i_index` | in | 16 | the fibre's index (P0.. then S0..; constant) |
+// | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | the ring top's configuration write; this fibre's when `i_cfg_sel` = `i_index` (fields BREAK, FLIP) |
+// | `o_line` | out | 1 | the line level at the receiver: the sender's 4 ticks before, faults applied |
+// | `o_sh` | out | 3 | the three line levels before `o_line`, newest first |
+module merkur_fibre(clk, i_tick, i_txl, i_hs, i_dead, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, o_line, o_sh);
+    input wire clk;
+    input wire [31:0] i_tick;
+    input wire i_txl;
+    input wire i_hs;
+    input wire i_dead;
+    input wire [15:0] i_index;
+    input wire i_cfg_we;
+    input wire [15:0] i_cfg_sel;
+    input wire [7:0] i_cfg_field;
+    input wire [31:0] i_cfg_val;
+    output o_line;
+    output [2:0] o_sh;
+    reg o_line = 1'b0;
+    reg [2:0] o_sh = 3'd0;
+    reg brk = 1'b0;
+    // Flip point. The sender's bit grid from its line (a boundary at every edge, else 4 DDR halves after the last;
+    // a 5-half bit shows as an edge one half after a boundary without one, so such a boundary is confirmed a half
+    // later), code 1s in a row, and the armed flip: J found (its first 0 code bit after 5 or more 1s), count to line
+    // bit fl_tgt, invert from that boundary to the next. The line is the sender's delayed by 4 ticks, so a flip
+    // decided a half late still starts on time.
+    reg hp = 1'b0, pend = 1'b0, fl_arm = 1'b0, fl_run = 1'b0, fl_open = 1'b0, trk = 1'b0;
+    reg [2:0] hc = 3'd0, ones = 3'd0;
+    reg [3:0] txd = 4'd0;
+    reg [11:0] fl_tgt = 12'd0, fl_cnt = 12'd0;
+    reg [31:0] tc = 32'd0, fl_is = 32'hffffffff, fl_ie = 32'hffffffff;
+    wire lvl_edge = i_txl != hp;
+    wire [2:0] hn = hc + 3'd1;
+    wire b1 = i_hs & lvl_edge;
+    wire b0 = i_hs & !lvl_edge & pend;
+    wire bev = b1 | b0;
+    wire [31:0] bt = b1 ? i_tick : tc;
+    wire jdet = b0 & (ones >= 3'd5) & fl_arm;
+    wire hit = (jdet & fl_tgt == 12'd2) | (bev & fl_run & fl_cnt == 12'd1);
+    wire [31:0] tickd = i_tick - 32'd4;
+    // Burst: bits left, the configured length and pattern, the generator (merkur_model::line::garbage), the level mask
+    // in force (bu_m from tick bu_t, bu_pm before), and the return of the level after the last bit.
+    reg [11:0] bu_len = 12'd0, bu_cfg = 12'd0;
+    reg [15:0] bu_s = 16'd0;
+    reg [1:0] bu_z = 2'd0;
+    reg [3:0] bu_o = 4'd0;
+    reg bu_m = 1'b0, bu_pm = 1'b0, bu_ret = 1'b0;
+    reg [31:0] bu_t = 32'hffffffff;
+    wire bu_start = hit & (bu_cfg != 12'd0);
+    wire bu_bit = bev & (bu_start | (bu_len != 12'd0));
+    wire bu_gr = (bu_z == 2'd2) ? 1'b1 : ((bu_o == 4'd9) ? 1'b0 : bu_s[0]);
+    wire bu_g = (bu_start | (bu_len == 12'd1)) ? 1'b1 : bu_gr;
+    wire [15:0] bu_sn = bu_s[0] ? ({1'b0, bu_s[15:1]} ^ 16'hb400) : {1'b0, bu_s[15:1]};
+    wire inv = trk & (((tickd >= fl_is) & (tickd < fl_ie)) ^ ((tickd >= bu_t) ? bu_m : bu_pm));
+    always @(posedge clk) begin
+        txd <= {txd[2:0], i_txl};
+        o_line <= (brk | i_dead) ? 1'b0 : (txd[3] ^ inv);
+        o_sh <= {o_line, o_sh[2:1]};
+        if (trk & i_hs) begin
+            hp <= i_txl;
+            if (lvl_edge) begin
+                hc <= 3'd0;
+                pend <= 1'b0;
+            end else if (pend) begin
+                hc <= 3'd1;
+                pend <= 1'b0;
+            end else begin
+                hc <= hn;
+                if (hn == 3'd4) begin
+                    pend <= 1'b1;
+                    tc <= i_tick;
+                end
+            end
+        end
+        if (trk & bev) begin
+            ones <= b0 ? 3'd0 : (ones == 3'd7 ? 3'd7 : ones + 3'd1);
+            if (jdet) begin
+                fl_arm <= 1'b0;
+                fl_run <= fl_tgt > 12'd2;
+                fl_cnt <= fl_tgt - 12'd2;
+            end else if (fl_run) begin
+                fl_cnt <= fl_cnt - 12'd1;
+                if (fl_cnt == 12'd1) fl_run <= 1'b0;
+            end
+            if (hit & (bu_cfg == 12'd0)) begin
+                fl_is <= bt;
+                fl_ie <= 32'hffffffff;
+                fl_open <= 1'b1;
+            end else if (fl_open) begin
+                fl_ie <= bt;
+                fl_open <= 1'b0;
+            end
+            if (bu_bit) begin
+                // A garbage bit from this boundary: the mask makes the line's code bit the garbage's.
+                bu_pm <= bu_m;
+                bu_m <= (bu_start ? 1'b0 : bu_m) ^ b1 ^ bu_g;
+                bu_t <= bt;
+                bu_s <= bu_sn;
+                bu_z <= bu_g ? 2'd0 : bu_z + 2'd1;
+                bu_o <= bu_g ? bu_o + 4'd1 : 4'd0;
+                bu_len <= (bu_start ? bu_cfg : bu_len) - 12'd1;
+                bu_ret <= (bu_start ? bu_cfg : bu_len) == 12'd1;
+                if (bu_start) begin
+                    bu_z <= 2'd0;
+                    bu_o <= 4'd1;
+                    bu_cfg <= 12'd0;
+                end
+            end else if (bu_ret) begin
+                // After the last garbage bit the level is the sender's again.
+                bu_pm <= bu_m;
+                bu_m <= 1'b0;
+                bu_t <= bt;
+                bu_ret <= 1'b0;
+            end
+        end
+        // The fault point works only while a flip or burst is armed or running (trk); arming it starts the bit grid
+        // afresh from the line's level (an armed packet is always after an idle gap: edges every bit, ones enough).
+        trk <= trk & (fl_arm | fl_run | fl_open | (bu_len != 12'd0) | bu_ret | bu_m | (tickd < fl_ie) | (tickd < bu_t));
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@BREAK@) brk <= i_cfg_val[0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@FLIP@) begin
+            fl_arm <= 1'b1;
+            fl_run <= 1'b0;
+            fl_tgt <= i_cfg_val[11:0];
+            trk <= 1'b1;
+            hp <= i_txl;
+            hc <= 3'd0;
+            pend <= 1'b0;
+            ones <= 3'd0;
+            bu_cfg <= i_cfg_val[23:12];
+            bu_s <= {i_cfg_val[31:24], 8'ha5};
+        end
+    end
+endmodule
+"#;
+
 /// The Verilog of every module the ring needs plus the `merkur_ring` top.
 pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
     let n = kinds.len();
@@ -223,6 +376,11 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
         &block_verilog(crate::monitor::Monitor::new(false)),
         "merkur_monitor",
     ));
+    out.push_str(
+        &FIBRE_MODULE
+            .replace("@BREAK@", &cfg::BREAK.to_string())
+            .replace("@FLIP@", &cfg::FLIP.to_string()),
+    );
     out.push_str(&top(kinds, cap));
     out
 }
@@ -448,54 +606,12 @@ fn top(kinds: &[Kind], cap: usize) -> String {
             &mut v,
             &format!(
                 "    // ---- fibre {name} (from node {src}) ----\n\
-                 \x20   reg line_{f} = 1'b0, brk_{f} = 1'b0;\n    reg [2:0] sh_{f} = 3'd0;\n\
+                 \x20   wire line_{f};\n    wire [2:0] sh_{f};\n\
                  \x20   wire txl_{f} = (fired_{src} | fired2_{src}) ? {port}_{src}[0] : {port}_{src}[1];\n\
-                 \x20   // Flip point. The sender's bit grid from its line (a boundary at every edge, else 4 DDR halves after the last;\n\
-                 \x20   // a 5-half bit shows as an edge one half after a boundary without one, so such a boundary is confirmed a half\n\
-                 \x20   // later), code 1s in a row, and the armed flip: J found (its first 0 code bit after 5 or more 1s), count to line\n\
-                 \x20   // bit fl_tgt, invert from that boundary to the next. The line is the sender's delayed by 4 ticks, so a flip\n\
-                 \x20   // decided a half late still starts on time.\n\
-                 \x20   reg hp_{f} = 1'b0, pend_{f} = 1'b0, fl_arm_{f} = 1'b0, fl_run_{f} = 1'b0, fl_open_{f} = 1'b0, trk_{f} = 1'b0;\n\
-                 \x20   reg [2:0] hc_{f} = 3'd0, ones_{f} = 3'd0;\n    reg [3:0] txd_{f} = 4'd0;\n    reg [11:0] fl_tgt_{f} = 12'd0, fl_cnt_{f} = 12'd0;\n\
-                 \x20   reg [31:0] tc_{f} = 32'd0, fl_is_{f} = 32'hffffffff, fl_ie_{f} = 32'hffffffff;\n\
-                 \x20   wire edge_{f} = txl_{f} != hp_{f};\n    wire [2:0] hn_{f} = hc_{f} + 3'd1;\n\
-                 \x20   wire b1_{f} = hs_{src} & edge_{f};\n    wire b0_{f} = hs_{src} & !edge_{f} & pend_{f};\n\
-                 \x20   wire bev_{f} = b1_{f} | b0_{f};\n    wire [31:0] bt_{f} = b1_{f} ? tick : tc_{f};\n\
-                 \x20   wire jdet_{f} = b0_{f} & (ones_{f} >= 3'd5) & fl_arm_{f};\n\
-                 \x20   wire hit_{f} = (jdet_{f} & fl_tgt_{f} == 12'd2) | (bev_{f} & fl_run_{f} & fl_cnt_{f} == 12'd1);\n\
-                 \x20   wire [31:0] tickd_{f} = tick - 32'd4;\n\
-                 \x20   // Burst: bits left, the configured length and pattern, the generator (merkur_model::line::garbage), the level mask\n\
-                 \x20   // in force (bu_m from tick bu_t, bu_pm before), and the return of the level after the last bit.\n\
-                 \x20   reg [11:0] bu_len_{f} = 12'd0, bu_cfg_{f} = 12'd0;\n    reg [15:0] bu_s_{f} = 16'd0;\n    reg [1:0] bu_z_{f} = 2'd0;\n    reg [3:0] bu_o_{f} = 4'd0;\n\
-                 \x20   reg bu_m_{f} = 1'b0, bu_pm_{f} = 1'b0, bu_ret_{f} = 1'b0;\n    reg [31:0] bu_t_{f} = 32'hffffffff;\n\
-                 \x20   wire bu_start_{f} = hit_{f} & (bu_cfg_{f} != 12'd0);\n    wire bu_bit_{f} = bev_{f} & (bu_start_{f} | (bu_len_{f} != 12'd0));\n\
-                 \x20   wire bu_gr_{f} = (bu_z_{f} == 2'd2) ? 1'b1 : ((bu_o_{f} == 4'd9) ? 1'b0 : bu_s_{f}[0]);\n\
-                 \x20   wire bu_g_{f} = (bu_start_{f} | (bu_len_{f} == 12'd1)) ? 1'b1 : bu_gr_{f};\n\
-                 \x20   wire [15:0] bu_sn_{f} = bu_s_{f}[0] ? ({{1'b0, bu_s_{f}[15:1]}} ^ 16'hb400) : {{1'b0, bu_s_{f}[15:1]}};\n\
-                 \x20   wire inv_{f} = trk_{f} & (((tickd_{f} >= fl_is_{f}) & (tickd_{f} < fl_ie_{f})) ^ ((tickd_{f} >= bu_t_{f}) ? bu_m_{f} : bu_pm_{f}));\n\
-                 \x20   always @(posedge clk) begin\n        txd_{f} <= {{txd_{f}[2:0], txl_{f}}};\n\
-                 \x20       line_{f} <= (brk_{f} | dead_{src}) ? 1'b0 : (txd_{f}[3] ^ inv_{f});\n        sh_{f} <= {{line_{f}, sh_{f}[2:1]}};\n\
-                 \x20       if (trk_{f} & hs_{src}) begin\n            hp_{f} <= txl_{f};\n\
-                 \x20           if (edge_{f}) begin\n                hc_{f} <= 3'd0;\n                pend_{f} <= 1'b0;\n            end else if (pend_{f}) begin\n                hc_{f} <= 3'd1;\n                pend_{f} <= 1'b0;\n\
-                 \x20           end else begin\n                hc_{f} <= hn_{f};\n                if (hn_{f} == 3'd4) begin\n                    pend_{f} <= 1'b1;\n                    tc_{f} <= tick;\n                end\n            end\n        end\n\
-                 \x20       if (trk_{f} & bev_{f}) begin\n            ones_{f} <= b0_{f} ? 3'd0 : (ones_{f} == 3'd7 ? 3'd7 : ones_{f} + 3'd1);\n\
-                 \x20           if (jdet_{f}) begin\n                fl_arm_{f} <= 1'b0;\n                fl_run_{f} <= fl_tgt_{f} > 12'd2;\n                fl_cnt_{f} <= fl_tgt_{f} - 12'd2;\n\
-                 \x20           end else if (fl_run_{f}) begin\n                fl_cnt_{f} <= fl_cnt_{f} - 12'd1;\n                if (fl_cnt_{f} == 12'd1) fl_run_{f} <= 1'b0;\n            end\n\
-                 \x20           if (hit_{f} & (bu_cfg_{f} == 12'd0)) begin\n                fl_is_{f} <= bt_{f};\n                fl_ie_{f} <= 32'hffffffff;\n                fl_open_{f} <= 1'b1;\n            end else if (fl_open_{f}) begin\n                fl_ie_{f} <= bt_{f};\n                fl_open_{f} <= 1'b0;\n            end\n\
-                 \x20           if (bu_bit_{f}) begin\n                // A garbage bit from this boundary: the mask makes the line's code bit the garbage's.\n\
-                 \x20               bu_pm_{f} <= bu_m_{f};\n                bu_m_{f} <= (bu_start_{f} ? 1'b0 : bu_m_{f}) ^ b1_{f} ^ bu_g_{f};\n                bu_t_{f} <= bt_{f};\n                bu_s_{f} <= bu_sn_{f};\n\
-                 \x20               bu_z_{f} <= bu_g_{f} ? 2'd0 : bu_z_{f} + 2'd1;\n                bu_o_{f} <= bu_g_{f} ? bu_o_{f} + 4'd1 : 4'd0;\n\
-                 \x20               bu_len_{f} <= (bu_start_{f} ? bu_cfg_{f} : bu_len_{f}) - 12'd1;\n                bu_ret_{f} <= (bu_start_{f} ? bu_cfg_{f} : bu_len_{f}) == 12'd1;\n\
-                 \x20               if (bu_start_{f}) begin\n                    bu_z_{f} <= 2'd0;\n                    bu_o_{f} <= 4'd1;\n                    bu_cfg_{f} <= 12'd0;\n                end\n\
-                 \x20           end else if (bu_ret_{f}) begin\n                // After the last garbage bit the level is the sender's again.\n\
-                 \x20               bu_pm_{f} <= bu_m_{f};\n                bu_m_{f} <= 1'b0;\n                bu_t_{f} <= bt_{f};\n                bu_ret_{f} <= 1'b0;\n            end\n        end\n\
-                 \x20       // The fault point works only while a flip or burst is armed or running (trk); arming it starts the bit grid\n\
-                 \x20       // afresh from the line's level (an armed packet is always after an idle gap: edges every bit, ones enough).\n\
-                 \x20       trk_{f} <= trk_{f} & (fl_arm_{f} | fl_run_{f} | fl_open_{f} | (bu_len_{f} != 12'd0) | bu_ret_{f} | bu_m_{f} | (tickd_{f} < fl_ie_{f}) | (tickd_{f} < bu_t_{f}));\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_brk}) brk_{f} <= i_cfg_val[0];\n\
-                 \x20       if (i_cfg_we && i_cfg_sel == 16'd{f} && i_cfg_field == 8'd{c_flip}) begin\n            fl_arm_{f} <= 1'b1;\n            fl_run_{f} <= 1'b0;\n            fl_tgt_{f} <= i_cfg_val[11:0];\n\
-                 \x20           trk_{f} <= 1'b1;\n            hp_{f} <= txl_{f};\n            hc_{f} <= 3'd0;\n            pend_{f} <= 1'b0;\n            ones_{f} <= 3'd0;\n\
-                 \x20           bu_cfg_{f} <= i_cfg_val[23:12];\n            bu_s_{f} <= {{i_cfg_val[31:24], 8'ha5}};\n        end\n    end\n\
+                 \x20   // The line and its fault point (module `merkur_fibre` above).\n\
+                 \x20   merkur_fibre fib_{f}(.clk(clk), .i_tick(tick), .i_txl(txl_{f}), .i_hs(hs_{src}), .i_dead(dead_{src}),\n\
+                 \x20       .i_index(16'd{f}),\n\
+                 \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val), .o_line(line_{f}), .o_sh(sh_{f}));\n\
                  \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
                  \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                  \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff), .i_flush(1'b0),\n\
@@ -517,8 +633,6 @@ fn top(kinds: &[Kind], cap: usize) -> String {
                  \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
                  \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
                  \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
-                c_brk = cfg::BREAK,
-                c_flip = cfg::FLIP,
                 hz = if capw > 4 { format!("{}'d0, ", capw - 4) } else { String::new() },
                 last = 8 * cap - 1,
                 cb = capw - 4,

@@ -247,6 +247,15 @@ pub fn build_library_top(
     let version = verilator_version()?;
     let vlt = no_inline_config(verilog);
     let trace_flag = if traced { "--trace-fst" } else { "" };
+    // With node modules kept apart (a ring top): Verilator's table
+    // optimisation turns a case statement into a lookup table per instance,
+    // with a name of its own (`__Vtableidx<n>`), so the instances' functions
+    // would differ and not be merged ([`no_inline_config`]).
+    let shared_flag = if vlt.contains("no_inline") {
+        "-fno-table"
+    } else {
+        ""
+    };
     let mut h = Sha256::new();
     for part in [
         verilog,
@@ -256,6 +265,7 @@ pub fn build_library_top(
         &CXXFLAGS.join(" "),
         &vlt,
         trace_flag,
+        shared_flag,
     ] {
         h.update(part.as_bytes());
         h.update([0]);
@@ -289,6 +299,7 @@ pub fn build_library_top(
         Command::new("verilator")
             .args(VFLAGS)
             .args(traced.then_some("--trace-fst"))
+            .args((!shared_flag.is_empty()).then_some(shared_flag))
             .arg("build.vlt")
             .arg("top.v")
             .args(["-Mdir", "obj"])
@@ -326,11 +337,32 @@ pub fn build_library_top(
     Ok((lib, ports))
 }
 
-/// Verilator configuration for the build: every `merkur_*` node module of
-/// a ring top (instantiated many times) stays a module of its own instead of
-/// being inlined into the top, so the generated C++ grows with the number of
-/// node kinds rather than the number of nodes. Rust-hdl's small leaf modules
-/// are still inlined into their node. No rules for single blocks.
+/// Inputs that every instance of a kept-apart module takes from the same
+/// signal of the ring top (the simulation tick count and the harness's
+/// configuration write). Verilator may put that signal in their place: the
+/// code stays the same for every instance, and no copy into each instance
+/// is made at every evaluation (with 200 fibres, those copies cost more than
+/// the fibres' own logic).
+const SHARED_INPUTS: &[&str] = &[
+    "i_tick",
+    "i_cfg_we",
+    "i_cfg_sel",
+    "i_cfg_field",
+    "i_cfg_val",
+];
+
+/// Verilator configuration for the build: every `merkur_*` module of a ring
+/// top (the nodes, fibres and monitors, instantiated many times) stays a
+/// module of its own instead of being inlined into the top, and each of its
+/// inputs (`i_*`, but the [`SHARED_INPUTS`]) stays a variable of the module
+/// (`public_flat_rd`) instead of being replaced, in each instance's code, by
+/// the ring top's signal or constant that drives it. Together with
+/// `-fno-table` ([`build_library_top`]) every instance of a module then runs
+/// one copy of the module's functions, so the generated C++ grows with the
+/// number of node kinds rather than the number of nodes (ring100: 17 MB of
+/// C++ instead of 63 MB with a copy per instance, docs/benchmarks.md).
+/// Rust-hdl's small leaf modules are still inlined into their node. No rules
+/// for single blocks.
 fn no_inline_config(verilog: &str) -> String {
     let mut v = String::from("`verilator_config\n");
     for line in verilog.lines() {
@@ -341,8 +373,23 @@ fn no_inline_config(verilog: &str) -> String {
                 .collect();
             // `merkur_x__y` are the node's own submodules (rtl/src/readable.rs
             // names a child block `parent__child`): leave them inlined.
-            if !name.contains("__") {
-                v.push_str(&format!("no_inline -module \"merkur_{name}\"\n"));
+            if name.contains("__") {
+                continue;
+            }
+            let module = format!("merkur_{name}");
+            v.push_str(&format!("no_inline -module \"{module}\"\n"));
+            // (A module whose ports the binding cannot read gets no rules:
+            // its build is larger and slower, not different.)
+            for p in parse_ports(verilog, &module).unwrap_or_default() {
+                if p.dir == Dir::In
+                    && p.name.starts_with("i_")
+                    && !SHARED_INPUTS.contains(&p.name.as_str())
+                {
+                    v.push_str(&format!(
+                        "public_flat_rd -module \"{module}\" -var \"{}\"\n",
+                        p.name
+                    ));
+                }
             }
         }
     }
@@ -676,5 +723,28 @@ impl Drop for Model {
     fn drop(&mut self) {
         // SAFETY: the handle is live and dropped once.
         unsafe { (self.del)(self.h) }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::no_inline_config;
+
+    /// A kept-apart module's own inputs become `public_flat_rd`, the shared
+    /// ones and the clock do not; a node's submodules and other modules get
+    /// no rules.
+    #[test]
+    fn the_build_configuration_keeps_instances_alike() {
+        let v = "module merkur_fibre(clk, i_tick, i_txl, i_cfg_val, o_line);\n\
+                 \x20   input wire clk;\n    input wire [31:0] i_tick;\n    input wire i_txl;\n\
+                 \x20   input wire [31:0] i_cfg_val;\n    output reg o_line;\nendmodule\n\
+                 module merkur_slave__sbox(i_mode, o_x);\n    input wire i_mode;\n    output wire o_x;\nendmodule\n\
+                 module top(i_a, o_b);\n    input wire i_a;\n    output wire o_b;\nendmodule\n";
+        assert_eq!(
+            no_inline_config(v),
+            "`verilator_config\n\
+             no_inline -module \"merkur_fibre\"\n\
+             public_flat_rd -module \"merkur_fibre\" -var \"i_txl\"\n"
+        );
     }
 }
