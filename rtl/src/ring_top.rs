@@ -46,7 +46,7 @@
 //! the line carries the model's garbage for a number of bits, made by the
 //! same generator, the level inverted where the garbage's code bit differs
 //! from the sender's; the line and its fault point are one module per fibre,
-//! `merkur_fibre`, [`FIBRE_MODULE`], so that a simulator runs one copy of
+//! `merkur_fibre` (`FIBRE_MODULE` below), so that a simulator runs one copy of
 //! their code for every fibre) and a **monitor** (clock recovery,
 //! framer, word decoder at the nominal rate) whose DATA words are captured
 //! per cycle: entry `(cyc & 3) · CAP + slot` holds `{EPOCH[7:0], CYC[2:0],

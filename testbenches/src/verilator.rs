@@ -341,8 +341,8 @@ pub fn build_library_top(
 /// signal of the ring top (the simulation tick count and the harness's
 /// configuration write). Verilator may put that signal in their place: the
 /// code stays the same for every instance, and no copy into each instance
-/// is made at every evaluation (with 200 fibres, those copies cost more than
-/// the fibres' own logic).
+/// is made at every evaluation (with ring100's 200 fibres those copies took
+/// about as long as the fibres' own logic, `perf`).
 const SHARED_INPUTS: &[&str] = &[
     "i_tick",
     "i_cfg_we",
