@@ -5,7 +5,7 @@
 //! waveform in the output directory.
 
 use merkur_rtl::formal::{proofs, Proof};
-use merkur_testbenches::formal::{run as run_proof, table, Tools};
+use merkur_testbenches::formal::{run_all, table, Tools};
 use std::path::Path;
 
 /// Runs the proofs named in `only` (all when empty) in `dir`; `Ok(false)`
@@ -34,11 +34,11 @@ pub fn run(only: &[String], dir: &Path, list: bool) -> Result<bool, String> {
     let tools = Tools::find(None)?;
     std::fs::create_dir_all(dir)
         .map_err(|e| format!("error: cannot create {}: {e}", dir.display()))?;
-    let mut results = vec![];
-    for p in chosen {
-        eprintln!("proving {} ({})", p.name, p.what);
-        results.push(run_proof(p, dir, &tools)?);
-    }
+    // As many proofs at a time as the machine has cores.
+    let jobs = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let results = run_all(&chosen, dir, &tools, jobs, &|p| {
+        eprintln!("proving {} ({})", p.name, p.what)
+    })?;
     print!("{}", table(&results));
     let ok = results.iter().all(|r| r.passed());
     if !ok {

@@ -3,7 +3,7 @@
 //! property fails with a counterexample waveform.
 
 use merkur_rtl::formal::{proofs, Proof};
-use merkur_testbenches::formal::{run, table, Status, Tools};
+use merkur_testbenches::formal::{run, run_all, table, Status, Tools};
 use std::path::PathBuf;
 
 fn out_dir(name: &str) -> PathBuf {
@@ -18,26 +18,11 @@ fn out_dir(name: &str) -> PathBuf {
 fn every_proof_holds() {
     let tools = Tools::for_tests().unwrap();
     let dir = out_dir("all");
-    tools.warm_up().unwrap();
     let ps = proofs();
-    // Two at a time (the machine has two cores; one SymbiYosys task each).
-    let results: Vec<_> = std::thread::scope(|s| {
-        let chunks: Vec<Vec<&Proof>> = (0..2)
-            .map(|k| ps.iter().skip(k).step_by(2).collect())
-            .collect();
-        let hs: Vec<_> = chunks
-            .into_iter()
-            .map(|c| {
-                let (tools, dir) = (&tools, &dir);
-                s.spawn(move || {
-                    c.into_iter()
-                        .map(|p| run(p, dir, tools).unwrap())
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        hs.into_iter().flat_map(|h| h.join().unwrap()).collect()
-    });
+    // Two at a time (the machine has two cores), each worker taking the next
+    // proof as it finishes one.
+    let refs: Vec<&Proof> = ps.iter().collect();
+    let results = run_all(&refs, &dir, &tools, 2, &|_| {}).unwrap();
     let t = table(&results);
     eprintln!("{t}");
     assert!(results.iter().all(|r| r.passed()), "a proof failed:\n{t}");
