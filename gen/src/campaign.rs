@@ -1146,36 +1146,30 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
             );
         }
     }
-    let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
-    let results: Mutex<Vec<CaseResult>> = Mutex::new(vec![]);
+    let failed = AtomicUsize::new(0);
+    let printing = Mutex::new(());
     let t0 = Instant::now();
-    std::thread::scope(|s| {
-        for _ in 0..plan.jobs.max(1) {
-            s.spawn(|| loop {
-                let i = next.fetch_add(1, Ordering::SeqCst);
-                let Some(case) = mine.get(i) else { break };
-                let r = run_case(case, plan.wave.as_deref(), plan.model_only);
-                let bad = r.mismatches > 0;
-                let d = done.fetch_add(1, Ordering::SeqCst) + 1;
-                let mut all = results.lock().unwrap_or_else(|e| e.into_inner());
-                all.push(r);
-                let failed = all.iter().filter(|x| x.mismatches > 0).count();
-                progress(d, mine.len(), failed, t0.elapsed().as_secs_f64());
-                if bad {
-                    eprintln!(
-                        "\nMISMATCH {} (seed {}, offsets ppm {}): {}",
-                        case.name,
-                        case.seed,
-                        offsets(&case.cfg),
-                        all.last().map(|x| x.first.join("; ")).unwrap_or_default()
-                    );
-                }
-            });
+    let mut cases = merkur_testbenches::jobs::run(&mine, plan.jobs, |case| {
+        let r = run_case(case, plan.wave.as_deref(), plan.model_only);
+        // One lock for the progress line, so that two workers' lines do not mix.
+        let _line = printing.lock().unwrap_or_else(|e| e.into_inner());
+        let d = done.fetch_add(1, Ordering::SeqCst) + 1;
+        let bad = r.mismatches > 0;
+        let f = failed.fetch_add(usize::from(bad), Ordering::SeqCst) + usize::from(bad);
+        progress(d, mine.len(), f, t0.elapsed().as_secs_f64());
+        if bad {
+            eprintln!(
+                "\nMISMATCH {} (seed {}, offsets ppm {}): {}",
+                case.name,
+                case.seed,
+                offsets(&case.cfg),
+                r.first.join("; ")
+            );
         }
-    });
+        Ok(r)
+    })?;
     eprintln!();
-    let mut cases = results.into_inner().unwrap_or_else(|e| e.into_inner());
     cases.sort_by(|a, b| a.name.cmp(&b.name));
     Ok(Report {
         commands: vec![command],

@@ -213,6 +213,10 @@ enum Cmd {
         /// placed freely; the counters are left out). Boards need it on.
         #[arg(long, default_value = "on", value_parser = ["on", "off"], value_name = "ON|OFF")]
         diag: String,
+        /// Nodes built at a time (default: the machine's cores; each node's tools run one
+        /// after the other in its own folder).
+        #[arg(long, value_name = "N")]
+        jobs: Option<usize>,
     },
     /// Run the built-in 8-node ring with one line break through the model (explained cycle
     /// by cycle) and through the RTL in Verilator, and show that they agree.
@@ -567,6 +571,7 @@ fn main() -> ExitCode {
             speed,
             board,
             diag,
+            jobs,
         } => {
             let o = synth::Opts {
                 target,
@@ -579,6 +584,7 @@ fn main() -> ExitCode {
                 speed: *speed,
                 board: board.as_deref(),
                 diag: diag == "on",
+                jobs: *jobs,
             };
             match synth::run(scenario, &o) {
                 Ok(true) => Ok(()),

@@ -214,8 +214,9 @@ pub fn run(p: &Proof, dir: &Path, tools: &Tools) -> Result<ProofResult, String> 
 /// is bounded because induction was out of reach, and those are the long
 /// ones: `retime` and `mdb`, minutes each, docs/benchmarks.md), so that the
 /// short ones fill the time beside them instead of the long ones running
-/// alone at the end. The results come in the order of `proofs`; the first
-/// error stops the workers' next takes and is returned. `on_start` is called
+/// alone at the end (one queue, [`crate::jobs::run`]). The results come in
+/// the order of `proofs`; the first error stops the workers' next takes and
+/// is returned. `on_start` is called
 /// as each proof starts (for progress).
 pub fn run_all(
     proofs: &[&Proof],
@@ -224,38 +225,15 @@ pub fn run_all(
     jobs: usize,
     on_start: &(dyn Fn(&Proof) + Sync),
 ) -> Result<Vec<ProofResult>, String> {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    use std::sync::Mutex;
     tools.warm_up()?;
     let mut order: Vec<usize> = (0..proofs.len()).collect();
     order.sort_by_key(|&i| !proofs[i].tasks.iter().any(|t| t.mode == Mode::Bmc));
-    let next = AtomicUsize::new(0);
-    let results: Mutex<Vec<Option<Result<ProofResult, String>>>> =
-        Mutex::new(vec![None; proofs.len()]);
-    let failed = std::sync::atomic::AtomicBool::new(false);
-    std::thread::scope(|s| {
-        for _ in 0..jobs.clamp(1, proofs.len().max(1)) {
-            s.spawn(|| loop {
-                let k = next.fetch_add(1, Ordering::Relaxed);
-                if k >= proofs.len() || failed.load(Ordering::Relaxed) {
-                    break;
-                }
-                let i = order[k];
-                on_start(proofs[i]);
-                let r = run(proofs[i], dir, tools);
-                if r.is_err() {
-                    failed.store(true, Ordering::Relaxed);
-                }
-                results.lock().unwrap_or_else(|e| e.into_inner())[i] = Some(r);
-            });
-        }
-    });
-    let results = results.into_inner().unwrap_or_else(|e| e.into_inner());
-    let mut out = Vec::with_capacity(results.len());
-    for r in results.into_iter().flatten() {
-        out.push(r?);
-    }
-    Ok(out)
+    let mut out = crate::jobs::run(&order, jobs, |&i| {
+        on_start(proofs[i]);
+        run(proofs[i], dir, tools).map(|r| (i, r))
+    })?;
+    out.sort_by_key(|(i, _)| *i);
+    Ok(out.into_iter().map(|(_, r)| r).collect())
 }
 
 /// `boolector` for yosys-smtbmc, which calls the solver by that name.

@@ -2,6 +2,8 @@
 //!
 //! - [`verilator`]: our Verilator binding (build at run time, cache by hash,
 //!   load, drive ports from Rust, FST waveforms with `MERKUR_WAVE`);
+//! - [`jobs`]: the one work queue for jobs run side by side (model
+//!   objects, proofs, campaign cases, the block tests' tool runs);
 //! - [`stim`]: line stimulus from the model's frames, reading monitors back;
 //! - line sampling with clock offsets and jitter ([`line_samples`]), seeded
 //!   random numbers ([`Rng`]), the pinned tool list ([`pinned_tools`]).
@@ -60,6 +62,7 @@ pub fn pinned_tools() -> Result<Vec<PinnedTool>, String> {
 
 pub mod dcm_sim;
 pub mod formal;
+pub mod jobs;
 pub mod ring_sim;
 pub mod stim;
 pub mod verilator;

@@ -414,33 +414,16 @@ fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> R
             .arg("-Iobj")
             .current_dir(dir);
     };
-    let jobs = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let failed: Mutex<Option<String>> = Mutex::new(None);
     let objs: Vec<PathBuf> = (0..srcs.len())
         .map(|i| dir.join(format!("o{i}.o")))
         .collect();
-    std::thread::scope(|s| {
-        for _ in 0..jobs {
-            s.spawn(|| loop {
-                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                if i >= srcs.len() || failed.lock().map_or(true, |f| f.is_some()) {
-                    break;
-                }
-                let mut c = Command::new("g++");
-                flags(&mut c);
-                c.arg("-c").arg(&srcs[i]).arg("-o").arg(&objs[i]);
-                if let Err(e) = run(&mut c, "g++ (Verilated model)") {
-                    if let Ok(mut f) = failed.lock() {
-                        f.get_or_insert(e);
-                    }
-                }
-            });
-        }
-    });
-    if let Some(e) = failed.into_inner().unwrap_or_else(|e| e.into_inner()) {
-        return Err(e);
-    }
+    let pairs: Vec<(&PathBuf, &PathBuf)> = srcs.iter().zip(&objs).collect();
+    crate::jobs::run(&pairs, crate::jobs::cores(), |(src, obj)| {
+        let mut c = Command::new("g++");
+        flags(&mut c);
+        c.arg("-c").arg(src).arg("-o").arg(obj);
+        run(&mut c, "g++ (Verilated model)")
+    })?;
     run(
         Command::new("g++")
             .args(["-shared", "-fPIC"])

@@ -4,6 +4,7 @@
 //! asserted here).
 
 use merkur_rtl::verilog::{all_blocks, WAIVERS};
+use merkur_testbenches::jobs;
 use merkur_testbenches::verilator::lint;
 use std::process::Command;
 
@@ -13,19 +14,28 @@ fn scratch() -> std::path::PathBuf {
     d
 }
 
+/// The blocks, the largest first (they are last in `all_blocks`), so that
+/// the small ones fill the time beside them in the work queue.
+fn blocks_largest_first() -> Vec<(&'static str, String)> {
+    let mut b = all_blocks();
+    b.reverse();
+    b
+}
+
 #[test]
 fn every_block_is_lint_clean() {
     let d = scratch();
     let waivers = d.join("waivers.vlt");
     std::fs::write(&waivers, WAIVERS).unwrap();
-    let mut failed = vec![];
-    for (name, v) in all_blocks() {
+    let results = jobs::run(&blocks_largest_first(), jobs::cores(), |(name, v)| {
         let f = d.join(format!("{name}.v"));
-        std::fs::write(&f, &v).unwrap();
-        if let Err(err) = lint(&[&waivers, &f], "top") {
-            failed.push(format!("{name}: lint:\n{err}"));
-        }
-    }
+        std::fs::write(&f, v).map_err(|e| format!("{name}: {e}"))?;
+        Ok(lint(&[&waivers, &f], "top")
+            .err()
+            .map(|err| format!("{name}: lint:\n{err}")))
+    })
+    .unwrap();
+    let failed: Vec<String> = results.into_iter().flatten().collect();
     assert!(failed.is_empty(), "{}", failed.join("\n"));
 }
 
@@ -33,9 +43,13 @@ fn every_block_is_lint_clean() {
 fn every_block_synthesizes_for_ice40() {
     let d = scratch();
     // chain8 is a test top (eight slaves), not a block anyone synthesizes.
-    for (name, v) in all_blocks().into_iter().filter(|(n, _)| *n != "chain8") {
+    let blocks: Vec<_> = blocks_largest_first()
+        .into_iter()
+        .filter(|(n, _)| *n != "chain8")
+        .collect();
+    let cells = jobs::run(&blocks, jobs::cores(), |(name, v)| {
         let f = d.join(format!("{name}_synth.v"));
-        std::fs::write(&f, &v).unwrap();
+        std::fs::write(&f, v).map_err(|e| format!("{name}: {e}"))?;
         let o = Command::new("yosys")
             .arg("-p")
             .arg(format!(
@@ -43,21 +57,28 @@ fn every_block_synthesizes_for_ice40() {
                 f.display()
             ))
             .output()
-            .expect("yosys runs");
+            .map_err(|e| format!("{name}: cannot run yosys: {e}"))?;
         let out = String::from_utf8_lossy(&o.stdout);
-        assert!(
-            o.status.success(),
-            "{name}: yosys failed:\n{out}\n{}",
-            String::from_utf8_lossy(&o.stderr)
-        );
+        if !o.status.success() {
+            return Err(format!(
+                "{name}: yosys failed:\n{out}\n{}",
+                String::from_utf8_lossy(&o.stderr)
+            ));
+        }
         let cells = out
             .lines()
             .rev()
             .find_map(|l| l.trim().strip_prefix("Number of cells:"))
             .map(|n| n.trim().to_string())
-            .expect("stat printed a cell count");
-        assert_ne!(cells, "0", "{name}: synthesized to nothing");
-        println!("{name}: {cells} iCE40 cells");
+            .ok_or(format!("{name}: stat printed no cell count"))?;
+        if cells == "0" {
+            return Err(format!("{name}: synthesized to nothing"));
+        }
+        Ok(format!("{name}: {cells} iCE40 cells"))
+    })
+    .unwrap_or_else(|e| panic!("{e}"));
+    for c in cells {
+        println!("{c}");
     }
 }
 

@@ -220,6 +220,8 @@ pub struct Opts<'a> {
     pub board: Option<&'a str>,
     /// `--diag` (on: the diagnostic mux and the counters behind it).
     pub diag: bool,
+    /// `--jobs`: nodes built at a time (`None`: the machine's cores).
+    pub jobs: Option<usize>,
 }
 
 /// Boards a slave can be built for, per FPGA target (`--board`).
@@ -720,6 +722,11 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         }
     };
     let clock = 2.0 * rate;
+    let jobs = match o.jobs {
+        Some(0) => return Err("error: --jobs 0: at least one node must be built at a time".into()),
+        Some(n) => n,
+        None => merkur_testbenches::jobs::cores(),
+    };
     let board = board_of(o.target, o.board, o.diag)?;
     let (flow, fpga) = fpga_of(o, board.as_ref())?;
     let nodes = pick_nodes(&cfg, o.nodes, o.target)?;
@@ -768,75 +775,39 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
     std::fs::create_dir_all(&out)
         .map_err(|e| format!("error: --output {}: cannot create: {e}", out.display()))?;
     let seeds: Vec<u64> = (0..o.seeds).map(|i| o.seed + i).collect();
-    let mut results = vec![];
-    // Every node is built in a scratch folder; they move into place
-    // together when all are built, so a refused or failed node leaves
-    // nothing of the run behind.
-    let mut built: Vec<(PathBuf, PathBuf)> = vec![];
-    let drop_built = |built: &[(PathBuf, PathBuf)]| {
-        for (tmp, _) in built {
-            let _ = std::fs::remove_dir_all(tmp);
-        }
-        if !out_existed {
-            let _ = std::fs::remove_dir(&out);
+    let job = NodeJob {
+        out: &out,
+        cfg: &cfg,
+        target: o.target,
+        fpga: fpga.as_ref(),
+        board: board.as_ref(),
+        flow,
+        clock,
+        seeds: &seeds,
+    };
+    // Every node is built in a scratch folder of its own, side by side;
+    // they move into place together when all are built, so a refused or
+    // failed node leaves nothing of the run behind but its kept logs.
+    let items: Vec<(usize, &NodeStatic)> = nodes.iter().copied().zip(&statics).collect();
+    let built = match merkur_testbenches::jobs::run(&items, jobs, |&(k, st)| job.build(k, st)) {
+        Ok(b) => b,
+        Err(e) => {
+            for &(k, _) in &items {
+                let _ = std::fs::remove_dir_all(job.scratch(k));
+            }
+            if !out_existed {
+                // Only when empty: a failed node's logs stay.
+                let _ = std::fs::remove_dir(&out);
+            }
+            return Err(e);
         }
     };
-    for (&k, st) in nodes.iter().zip(&statics) {
-        let nd = &cfg.nodes[k];
-        let label = format!("node{k}-{}", kind_label(nd.kind));
-        // Built in a scratch folder and moved into place when complete.
-        let tmp = out.join(format!(".{label}.{}.tmp", std::process::id()));
-        let _ = std::fs::remove_dir_all(&tmp);
-        std::fs::create_dir_all(&tmp)
-            .map_err(|e| format!("error: cannot create {}: {e}", tmp.display()))?;
-        let mut r = NodeResult {
-            node: k,
-            kind: nd.kind.name().to_string(),
-            ..Default::default()
-        };
-        eprintln!("synth {}: node {k} ({}) …", o.target, r.kind);
-        let res = match o.target {
-            _ if fpga.is_some() => {
-                let f = fpga.as_ref().expect("checked");
-                let slave = matches!(st.kind, Kind::Sensor | Kind::Actuator);
-                let b = board.as_ref().filter(|_| slave);
-                fpga::build(&tmp, st, f, b, flow, clock, &seeds, &mut r)
-            }
-            t if cpld(t).is_some() => {
-                let c = cpld(t).expect("matched");
-                xc2c(&tmp, st, &c, &mut r)
-            }
-            "xc6s" => xc6s(&tmp, st, &mut r),
-            _ => xem(&tmp, st, &mut r),
-        };
-        if res.is_ok() && r.status == "does not fit" {
-            // The device cannot hold the node: refused, nothing left behind
-            // (the folder too, when this run made it).
-            let _ = std::fs::remove_dir_all(&tmp);
-            drop_built(&built);
-            return Err(format!(
-                "error: node {k} ({}) does not fit the {}: {}",
-                r.kind,
-                device_name(o.target, fpga.as_ref()),
-                r.reason
-            ));
-        }
-        if let Err(e) = res {
-            let keep = out.join(format!("{label}.failed"));
-            let _ = std::fs::remove_dir_all(&keep);
-            let _ = std::fs::rename(&tmp, &keep);
-            drop_built(&built);
-            return Err(format!("{e}\n(tool logs kept in {})", keep.display()));
-        }
-        built.push((tmp, out.join(&label)));
-        r.artifacts = r.artifacts.iter().map(|a| format!("{label}/{a}")).collect();
-        eprintln!("  {}{}", r.status, summary(&r));
-        results.push(r);
-    }
-    for (tmp, dest) in &built {
+    let mut results = vec![];
+    for (tmp, dest, r) in &built {
         let _ = std::fs::remove_dir_all(dest);
         std::fs::rename(tmp, dest)
             .map_err(|e| format!("error: cannot move {} into place: {e}", dest.display()))?;
+        results.push(r.clone());
     }
     let report = Report {
         command: std::iter::once("merkur".to_string())
@@ -855,6 +826,81 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
     // A node that misses timing fails the run (exit status 1); one that
     // does not fit was refused above (2).
     Ok(report.nodes.iter().all(|r| r.status != "timing failed"))
+}
+
+/// What every node of a run is built with.
+struct NodeJob<'a> {
+    out: &'a Path,
+    cfg: &'a Config,
+    target: &'a str,
+    fpga: Option<&'a fpga::Fpga>,
+    board: Option<&'a boards::Board>,
+    flow: fpga::Flow,
+    clock: f64,
+    seeds: &'a [u64],
+}
+
+impl NodeJob<'_> {
+    /// Node `k`'s folder in the output (`node<k>-<kind>`).
+    fn label(&self, k: usize) -> String {
+        format!("node{k}-{}", kind_label(self.cfg.nodes[k].kind))
+    }
+
+    /// Node `k`'s scratch folder, moved into place when every node is built.
+    fn scratch(&self, k: usize) -> PathBuf {
+        self.out
+            .join(format!(".{}.{}.tmp", self.label(k), std::process::id()))
+    }
+
+    /// Builds node `k` in its scratch folder: `(scratch, destination,
+    /// result)`. A node the device cannot hold is refused (its folder
+    /// removed); a failed tool keeps its folder as `<label>.failed`.
+    fn build(&self, k: usize, st: &NodeStatic) -> Result<(PathBuf, PathBuf, NodeResult), String> {
+        let label = self.label(k);
+        let tmp = self.scratch(k);
+        let _ = std::fs::remove_dir_all(&tmp);
+        std::fs::create_dir_all(&tmp)
+            .map_err(|e| format!("error: cannot create {}: {e}", tmp.display()))?;
+        let mut r = NodeResult {
+            node: k,
+            kind: st.kind.name().to_string(),
+            ..Default::default()
+        };
+        eprintln!("synth {}: node {k} ({}) …", self.target, r.kind);
+        let res = match self.target {
+            _ if self.fpga.is_some() => {
+                let f = self.fpga.expect("checked");
+                let slave = matches!(st.kind, Kind::Sensor | Kind::Actuator);
+                let b = self.board.filter(|_| slave);
+                fpga::build(&tmp, st, f, b, self.flow, self.clock, self.seeds, &mut r)
+            }
+            t if cpld(t).is_some() => {
+                let c = cpld(t).expect("matched");
+                xc2c(&tmp, st, &c, &mut r)
+            }
+            "xc6s" => xc6s(&tmp, st, &mut r),
+            _ => xem(&tmp, st, &mut r),
+        };
+        if res.is_ok() && r.status == "does not fit" {
+            // The device cannot hold the node: refused, nothing left behind.
+            let _ = std::fs::remove_dir_all(&tmp);
+            return Err(format!(
+                "error: node {k} ({}) does not fit the {}: {}",
+                r.kind,
+                device_name(self.target, self.fpga),
+                r.reason
+            ));
+        }
+        if let Err(e) = res {
+            let keep = self.out.join(format!("{label}.failed"));
+            let _ = std::fs::remove_dir_all(&keep);
+            let _ = std::fs::rename(&tmp, &keep);
+            return Err(format!("{e}\n(tool logs kept in {})", keep.display()));
+        }
+        r.artifacts = r.artifacts.iter().map(|a| format!("{label}/{a}")).collect();
+        eprintln!("  node {k}: {}{}", r.status, summary(&r));
+        Ok((tmp, self.out.join(&label), r))
+    }
 }
 
 /// Writes `synth.json` and `synth.md` into `out`.
