@@ -20,7 +20,9 @@
 //! glitch); the accumulator's start value is the node's random phase. So
 //! every node has its scenario's frequency offset and its own phase, with one
 //! evaluation per tick. In synthesis the node's clock is its oscillator; this
-//! gate exists only here.
+//! gate exists only here. The clock, the node's registered inputs and the
+//! counters of its interrupt pulses are one module per node,
+//! `merkur_node_env` (`NODE_ENV_MODULE` below).
 //!
 //! **Fibres.** Fibre P*k* (node k PO → node k+1 PI) and S*k* (node k+1 SO →
 //! node k SI) are line levels at tick resolution: the sender's DDR pair
@@ -61,7 +63,7 @@
 //!
 //! | port | dir | width | meaning |
 //! |---|---|---|---|
-//! | `clk` | in | 1 | simulation tick (4 per nominal bit time) |
+//! | `clk` | in | 1 | simulation tick (8 per nominal bit time) |
 //! | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | configuration write (table below) |
 //! | `i_rd_en`, `i_rd_sel`, `i_rd_field` | in | 1, 16, 8 | status read enable and address |
 //! | `o_rd` | out | 32 | status read data (combinational; 0 while `i_rd_en` is low) |
@@ -352,6 +354,127 @@ module merkur_fibre(clk, i_tick, i_txl, i_hs, i_dead, i_index, i_cfg_we, i_cfg_s
 endmodule
 "#;
 
+/// The node surroundings module of the ring top (`@INC@`, `@PHASE@`,
+/// `@KILL@`, `@ADDRESS@`, `@REQUEST@` and `@SENSOR@` stand for the
+/// configuration fields of [`cfg`]).
+const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated ring gives one node (rtl/src/ring_top.rs) ----
+// The node's clock (a 32-bit accumulator adds the configured increment every tick; its carry, latched on the
+// falling edge, gates the next tick: glitch-free), its DDR output's half on the line, its death, and every input
+// registered on its own clock as a synthesis top does (the sample windows, address, slot count, CS timeout,
+// period, sensor value, user requests), plus counters of its interrupt pulses. One module for every node, so
+// that a simulator runs one copy of its code for all of them (docs/benchmarks.md, issue 24).
+//
+// | port | dir | width | meaning |
+// |---|---|---|---|
+// | `clk` | in | 1 | simulation tick |
+// | `i_index` | in | 16 | the node's index (constant) |
+// | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | the ring top's configuration write; this node's when `i_cfg_sel` = `i_index` (fields INC, PHASE, KILL, ADDRESS, REQUEST, SENSOR) |
+// | `i_incyc`, `i_innew` | in | 3, 1 | CYC of the last DATA frame on the fibre that brings the node its frames, and its end (one monitor clock) |
+// | `i_pi`, `i_si` | in | 4, 4 | the PI and SI fibres' last 4 line levels (oldest in bit 0) |
+// | `i_slots_m1`, `i_cs_timeout`, `i_period` | in | 12, 20, 20 | the ring's configuration |
+// | `i_irq` | in | 5 | the node's interrupt pulses `{fs change, reconfig, failsafe, irq2, irq1}` |
+// | `o_nclk` | out | 1 | the node's clock |
+// | `o_hs` | out | 1 | a new half of the node's DDR output pair starts on the line this tick |
+// | `o_first` | out | 1 | the line carries the first half (bit 0) of the node's DDR pair |
+// | `o_dead` | out | 1 | the node is dead (its output fibres dark) |
+// | `o_pi` … `o_period` | out | | the inputs above and the node's address, user request `{fs, irq2, irq1}` and sensor value (chosen by `i_incyc`), registered on `o_nclk` |
+// | `o_nirq1`, `o_nirq2`, `o_nirqfs`, `o_nirqrc`, `o_nirqfsc` | out | 16 each | interrupt pulses counted |
+module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_incyc, i_innew, i_pi, i_si,
+    i_slots_m1, i_cs_timeout, i_period, i_irq, o_nclk, o_hs, o_first, o_dead, o_pi, o_si, o_addr, o_slots_m1,
+    o_cs_timeout, o_period, o_ureq, o_sens, o_nirq1, o_nirq2, o_nirqfs, o_nirqrc, o_nirqfsc);
+    input wire clk;
+    input wire [15:0] i_index;
+    input wire i_cfg_we;
+    input wire [15:0] i_cfg_sel;
+    input wire [7:0] i_cfg_field;
+    input wire [31:0] i_cfg_val;
+    input wire [2:0] i_incyc;
+    input wire i_innew;
+    input wire [3:0] i_pi;
+    input wire [3:0] i_si;
+    input wire [11:0] i_slots_m1;
+    input wire [19:0] i_cs_timeout;
+    input wire [19:0] i_period;
+    input wire [4:0] i_irq;
+    output wire o_nclk;
+    output wire o_hs;
+    output wire o_first;
+    output reg o_dead = 1'b0;
+    output reg [3:0] o_pi = 4'd0;
+    output reg [3:0] o_si = 4'd0;
+    output reg [11:0] o_addr = 12'd0;
+    output reg [11:0] o_slots_m1 = 12'd0;
+    output reg [19:0] o_cs_timeout = 20'd0;
+    output reg [19:0] o_period = 20'd0;
+    output reg [2:0] o_ureq = 3'd0;
+    output reg [15:0] o_sens = 16'd0;
+    output reg [15:0] o_nirq1 = 16'd0;
+    output reg [15:0] o_nirq2 = 16'd0;
+    output reg [15:0] o_nirqfs = 16'd0;
+    output reg [15:0] o_nirqrc = 16'd0;
+    output reg [15:0] o_nirqfsc = 16'd0;
+    wire mine = i_cfg_we && i_cfg_sel == i_index;
+    reg [31:0] inc = 32'h40000000;
+    reg [31:0] acc = 32'd0;
+    reg en = 1'b0;
+    reg enl = 1'b0;
+    reg fired = 1'b0, fired2 = 1'b0, selp = 1'b0;
+    assign o_hs = fired | (selp & !fired2);
+    assign o_first = fired | fired2;
+    always @(posedge clk) begin
+        {en, acc} <= {1'b0, acc} + {1'b0, inc};
+        fired <= enl;
+        fired2 <= fired;
+        selp <= fired | fired2;
+        if (mine && i_cfg_field == 8'd@INC@) inc <= i_cfg_val;
+        if (mine && i_cfg_field == 8'd@PHASE@) acc <= i_cfg_val;
+        if (mine && i_cfg_field == 8'd@KILL@) o_dead <= i_cfg_val[0];
+    end
+    always @(negedge clk) enl <= en;
+    assign o_nclk = clk & enl;
+    // A user request is raised at once (`now`) or when the frame with its CYC has ended on the node's input fibre.
+    reg [11:0] addr = 12'd0;
+    reg [7:0] req = 8'd0;
+    reg [3:0] reqhold = 4'd0;
+    reg [2:0] reqbits = 3'd0;
+    always @(posedge clk) begin
+        if (mine && i_cfg_field == 8'd@ADDRESS@) addr <= i_cfg_val[11:0];
+        if (reqhold != 4'd0) reqhold <= reqhold - 4'd1;
+        if (req[6] && (req[7] || (i_innew && i_incyc == req[5:3]))) begin
+            reqbits <= req[2:0];
+            reqhold <= 4'd8;
+            req[6] <= 1'b0;
+        end
+        if (mine && i_cfg_field == 8'd@REQUEST@) req <= i_cfg_val[7:0];
+    end
+    wire [2:0] ureq = (reqhold != 4'd0) ? reqbits : 3'd0;
+    // A sensor's four values, chosen by the CYC of the frame whose H1 its input fibre showed last.
+    reg [15:0] sens_0 = 16'd0, sens_1 = 16'd0, sens_2 = 16'd0, sens_3 = 16'd0;
+    always @(posedge clk) begin
+        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd0) sens_0 <= i_cfg_val[15:0];
+        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd1) sens_1 <= i_cfg_val[15:0];
+        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd2) sens_2 <= i_cfg_val[15:0];
+        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd3) sens_3 <= i_cfg_val[15:0];
+    end
+    wire [15:0] sens = i_incyc[1:0] == 2'd0 ? sens_0 : i_incyc[1:0] == 2'd1 ? sens_1 : i_incyc[1:0] == 2'd2 ? sens_2 : sens_3;
+    always @(posedge o_nclk) begin
+        o_pi <= i_pi;
+        o_si <= i_si;
+        o_addr <= addr;
+        o_slots_m1 <= i_slots_m1;
+        o_cs_timeout <= i_cs_timeout;
+        o_period <= i_period;
+        o_ureq <= ureq;
+        o_sens <= sens;
+        if (i_irq[0]) o_nirq1 <= o_nirq1 + 16'd1;
+        if (i_irq[1]) o_nirq2 <= o_nirq2 + 16'd1;
+        if (i_irq[2]) o_nirqfs <= o_nirqfs + 16'd1;
+        if (i_irq[3]) o_nirqrc <= o_nirqrc + 16'd1;
+        if (i_irq[4]) o_nirqfsc <= o_nirqfsc + 16'd1;
+    end
+endmodule
+"#;
+
 /// The Verilog of every module the ring needs plus the `merkur_ring` top.
 pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
     let n = kinds.len();
@@ -381,264 +504,186 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
             .replace("@BREAK@", &cfg::BREAK.to_string())
             .replace("@FLIP@", &cfg::FLIP.to_string()),
     );
+    out.push_str(
+        &NODE_ENV_MODULE
+            .replace("@INC@", &cfg::INC.to_string())
+            .replace("@PHASE@", &cfg::PHASE.to_string())
+            .replace("@KILL@", &cfg::KILL.to_string())
+            .replace("@ADDRESS@", &cfg::ADDRESS.to_string())
+            .replace("@REQUEST@", &cfg::REQUEST.to_string())
+            .replace("@SENSOR@", &cfg::SENSOR.to_string()),
+    );
     out.push_str(&top(kinds, cap));
     out
 }
 
-/// Node `k`'s inputs, registered on its own clock (module doc: the
-/// capture register of a synthesis top; the configuration constant or
-/// synchronised there): the sample windows `pi`, `si`, the address, slot
-/// count, CS timeout and requests; a sensor's value; the special master's
-/// period.
-fn node_inputs(k: usize, kind: Kind, pi: &str, si: &str) -> String {
-    let (mut regs, mut loads) = (
-        format!(
-            "    reg [3:0] pi_r_{k} = 4'd0, si_r_{k} = 4'd0;\n    reg [11:0] addr_r_{k} = 12'd0, slots_m1_r_{k} = 12'd0;\n\
-             \x20   reg [19:0] cs_timeout_r_{k} = 20'd0;\n    reg [2:0] ureq_r_{k} = 3'd0;\n"
-        ),
-        format!(
-            "        pi_r_{k} <= {pi};\n        si_r_{k} <= {si};\n        addr_r_{k} <= addr_{k};\n\
-             \x20       slots_m1_r_{k} <= slots_m1;\n        cs_timeout_r_{k} <= cs_timeout;\n        ureq_r_{k} <= ureq_{k};\n"
-        ),
-    );
-    if kind == Kind::Sensor {
-        regs += &format!("    reg [15:0] sens_r_{k} = 16'd0;\n");
-        loads += &format!("        sens_r_{k} <= sens_{k};\n");
-    }
-    if kind == Kind::SpecialMaster {
-        regs += &format!("    reg [19:0] period_r_{k} = 20'd0;\n");
-        loads += &format!("        period_r_{k} <= period;\n");
-    }
-    format!("{regs}    always @(posedge nclk_{k}) begin\n{loads}    end")
-}
-
-fn top(kinds: &[Kind], cap: usize) -> String {
-    let n = kinds.len();
-    let nf = 2 * n;
-    let capw = (8 * cap).trailing_zeros() as usize;
+/// Node `k` of the ring top: its surroundings (`merkur_node_env`) and its
+/// instance.
+fn node(k: usize, kind: Kind, n: usize) -> String {
     let mut v = String::new();
     let w = |v: &mut String, s: &str| {
         v.push_str(s);
         v.push('\n');
     };
-    w(
-        &mut v,
-        "module merkur_ring(clk, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_rd_en, i_rd_sel, i_rd_field, o_rd,\n\
-         \x20   i_cap_en, i_cap_fibre, i_cap_idx, o_cap, i_wb_node, i_wb_cyc, i_wb_stb, i_wb_we, i_wb_adr, i_wb_dat, o_wb_dat, o_wb_ack);",
-    );
-    w(
-        &mut v,
-        "    input wire clk;\n    input wire i_cfg_we;\n    input wire [15:0] i_cfg_sel;\n    input wire [7:0] i_cfg_field;\n    input wire [31:0] i_cfg_val;\n\
-         \x20   input wire i_rd_en;\n    input wire [15:0] i_rd_sel;\n    input wire [7:0] i_rd_field;\n    output reg [31:0] o_rd;\n\
-         \x20   input wire i_cap_en;\n    input wire [15:0] i_cap_fibre;\n    input wire [CAPW-1:0] i_cap_idx;\n    output reg [31:0] o_cap;\n\
-         \x20   input wire [15:0] i_wb_node;\n    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
-         \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n    output reg [15:0] o_wb_dat;\n    output reg o_wb_ack;",
-    );
-    v = v.replace("CAPW-1", &(capw - 1).to_string());
-    w(
-        &mut v,
-        "    // Shared configuration.\n    reg [11:0] slots_m1 = 12'd0;\n    reg [19:0] cs_timeout = 20'hfffff;\n    reg [19:0] period = 20'd0;\n\
-         \x20   // Ticks since the start (for the fibres' H1 times).\n    reg [31:0] tick = 32'd0;\n    always @(posedge clk) tick <= tick + 32'd1;\n\
-         \x20   // Monitors run at the nominal rate (a quarter of the tick rate).\n    reg [1:0] mcnt = 2'd0;\n    always @(posedge clk) mcnt <= mcnt + 2'd1;\n\
-         \x20   reg men_l = 1'b0;\n    always @(negedge clk) men_l <= mcnt == 2'd3;\n    wire mclk = clk & men_l;",
-    );
-    // Each fibre monitor's last DATA header (used by the nodes' stimulus).
-    w(
-        &mut v,
-        "    /* verilator lint_off UNUSEDSIGNAL */\n    // Only the fibres into a node's PI drive its stimulus (mode N).",
-    );
-    for f in 0..nf {
-        w(
-            &mut v,
-            &format!("    reg [2:0] hdr_cyc_{f} = 3'd0;\n    reg hdr_new_{f} = 1'b0;"),
-        );
-    }
-    w(&mut v, "    /* verilator lint_on UNUSEDSIGNAL */");
-    // Nodes: clock gates, configuration, instances.
-    let hit = |sel: usize, field: u32| {
-        format!("i_cfg_we && i_cfg_sel == 16'd{sel} && i_cfg_field == 8'd{field}")
-    };
-    for (k, &kind) in kinds.iter().enumerate() {
-        // The fibre whose frame ends pace the node's stimulus: its PI
-        // (P(k-1)); for the special master, which builds frames, its PO.
-        let pi_f = (k + n - 1) % n;
-        let up = if kind == Kind::SpecialMaster { k } else { pi_f };
-        let (in_cyc, in_new) = if kind == Kind::SpecialMaster {
-            (format!("hdr_cyc_{up}"), format!("hdr_new_{up}"))
-        } else {
-            (
-                format!(
-                    "(mode_{k} == 2'd1) ? hdr_cyc_{si} : hdr_cyc_{up}",
-                    si = n + k
-                ),
-                format!(
-                    "(mode_{k} == 2'd1) ? hdr_new_{si} : hdr_new_{up}",
-                    si = n + k
-                ),
-            )
-        };
-        let (h_inc, h_phase, h_addr, h_req, h_kill) = (
-            hit(k, cfg::INC),
-            hit(k, cfg::PHASE),
-            hit(k, cfg::ADDRESS),
-            hit(k, cfg::REQUEST),
-            hit(k, cfg::KILL),
-        );
-        w(
-            &mut v,
-            &format!(
-                "    // ---- node {k}: {kind} ----\n\
-                 \x20   wire [1:0] mode_{k};\n\
-                 \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
-                 \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
-                 \x20   reg [31:0] inc_{k} = 32'h40000000;\n    reg [31:0] acc_{k} = 32'd0;\n    reg en_{k} = 1'b0;\n    reg enl_{k} = 1'b0;\n    reg fired_{k} = 1'b0, fired2_{k} = 1'b0, selp_{k} = 1'b0;\n    reg dead_{k} = 1'b0;\n    // A new half of the node's DDR output pair starts on the line (tick resolution).\n    wire hs_{k} = fired_{k} | (selp_{k} & !fired2_{k});\n\
-                 \x20   always @(posedge clk) begin\n        {{en_{k}, acc_{k}}} <= {{1'b0, acc_{k}}} + {{1'b0, inc_{k}}};\n        fired_{k} <= enl_{k};\n        fired2_{k} <= fired_{k};\n        selp_{k} <= fired_{k} | fired2_{k};\n\
-                 \x20       if ({h_inc}) inc_{k} <= i_cfg_val;\n\
-                 \x20       if ({h_phase}) acc_{k} <= i_cfg_val;\n        if ({h_kill}) dead_{k} <= i_cfg_val[0];\n    end\n\
-                 \x20   always @(negedge clk) enl_{k} <= en_{k};\n    wire nclk_{k} = clk & enl_{k};\n\
-                 \x20   reg [11:0] addr_{k} = 12'd0;\n\
-                 \x20   reg [7:0] req_{k} = 8'd0;\n    reg [3:0] reqhold_{k} = 4'd0;\n    reg [2:0] reqbits_{k} = 3'd0;\n\
-                 \x20   always @(posedge clk) begin\n\
-                 \x20       if ({h_addr}) addr_{k} <= i_cfg_val[11:0];\n\
-                 \x20       if (reqhold_{k} != 4'd0) reqhold_{k} <= reqhold_{k} - 4'd1;\n\
-                 \x20       if (req_{k}[6] && (req_{k}[7] || (innew_{k} && incyc_{k} == req_{k}[5:3]))) begin\n\
-                 \x20           reqbits_{k} <= req_{k}[2:0];\n            reqhold_{k} <= 4'd8;\n            req_{k}[6] <= 1'b0;\n        end\n\
-                 \x20       if ({h_req}) req_{k} <= i_cfg_val[7:0];\n    end\n\
-                 \x20   wire [2:0] ureq_{k} = (reqhold_{k} != 4'd0) ? reqbits_{k} : 3'd0;\n\
-                 \x20   wire [1:0] po_{k}, so_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
-                kind = kind.name()
+    // The fibre whose frame ends pace the node's stimulus: its PI
+    // (P(k-1)); for the special master, which builds frames, its PO.
+    let pi_f = (k + n - 1) % n;
+    let up = if kind == Kind::SpecialMaster { k } else { pi_f };
+    let (in_cyc, in_new) = if kind == Kind::SpecialMaster {
+        (format!("hdr_cyc_{up}"), format!("hdr_new_{up}"))
+    } else {
+        (
+            format!(
+                "(mode_{k} == 2'd1) ? hdr_cyc_{si} : hdr_cyc_{up}",
+                si = n + k
             ),
-        );
-        if kind == Kind::Sensor {
-            // Four values, chosen by the CYC of the frame whose H1 the
-            // sensor's PI fibre showed last.
-            let h = hit(k, cfg::SENSOR);
-            let regs: Vec<String> = (0..4)
-                .map(|i| format!("        if ({h} && i_cfg_val[17:16] == 2'd{i}) sens_{k}_{i} <= i_cfg_val[15:0];"))
-                .collect();
+            format!(
+                "(mode_{k} == 2'd1) ? hdr_new_{si} : hdr_new_{up}",
+                si = n + k
+            ),
+        )
+    };
+    let pi = format!("{{line_{pi_f}, sh_{pi_f}}}");
+    let si = format!("{{line_{}, sh_{}}}", n + k, n + k);
+    w(
+        &mut v,
+        &format!(
+            "    // ---- node {k}: {kind} ----\n\
+             \x20   wire [1:0] mode_{k};\n\
+             \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
+             \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
+             \x20   wire nclk_{k}, hs_{k}, first_{k}, dead_{k};\n\
+             \x20   wire [3:0] pi_r_{k}, si_r_{k};\n    wire [11:0] addr_r_{k}, slots_m1_r_{k};\n    wire [19:0] cs_timeout_r_{k};\n    wire [2:0] ureq_r_{k};\n\
+             \x20   wire [15:0] nirq1_{k}, nirq2_{k}, nirqfs_{k}, nirqrc_{k}, nirqfsc_{k};\n\
+             \x20   wire irq1_{k}, irq2_{k}, irqfs_{k}, irqrc_{k}, irqfsc_{k};\n\
+             \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // A sensor's value and the special master's period: the other kinds leave them.\n\
+             \x20   wire [15:0] sens_r_{k};\n    wire [19:0] period_r_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+             \x20   merkur_node_env env_{k}(.clk(clk), .i_index(16'd{k}),\n\
+             \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val),\n\
+             \x20       .i_incyc(incyc_{k}), .i_innew(innew_{k}), .i_pi({pi}), .i_si({si}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_period(period),\n\
+             \x20       .i_irq({{irqfsc_{k}, irqrc_{k}, irqfs_{k}, irq2_{k}, irq1_{k}}}),\n\
+             \x20       .o_nclk(nclk_{k}), .o_hs(hs_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
+             \x20       .o_slots_m1(slots_m1_r_{k}), .o_cs_timeout(cs_timeout_r_{k}), .o_period(period_r_{k}), .o_ureq(ureq_r_{k}), .o_sens(sens_r_{k}),\n\
+             \x20       .o_nirq1(nirq1_{k}), .o_nirq2(nirq2_{k}), .o_nirqfs(nirqfs_{k}), .o_nirqrc(nirqrc_{k}), .o_nirqfsc(nirqfsc_{k}));\n\
+             \x20   wire [1:0] po_{k}, so_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
+            kind = kind.name()
+        ),
+    );
+    let common = format!(
+        ".clock(nclk_{k}), .i_pi(pi_r_{k}), .i_si(si_r_{k}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_r_{k}), .i_slots_m1(slots_m1_r_{k}), .i_cs_timeout(cs_timeout_r_{k}), .i_irq1(ureq_r_{k}[0]), .i_irq2(ureq_r_{k}[1]), .i_fs_req(ureq_r_{k}[2])"
+    );
+    match kind {
+        Kind::Sensor | Kind::Actuator => {
+            let (act, sens) = if kind == Kind::Actuator {
+                (1, "16'd0".to_string())
+            } else {
+                (0, format!("sens_r_{k}"))
+            };
             w(
                 &mut v,
                 &format!(
-                    "    reg [15:0] sens_{k}_0 = 16'd0, sens_{k}_1 = 16'd0, sens_{k}_2 = 16'd0, sens_{k}_3 = 16'd0;\n\
-                     \x20   always @(posedge clk) begin\n{}\n    end\n    wire [1:0] sel_{k} = incyc_{k}[1:0];\n\
-                     \x20   wire [15:0] sens_{k} = sel_{k} == 2'd0 ? sens_{k}_0 : sel_{k} == 2'd1 ? sens_{k}_1 : sel_{k} == 2'd2 ? sens_{k}_2 : sens_{k}_3;",
-                    regs.join("\n")
+                    "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
+                     \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                     \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
+                     \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
+                     \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
+                     \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
+                     \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
+                     \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    assign irq1_{k} = 1'b0;\n    assign irq2_{k} = 1'b0;\n    assign irqfs_{k} = 1'b0;\n    assign irqrc_{k} = 1'b0;\n    assign irqfsc_{k} = 1'b0;"
                 ),
             );
         }
-        let pi = format!("{{line_{pi_f}, sh_{pi_f}}}");
-        let si = format!("{{line_{}, sh_{}}}", n + k, n + k);
-        w(&mut v, &node_inputs(k, kind, &pi, &si));
-        let common = format!(
-            ".clock(nclk_{k}), .i_pi(pi_r_{k}), .i_si(si_r_{k}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_r_{k}), .i_slots_m1(slots_m1_r_{k}), .i_cs_timeout(cs_timeout_r_{k}), .i_irq1(ureq_r_{k}[0]), .i_irq2(ureq_r_{k}[1]), .i_fs_req(ureq_r_{k}[2])"
-        );
-        match kind {
-            Kind::Sensor | Kind::Actuator => {
-                let (act, sens) = if kind == Kind::Actuator {
-                    (1, "16'd0".to_string())
-                } else {
-                    (0, format!("sens_r_{k}"))
-                };
-                w(
-                    &mut v,
-                    &format!(
-                        "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
-                         \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
-                         \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
-                         \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
-                         \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
-                         \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
-                         \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
-                         \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    wire irq1_{k} = 1'b0, irq2_{k} = 1'b0, irqfs_{k} = 1'b0, irqrc_{k} = 1'b0, irqfsc_{k} = 1'b0;"
-                    ),
-                );
-            }
-            Kind::Master | Kind::SpecialMaster => {
-                let (defs, extra) = if kind == Kind::SpecialMaster {
-                    (
-                        format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};"),
-                        format!(".i_period(period_r_{k}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),"),
-                    )
-                } else {
-                    (
-                        format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;"),
-                        String::new(),
-                    )
-                };
-                w(
-                    &mut v,
-                    &format!(
-                        "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    wire irq1_{k}, irq2_{k}, irqfs_{k}, irqrc_{k}, irqfsc_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    wire alarmq_{k}; // the queue's level interrupt: the driver reads the queue over Wishbone\n    /* verilator lint_on UNUSEDSIGNAL */\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
-                         \x20   wire wbsel_{k} = i_wb_node == 16'd{k};\n\
-                         \x20   {m} n{k}({common}, {extra}\n\
-                         \x20       .i_wb_cyc(i_wb_cyc & wbsel_{k}), .i_wb_stb(i_wb_stb & wbsel_{k}), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),\n\
-                         \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}), .o_irq_rc(irqrc_{k}), .o_alarmq(alarmq_{k}), .o_irq_fsc(irqfsc_{k}),\n\
-                         \x20       .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}), .o_aerr(aerr_{k}), .o_running(run_{k}));",
-                        m = module_name(kind)
-                    ),
-                );
-            }
+        Kind::Master | Kind::SpecialMaster => {
+            let (defs, extra) = if kind == Kind::SpecialMaster {
+                (
+                    format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};"),
+                    format!(".i_period(period_r_{k}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),"),
+                )
+            } else {
+                (
+                    format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;"),
+                    String::new(),
+                )
+            };
+            w(
+                &mut v,
+                &format!(
+                    "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    wire alarmq_{k}; // the queue's level interrupt: the driver reads the queue over Wishbone\n    /* verilator lint_on UNUSEDSIGNAL */\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
+                     \x20   wire wbsel_{k} = i_wb_node == 16'd{k};\n\
+                     \x20   {m} n{k}({common}, {extra}\n\
+                     \x20       .i_wb_cyc(i_wb_cyc & wbsel_{k}), .i_wb_stb(i_wb_stb & wbsel_{k}), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),\n\
+                     \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}), .o_irq_rc(irqrc_{k}), .o_alarmq(alarmq_{k}), .o_irq_fsc(irqfsc_{k}),\n\
+                     \x20       .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}), .o_aerr(aerr_{k}), .o_running(run_{k}));",
+                    m = module_name(kind)
+                ),
+            );
         }
-        w(
-            &mut v,
-            &format!(
-                "    reg [15:0] nirq1_{k} = 16'd0, nirq2_{k} = 16'd0, nirqfs_{k} = 16'd0, nirqrc_{k} = 16'd0, nirqfsc_{k} = 16'd0;\n\
-                 \x20   always @(posedge nclk_{k}) begin\n        if (irq1_{k}) nirq1_{k} <= nirq1_{k} + 16'd1;\n        if (irq2_{k}) nirq2_{k} <= nirq2_{k} + 16'd1;\n        if (irqfs_{k}) nirqfs_{k} <= nirqfs_{k} + 16'd1;\n        if (irqrc_{k}) nirqrc_{k} <= nirqrc_{k} + 16'd1;\n        if (irqfsc_{k}) nirqfsc_{k} <= nirqfsc_{k} + 16'd1;\n    end"
-            ),
-        );
     }
-    // Capture entries carry the special master's frame count when written
-    // (its low 8 bits), so that an entry left from 8 cycles before (CYC has
-    // 3 bits) is not read as this cycle's.
-    let sm = kinds
-        .iter()
-        .position(|&k| k == Kind::SpecialMaster)
-        .expect("a ring has a special master");
-    w(&mut v, &format!("    wire [7:0] epoch = cycles_{sm}[7:0];"));
-    // Fibres: line levels, fault points, monitors, capture.
-    for f in 0..nf {
-        let (src, port, name) = if f < n {
-            (f, "po", format!("P{f}"))
-        } else {
-            ((f - n + 1) % n, "so", format!("S{}", f - n))
-        };
-        w(
-            &mut v,
-            &format!(
-                "    // ---- fibre {name} (from node {src}) ----\n\
-                 \x20   wire line_{f};\n    wire [2:0] sh_{f};\n\
-                 \x20   wire txl_{f} = (fired_{src} | fired2_{src}) ? {port}_{src}[0] : {port}_{src}[1];\n\
-                 \x20   // The line and its fault point (module `merkur_fibre` above).\n\
-                 \x20   merkur_fibre fib_{f}(.clk(clk), .i_tick(tick), .i_txl(txl_{f}), .i_hs(hs_{src}), .i_dead(dead_{src}),\n\
-                 \x20       .i_index(16'd{f}),\n\
-                 \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val), .o_line(line_{f}), .o_sh(sh_{f}));\n\
-                 \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
-                 \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
-                 \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff), .i_flush(1'b0),\n\
-                 \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
-                 \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
-                 \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_compl(m_compl_{f}), .o_void(m_void_{f}), .o_marked(m_marked_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
-                 \x20   reg [30:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 31'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
-                 \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
-                 \x20   // A bad word's ALARM field in the capture says whether it was marked (protocol §4).\n\
-                 \x20   wire mflag_{f} = (m_ok_{f} | m_void_{f}) ? m_alarm_{f} : m_marked_{f};\n\
-                 \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
-                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
-                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
-                 \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            lslot_{f} <= 12'hfff;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
-                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
-                 \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
-                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
-                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
-                 \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
-                 \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
-                 \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
-                hz = if capw > 4 { format!("{}'d0, ", capw - 4) } else { String::new() },
-                last = 8 * cap - 1,
-                cb = capw - 4,
-            ),
-        );
-    }
+    v
+}
+
+/// Fibre `f` of the ring top: the line and its fault point
+/// (`merkur_fibre`), its monitor and the capture of what the monitor decodes.
+fn fibre(f: usize, n: usize, capw: usize) -> String {
+    let mut v = String::new();
+    let w = |v: &mut String, s: &str| {
+        v.push_str(s);
+        v.push('\n');
+    };
+    let (src, port, name) = if f < n {
+        (f, "po", format!("P{f}"))
+    } else {
+        ((f - n + 1) % n, "so", format!("S{}", f - n))
+    };
+    w(
+        &mut v,
+        &format!(
+            "    // ---- fibre {name} (from node {src}) ----\n\
+             \x20   wire line_{f};\n    wire [2:0] sh_{f};\n\
+             \x20   wire txl_{f} = first_{src} ? {port}_{src}[0] : {port}_{src}[1];\n\
+             \x20   // The line and its fault point (module `merkur_fibre` above).\n\
+             \x20   merkur_fibre fib_{f}(.clk(clk), .i_tick(tick), .i_txl(txl_{f}), .i_hs(hs_{src}), .i_dead(dead_{src}),\n\
+             \x20       .i_index(16'd{f}),\n\
+             \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val), .o_line(line_{f}), .o_sh(sh_{f}));\n\
+             \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
+             \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+             \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff), .i_flush(1'b0),\n\
+             \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
+             \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
+             \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_compl(m_compl_{f}), .o_void(m_void_{f}), .o_marked(m_marked_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
+             \x20   reg [30:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 31'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
+             \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
+             \x20   // A bad word's ALARM field in the capture says whether it was marked (protocol §4).\n\
+             \x20   wire mflag_{f} = (m_ok_{f} | m_void_{f}) ? m_alarm_{f} : m_marked_{f};\n\
+             \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
+             \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
+             \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
+             \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            lslot_{f} <= 12'hfff;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
+             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
+             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
+             \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
+             \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
+             \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
+             \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
+             \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
+            hz = if capw > 4 { format!("{}'d0, ", capw - 4) } else { String::new() },
+            last = (1usize << capw) - 1,
+            cb = capw - 4,
+        ),
+    );
+    v
+}
+
+/// The harness's read multiplexers: status fields, captured entries and
+/// the masters' Wishbone answers.
+fn read_muxes(kinds: &[Kind]) -> String {
+    let n = kinds.len();
+    let nf = 2 * n;
+    let mut v = String::new();
+    let w = |v: &mut String, s: &str| {
+        v.push_str(s);
+        v.push('\n');
+    };
     // Status read: every field by name (`status`), `K` = node or fibre.
     let node_fields: [(u32, &str); 15] = [
         (status::MODE, "{30'd0, mode_K}"),
@@ -718,6 +763,68 @@ fn top(kinds: &[Kind], cap: usize) -> String {
         }
     }
     w(&mut v, "    end");
+    v
+}
+
+fn top(kinds: &[Kind], cap: usize) -> String {
+    let n = kinds.len();
+    let nf = 2 * n;
+    let capw = (8 * cap).trailing_zeros() as usize;
+    let mut v = String::new();
+    let w = |v: &mut String, s: &str| {
+        v.push_str(s);
+        v.push('\n');
+    };
+    w(
+        &mut v,
+        "module merkur_ring(clk, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_rd_en, i_rd_sel, i_rd_field, o_rd,\n\
+         \x20   i_cap_en, i_cap_fibre, i_cap_idx, o_cap, i_wb_node, i_wb_cyc, i_wb_stb, i_wb_we, i_wb_adr, i_wb_dat, o_wb_dat, o_wb_ack);",
+    );
+    w(
+        &mut v,
+        "    input wire clk;\n    input wire i_cfg_we;\n    input wire [15:0] i_cfg_sel;\n    input wire [7:0] i_cfg_field;\n    input wire [31:0] i_cfg_val;\n\
+         \x20   input wire i_rd_en;\n    input wire [15:0] i_rd_sel;\n    input wire [7:0] i_rd_field;\n    output reg [31:0] o_rd;\n\
+         \x20   input wire i_cap_en;\n    input wire [15:0] i_cap_fibre;\n    input wire [CAPW-1:0] i_cap_idx;\n    output reg [31:0] o_cap;\n\
+         \x20   input wire [15:0] i_wb_node;\n    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
+         \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n    output reg [15:0] o_wb_dat;\n    output reg o_wb_ack;",
+    );
+    v = v.replace("CAPW-1", &(capw - 1).to_string());
+    w(
+        &mut v,
+        "    // Shared configuration.\n    reg [11:0] slots_m1 = 12'd0;\n    reg [19:0] cs_timeout = 20'hfffff;\n    reg [19:0] period = 20'd0;\n\
+         \x20   // Ticks since the start (for the fibres' H1 times).\n    reg [31:0] tick = 32'd0;\n    always @(posedge clk) tick <= tick + 32'd1;\n\
+         \x20   // Monitors run at the nominal rate (a quarter of the tick rate).\n    reg [1:0] mcnt = 2'd0;\n    always @(posedge clk) mcnt <= mcnt + 2'd1;\n\
+         \x20   reg men_l = 1'b0;\n    always @(negedge clk) men_l <= mcnt == 2'd3;\n    wire mclk = clk & men_l;",
+    );
+    // Each fibre monitor's last DATA header (used by the nodes' stimulus).
+    w(
+        &mut v,
+        "    /* verilator lint_off UNUSEDSIGNAL */\n    // Only the fibres into a node's PI drive its stimulus (mode N).",
+    );
+    for f in 0..nf {
+        w(
+            &mut v,
+            &format!("    reg [2:0] hdr_cyc_{f} = 3'd0;\n    reg hdr_new_{f} = 1'b0;"),
+        );
+    }
+    w(&mut v, "    /* verilator lint_on UNUSEDSIGNAL */");
+    // Nodes: their surroundings (`merkur_node_env`: clock, inputs), instances.
+    for (k, &kind) in kinds.iter().enumerate() {
+        v.push_str(&node(k, kind, n));
+    }
+    // Capture entries carry the special master's frame count when written
+    // (its low 8 bits), so that an entry left from 8 cycles before (CYC has
+    // 3 bits) is not read as this cycle's.
+    let sm = kinds
+        .iter()
+        .position(|&k| k == Kind::SpecialMaster)
+        .expect("a ring has a special master");
+    w(&mut v, &format!("    wire [7:0] epoch = cycles_{sm}[7:0];"));
+    // Fibres: line levels, fault points, monitors, capture.
+    for f in 0..nf {
+        v.push_str(&fibre(f, n, capw));
+    }
+    v.push_str(&read_muxes(kinds));
     // Global configuration.
     w(
         &mut v,
