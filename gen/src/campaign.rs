@@ -1135,7 +1135,7 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
             let kinds: Vec<Kind> = c.cfg.nodes.iter().map(|x| x.kind).collect();
             let t = Instant::now();
             merkur_testbenches::verilator::Model::build_top_traced(
-                &merkur_rtl::ring_top::ring_verilog(&kinds, c.cfg.slots),
+                &ring_sim::ring_verilog_once(&kinds, c.cfg.slots),
                 "merkur_ring",
                 None,
             )?;

@@ -388,9 +388,9 @@ fn fibre_name(f: usize, n: usize) -> String {
 }
 
 /// The ring Verilog of `kinds` with `slots` slots, generated once per
-/// process: a campaign runs hundreds of cases of one ring, and generating
-/// ring100's text takes about 0.1 s.
-fn ring_verilog_once(kinds: &[Kind], slots: usize) -> std::sync::Arc<String> {
+/// process: a campaign builds each ring's model and then runs hundreds of
+/// cases of it, and generating ring100's text takes about 0.1 s.
+pub fn ring_verilog_once(kinds: &[Kind], slots: usize) -> std::sync::Arc<String> {
     use std::collections::HashMap;
     use std::sync::{Arc, Mutex, OnceLock};
     type Done = HashMap<(String, usize), Arc<String>>;
