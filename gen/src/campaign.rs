@@ -19,7 +19,7 @@
 //! `--shard K/N` splits it; `--merge` joins shard reports.
 
 use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
-use merkur_model::ring::{self, splitmix, table1, Carry, CycleRecord, Mode, Port, Slot};
+use merkur_model::ring::{self, splitmix, table1, Carry, CycleRecord, EventKind, Mode, Port, Slot};
 use merkur_model::scenario::Kind;
 use merkur_rtl::ring_top::TICKS_PER_BIT;
 use merkur_testbenches::ring_sim::{self, Options};
@@ -139,6 +139,13 @@ pub struct CaseResult {
     /// RTL: bit times from the last fault until every live node is in
     /// failsafe.
     pub failsafe_bits: Option<f64>,
+    /// RTL: bit times from the clock base's death to the first frame of
+    /// the backup that took over (protocol §8).
+    #[serde(default)]
+    pub takeover_bits: Option<f64>,
+    /// The ring's cycle period in bit times.
+    #[serde(default)]
+    pub period_bits: Option<f64>,
     /// Line rate of the ring (Mbit/s), for µs.
     pub mbps: f64,
     /// Bit flips injected.
@@ -303,6 +310,7 @@ fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
     };
     single_cases(&mut p);
     sm_fibre_cases(&mut p);
+    takeover_cases(&mut p);
     double_cases(&mut p);
     if plan.repairs {
         repair_cases(&mut p);
@@ -395,6 +403,81 @@ fn sm_fibre_cases(p: &mut Planner) {
             }
         }
     }
+}
+
+/// The special master's death with the masters as backups (protocol §8):
+/// every order of priorities 1, 2, … over the masters (a ring with one
+/// master: priority 1, 2 and 3), each with the death before the delimiter
+/// and before a seeded slot of cycle 3; 3 sampled on rings of more than 32
+/// nodes.
+fn takeover_cases(p: &mut Planner) {
+    let masters: Vec<usize> = (0..p.clean.nodes.len())
+        .filter(|&k| p.clean.nodes[k].kind == Kind::Master)
+        .collect();
+    if masters.is_empty() {
+        return;
+    }
+    let mut orders: Vec<Vec<u8>> = if masters.len() == 1 {
+        vec![vec![1], vec![2], vec![3]]
+    } else {
+        permutations(masters.len())
+    };
+    let mut r = p.rng("sm-takeover");
+    let mut cases = vec![];
+    for prios in orders.drain(..) {
+        let s = Some(r.below(p.clean.slots as u64) as usize);
+        for slot in [None, s] {
+            cases.push((prios.clone(), slot));
+        }
+    }
+    if p.clean.nodes.len() > 32 {
+        sample(&mut cases, 3, &mut r);
+    }
+    let sm = p.clean.sm;
+    for (prios, slot) in cases {
+        let mut cfg = p.clean.clone();
+        for (&k, &pr) in masters.iter().zip(&prios) {
+            cfg.nodes[k].backup = Some(pr);
+        }
+        cfg.cycles = FAULT_CYCLE + 9;
+        cfg.faults = vec![(FAULT_CYCLE, Fault::Kill { node: sm, slot })];
+        let order: Vec<String> = masters
+            .iter()
+            .zip(&prios)
+            .map(|(k, pr)| format!("n{k}p{pr}"))
+            .collect();
+        p.push(
+            format!(
+                "{}/sm-takeover/{}@{FAULT_CYCLE}{}",
+                p.ring,
+                order.join(","),
+                slot_label(slot)
+            ),
+            "sm-takeover",
+            cfg,
+        );
+    }
+}
+
+/// Every order of the priorities 1..=m (m ≤ 7), in lexicographic order.
+fn permutations(m: usize) -> Vec<Vec<u8>> {
+    let mut out = vec![];
+    let mut cur: Vec<u8> = vec![];
+    fn go(m: usize, cur: &mut Vec<u8>, out: &mut Vec<Vec<u8>>) {
+        if cur.len() == m {
+            out.push(cur.clone());
+            return;
+        }
+        for p in 1..=m as u8 {
+            if !cur.contains(&p) {
+                cur.push(p);
+                go(m, cur, out);
+                cur.pop();
+            }
+        }
+    }
+    go(m, &mut cur, &mut out);
+    out
 }
 
 /// Double faults: the second, 4 cycles after the first, on a link the
@@ -750,7 +833,9 @@ fn code_ones(cfg: &Config, fr: &merkur_model::ring::Frame) -> Vec<usize> {
 /// The special master's INPUT fibre in cycle c.
 fn sm_input(cfg: &Config, recs: &[CycleRecord], c: usize) -> usize {
     let n = cfg.nodes.len();
-    let sm = cfg.sm;
+    // (The clock base of cycle c: the special master, or a backup that
+    // took over, protocol §8.)
+    let sm = recs[c].base;
     let mode = if c == 0 {
         Mode::N
     } else {
@@ -816,6 +901,16 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     let recs = ring::run(cfg);
     let mut clean_cfg = cfg.clone();
     clean_cfg.faults.clear();
+    // After a takeover, what the ring should deliver is what a fault-free
+    // ring with the new clock base delivers (protocol §8, "Memories after
+    // the takeover": the retransmission point moved with it).
+    if let Some(e) = recs
+        .iter()
+        .flat_map(|x| &x.events)
+        .find(|e| matches!(e.kind, EventKind::Takeover { .. }))
+    {
+        clean_cfg.sm = e.node;
+    }
     let clean = ring::run(&clean_cfg);
     let structural: Vec<(u32, Fault)> = cfg
         .faults
@@ -891,6 +986,8 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
         detect_bits: None,
         switchover_bits: None,
         failsafe_bits: None,
+        takeover_bits: None,
+        period_bits: Some(cfg.period as f64),
         mbps: cfg.line_rate_mbps,
         flips,
         accepted: 0,
@@ -967,6 +1064,20 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
             .collect();
         res.detect_bits = ch.iter().min().map(|&t| bits(t - t0));
         res.switchover_bits = ch.iter().max().map(|&t| bits(t - t0));
+    }
+    // The takeover (protocol §8): from the clock base's death to the
+    // elected backup's first frame.
+    let takeover = recs
+        .iter()
+        .flat_map(|x| &x.events)
+        .find(|e| matches!(e.kind, EventKind::Takeover { .. }))
+        .map(|e| e.cycle as usize);
+    let death = cfg
+        .faults
+        .iter()
+        .position(|&(_, f)| matches!(f, Fault::Kill { node, .. } if node == cfg.sm));
+    if let (Some(t), Some(Some(t0))) = (takeover, death.map(|i| rep.fault_ticks[i])) {
+        res.takeover_bits = rep.starts.get(t).map(|&s| bits(s.saturating_sub(t0)));
     }
     if failsafe {
         if let Some(Some(tl)) = cfg
@@ -1058,6 +1169,7 @@ fn all_cases(plan: &Plan) -> Result<Vec<Case>, String> {
             "break-secondary",
             "node-death",
             "sm-fibres",
+            "sm-takeover",
             "double",
             "repair",
             "double-repair",
@@ -1314,6 +1426,7 @@ pub fn markdown(r: &Report) -> String {
         );
     }
     o += &ber_table(r);
+    o += &takeover_table(r);
     let bad: Vec<&CaseResult> = r.cases.iter().filter(|c| c.mismatches > 0).collect();
     if !bad.is_empty() {
         o += "\n## Cases with mismatches\n\n";
@@ -1330,6 +1443,42 @@ pub fn markdown(r: &Report) -> String {
         }
     }
     o += "\nColumns: *healed* — after a structural fault every live node is out of failsafe at the end (model); *words lost* — slot words that came back to the special master good in the fault-free ring but not in this one (the cut frame's rest and the RECONFIG alarms' home slots); *frames lost* — frames that did not come back whole to the special master where the fault-free ring's did (model / RTL monitors: a break in the last ~100 bit times of a frame also costs the next frame's head in RTL, protocol §13); *cycles to recover* — from the first fault until every live node holds what the fault-free ring's nodes hold, for good; *detection* — from the fault to the first switchbox change (RTL); *switchover* — to the last one it caused, the ring wrapped at both ends (RTL); *failsafe latency* — from the second fault until every live node is in failsafe (RTL); *accepted* — flipped words a receiver took as good.\n";
+    o
+}
+
+/// The takeovers by ring: from the special master's death to the elected
+/// backup's first frame (RTL), in bit times, µs and periods.
+fn takeover_table(r: &Report) -> String {
+    let mut by_ring: BTreeMap<(usize, String), Vec<&CaseResult>> = BTreeMap::new();
+    for c in r.cases.iter().filter(|c| c.takeover_bits.is_some()) {
+        by_ring
+            .entry((c.nodes, c.ring.clone()))
+            .or_default()
+            .push(c);
+    }
+    if by_ring.is_empty() {
+        return String::new();
+    }
+    let mut o = String::from(
+        "\n## Takeovers (the flying special master, protocol §8)\n\nFrom the special master's death to the first frame of the backup that took over, in the RTL (the death's moment is the harness's fault injection, the frame's the frame counter's change, both at 4-tick resolution).\n\n| ring | takeovers | bit times (min / mean / max) | µs (mean / max) | periods (max) |\n|---|---|---|---|---|\n",
+    );
+    for ((_, ring), cs) in &by_ring {
+        let b: Vec<f64> = cs.iter().filter_map(|c| c.takeover_bits).collect();
+        let (n, mean, max) = stat(b.iter().copied());
+        let min = b.iter().cloned().fold(f64::MAX, f64::min);
+        let mbps = cs[0].mbps;
+        let period = cs[0].period_bits.unwrap_or(0.0);
+        let periods = if period > 0.0 {
+            format!("{:.2}", max / period)
+        } else {
+            "–".into()
+        };
+        o += &format!(
+            "| {ring} | {n} | {min:.0} / {mean:.0} / {max:.0} | {:.1} / {:.1} | {periods} |\n",
+            us(mean, mbps),
+            us(max, mbps)
+        );
+    }
     o
 }
 

@@ -53,7 +53,7 @@
 //! framer, word decoder at the nominal rate) whose DATA words are captured
 //! per cycle: entry `(cyc & 3) · CAP + slot` holds `{EPOCH[7:0], CYC[2:0],
 //! status[1:0], ALARM, ALIVE, data[15:0]}` with status 1 good, 2 bad, 3
-//! VOID and EPOCH the special master's frame count (low 8 bits) when it was
+//! VOID and EPOCH the ring's frame count (low 8 bits; frames sent by the special master and the backups) when it was
 //! written; a slot whose entry has another CYC, or an EPOCH that is not
 //! 0…4 frames after the cycle's (left from 8 cycles before), was missing
 //! in that cycle; entries
@@ -107,6 +107,12 @@ pub mod cfg {
     pub const BREAK: u32 = 8;
     /// Node: 1 dead (both its output fibres dark), 0 alive.
     pub const KILL: u32 = 10;
+    /// Clock-base node (`merkur_special_master`): backup priority (0: the
+    /// clock base from power-up; protocol §8).
+    pub const PRIO: u32 = 5;
+    /// Clock-base node: election time in bit times ((1.5 + priority)
+    /// periods, protocol §8).
+    pub const ELECT: u32 = 6;
     /// Fibre: arm a flip of line bit `val[11:0]` of the next packet (bit 0 =
     /// the first bit of its J K; counted from J's first 0 code bit, so
     /// bits 0 and 1 cannot be hit and are refused by the driver); with
@@ -154,6 +160,9 @@ pub mod status {
     pub const IRQFSC: u32 = 13;
     /// Master: RECONFIG alarms received (reasons 4–6, protocol §11).
     pub const IRQRC: u32 = 14;
+    /// Clock-base node (special master, backup): frames it sent while
+    /// alive (a dead node's logic runs on, unheard).
+    pub const FRAMES: u32 = 15;
     /// Fibre: `{in frame, last CYC[2:0]}`.
     pub const FRAME: u32 = 16;
     /// Fibre: last DATA H1.
@@ -589,19 +598,34 @@ fn node(k: usize, kind: Kind, n: usize) -> String {
                      \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
                      \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
                      \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
-                     \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    assign irq1_{k} = 1'b0;\n    assign irq2_{k} = 1'b0;\n    assign irqfs_{k} = 1'b0;\n    assign irqrc_{k} = 1'b0;\n    assign irqfsc_{k} = 1'b0;"
+                     \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire [15:0] frames_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    assign irq1_{k} = 1'b0;\n    assign irq2_{k} = 1'b0;\n    assign irqfs_{k} = 1'b0;\n    assign irqrc_{k} = 1'b0;\n    assign irqfsc_{k} = 1'b0;"
                 ),
             );
         }
         Kind::Master | Kind::SpecialMaster => {
             let (defs, extra) = if kind == Kind::SpecialMaster {
                 (
-                    format!("    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};"),
-                    format!(".i_period(period_r_{k}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}),"),
+                    format!(
+                        "    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};\n\
+                         \x20   // Backup priority and election time (static: written before the start).\n\
+                         \x20   reg [2:0] prio_{k} = 3'd0;\n    reg [19:0] elect_{k} = 20'd0;\n\
+                         \x20   always @(posedge clk) begin\n\
+                         \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{pf}) prio_{k} <= i_cfg_val[2:0];\n\
+                         \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{ef}) elect_{k} <= i_cfg_val[19:0];\n\
+                         \x20   end\n\
+                         \x20   // Frames sent while alive (the epoch of the capture, and the driver's frame count).\n\
+                         \x20   reg [15:0] cyc_was_{k} = 16'd0;\n    reg [15:0] frames_{k} = 16'd0;\n\
+                         \x20   always @(posedge clk) begin\n        cyc_was_{k} <= cycles_{k};\n\
+                         \x20       if (!dead_{k} && cycles_{k} != cyc_was_{k}) frames_{k} <= frames_{k} + 16'd1;\n    end\n\
+                         \x20   /* verilator lint_off UNUSEDSIGNAL */\n    wire base_{k}; // the driver counts frames by `frames`\n    /* verilator lint_on UNUSEDSIGNAL */",
+                        pf = cfg::PRIO,
+                        ef = cfg::ELECT
+                    ),
+                    format!(".i_period(period_r_{k}), .i_prio(prio_{k}), .i_elect(elect_{k}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}), .o_base(base_{k}),"),
                 )
             } else {
                 (
-                    format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;"),
+                    format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire [15:0] frames_{k} = 16'd0;"),
                     String::new(),
                 )
             };
@@ -685,7 +709,8 @@ fn read_muxes(kinds: &[Kind]) -> String {
         v.push('\n');
     };
     // Status read: every field by name (`status`), `K` = node or fibre.
-    let node_fields: [(u32, &str); 15] = [
+    let node_fields: [(u32, &str); 16] = [
+        (status::FRAMES, "{16'd0, frames_K}"),
         (status::MODE, "{30'd0, mode_K}"),
         (status::FS, "{31'd0, fs_K}"),
         (status::PERR, "{16'd0, perr_K}"),
@@ -812,14 +837,21 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     for (k, &kind) in kinds.iter().enumerate() {
         v.push_str(&node(k, kind, n));
     }
-    // Capture entries carry the special master's frame count when written
-    // (its low 8 bits), so that an entry left from 8 cycles before (CYC has
-    // 3 bits) is not read as this cycle's.
-    let sm = kinds
+    // Capture entries carry the ring's frame count when written (its low 8
+    // bits: the frames every clock-base node has sent, the special master
+    // and the backups, protocol §8), so that an entry left from 8 cycles
+    // before (CYC has 3 bits) is not read as this cycle's.
+    let bases: Vec<String> = kinds
         .iter()
-        .position(|&k| k == Kind::SpecialMaster)
-        .expect("a ring has a special master");
-    w(&mut v, &format!("    wire [7:0] epoch = cycles_{sm}[7:0];"));
+        .enumerate()
+        .filter(|&(_, &k)| k == Kind::SpecialMaster)
+        .map(|(k, _)| format!("frames_{k}[7:0]"))
+        .collect();
+    assert!(!bases.is_empty(), "a ring has a special master");
+    w(
+        &mut v,
+        &format!("    wire [7:0] epoch = {};", bases.join(" + ")),
+    );
     // Fibres: line levels, fault points, monitors, capture.
     for f in 0..nf {
         v.push_str(&fibre(f, n, capw));

@@ -1,6 +1,24 @@
-//! # special_master — the ring's clock base (protocol §5, §8)
+//! # special_master — the ring's clock base, and a backup that can become it (protocol §5, §8)
 //!
-//! Purpose: the one master per ring that starts every cycle. Every
+//! Purpose: the one master per ring that starts every cycle, and the
+//! flying special master's backups (protocol §8): with `i_prio` = 0 the
+//! node is the clock base from power-up (everything below); with `i_prio`
+//! = p ≥ 1 it is a **backup**: a master like [`crate::master`] (its
+//! forwarder [`Fwd`] in master mode on OUTPUT, BSR repeated on BSS in mode
+//! N, alarms through the forwarder and read back at INPUT, failsafe left at
+//! a CLR header) whose clock base waits for its election. Its election
+//! timer counts bit times since the last packet started on INPUT (J K, or
+//! [`START_BITS`] code bits that only a packet's start shows); when it reaches
+//! `i_elect` ((1.5 + p) periods) while the node is armed, not in failsafe
+//! and did not know the ring wrapped at its last good header, the node
+//! becomes the clock base for good (`o_base`): [`TAKEOVER_LEAD_BITS`] of
+//! idles on OUTPUT, then a frame every period with CYC continuing the count
+//! (the last good header's + 1 + p), an empty return store, and what a
+//! clock base learns from returning frames started afresh. A backup's
+//! clock-base logic is this block's; the forwarder is unused (and removed
+//! by synthesis) where `i_prio` is tied to 0.
+//!
+//! As the clock base: every
 //! `i_period` bit times of its own clock it sends a DATA frame on PO (J K,
 //! H0 = `{00, FS, RWC, S−1}`, H1 = `{RWP, CYC, HOP = 0}`, S slot words) and a
 //! SEC packet on SO (H0 = `{01, 00, CYC[11:0]}`, H1 = NOT H0). The frame that
@@ -63,7 +81,9 @@
 //! | `i_address` | in | 12 | static | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
 //! | `i_period` | in | 20 | static | cycle period P in bit times (protocol §8) |
-//! | `i_cs_timeout` | in | 20 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods) |
+//! | `i_cs_timeout` | in | 20 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods; 2.5 + the highest backup priority in a ring with backups, §8) |
+//! | `i_prio` | in | 3 | static | 0: the clock base from power-up; 1–7: a backup of this priority |
+//! | `i_elect` | in | 20 | static | a backup's election time in bit times ((1.5 + `i_prio`) periods) |
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word; each also goes into the alarm queue, `mdb`) |
@@ -75,6 +95,7 @@
 //! | `o_hop` | out | 12 | clock | HOP of the last returned frame (N − 1 in a healthy ring) |
 //! | `o_cycles` | out | 16 | clock | frames sent |
 //! | `o_running` | out | 1 | clock | the host started the ring |
+//! | `o_base` | out | 1 | clock | the node is the clock base (priority 0, or elected) |
 //!
 //! Latency: a frame's J starts 1–5 bit times after its period tick; a
 //! returned word is in the store ≈ 3.5 bit times after its last line bit.
@@ -86,6 +107,8 @@
 //! PI (back)        ...L later...  | J K | H0 | H1 | slot 0 | ... -> return store
 //! ```
 
+use crate::dec5b4b::Dec5b4b;
+use crate::fwd::Fwd;
 use crate::mdb::Mdb;
 use crate::pkt_tx::PktTx;
 use crate::port_rx::PortRx;
@@ -108,6 +131,16 @@ const _: () = assert!(RELAY_BITS == 76);
 /// the previous frame and its idles have left (a period is at least the
 /// frame plus 20 bit times).
 pub const UNWRAP_LEAD_BITS: u64 = 16;
+/// Code bits by which a backup's election timer sees a packet whose J K a
+/// bit error destroyed (protocol §8): idle 1s, J K but for one line-bit
+/// error, two data groups.
+pub const START_BITS: u64 = 30;
+// `in_code` is a `Bits<30>` (rust-hdl widths are literals).
+const _: () = assert!(START_BITS == 30);
+/// Bit times of idles an elected backup sends on OUTPUT before its first
+/// frame (protocol §8): more than the 20 between packets, so that
+/// receivers that saw a dark stretch relock first.
+pub const TAKEOVER_LEAD_BITS: u64 = 48;
 
 /// Special master.
 #[derive(LogicBlock)]
@@ -130,6 +163,10 @@ pub struct SpecialMaster {
     pub i_period: Signal<In, Bits<20>>,
     /// CS timeout in clocks.
     pub i_cs_timeout: Signal<In, Bits<20>>,
+    /// Backup priority: 0 the clock base from power-up, 1–7 a backup.
+    pub i_prio: Signal<In, Bits<3>>,
+    /// A backup's election time in bit times ((1.5 + priority) periods).
+    pub i_elect: Signal<In, Bits<20>>,
     /// Wishbone cycle.
     pub i_wb_cyc: Signal<In, Bit>,
     /// Wishbone strobe.
@@ -160,7 +197,7 @@ pub struct SpecialMaster {
     pub o_irq_rc: Signal<Out, Bit>,
     /// The alarm queue is not empty.
     pub o_alarmq: Signal<Out, Bit>,
-    /// Mode (always N).
+    /// Switchbox mode.
     pub o_mode: Signal<Out, Bits<2>>,
     /// Failsafe.
     pub o_failsafe: Signal<Out, Bit>,
@@ -180,6 +217,8 @@ pub struct SpecialMaster {
     pub o_cycles: Signal<Out, Bits<16>>,
     /// Running.
     pub o_running: Signal<Out, Bit>,
+    /// The node is the clock base (from power-up, or elected).
+    pub o_base: Signal<Out, Bit>,
     rx_in: PortRx,
     rx_bsr: PortRx,
     ftx: PktTx,
@@ -202,6 +241,8 @@ pub struct SpecialMaster {
     /// The counter's next value is the same either way (0 after the last
     /// bit time); the sized sum keeps the comparison free of mixed widths.
     one: Constant<Bits<20>>,
+    jk_bits: Constant<Bits<10>>,
+    takeover_lead: Constant<Bits<20>>,
     unwrap_at: Signal<Local, Bit>,
     rdl: DFF<Bits<76>>,
     rcd: DFF<Bits<7>>,
@@ -285,6 +326,49 @@ pub struct SpecialMaster {
     h1: Signal<Local, Bits<16>>,
     sec_h0: Signal<Local, Bits<16>>,
     st_word: Signal<Local, Bits<22>>,
+    // A backup before its election: a master (protocol §8).
+    fwd: Fwd,
+    txs: SlotSel,
+    fs_cleared: DFF<Bit>,
+    /// Elected (a backup that took over the clock base).
+    cb: DFF<Bit>,
+    /// The clock base now: elected, or priority 0.
+    base: Signal<Local, Bit>,
+    /// Bit times since the last packet started on INPUT (election timer).
+    et: DFF<Bits<20>>,
+    /// INPUT's last line level and its last 30 code bits (newest in bit 0).
+    in_last: DFF<Bit>,
+    in_code: DFF<Bits<30>>,
+    /// The delimiter-like ten code bits against J K: their difference,
+    /// it without its lowest 1, and whether it is one line-bit error at
+    /// most (no code bit, one, or two neighbours: NRZI).
+    jk_x: Signal<Local, Bits<10>>,
+    jk_z: Signal<Local, Bits<10>>,
+    jk_ok: Signal<Local, Bit>,
+    /// A packet start whose J K one line-bit error destroyed.
+    jk_bad: Signal<Local, Bit>,
+    /// Bit times since the packet on INPUT started.
+    since_jk: DFF<Bits<20>>,
+    /// CYC of the last DATA frame and of the last SEC that restarted the
+    /// election timer (and whether there was one).
+    dcyc: DFF<Bits<3>>,
+    dcyc_v: DFF<Bit>,
+    scyc: DFF<Bits<12>>,
+    scyc_v: DFF<Bit>,
+    g0: Dec5b4b,
+    g1: Dec5b4b,
+    /// The ring was known wrapped at the last good header processed.
+    rw_hdr: DFF<Bit>,
+    /// CYC of the last good header processed, and the gap to the next.
+    last_cyc3: DFF<Bits<3>>,
+    cyc_gap3: Signal<Local, Bits<3>>,
+    /// The takeover frame's CYC: the last good header's plus 1 + priority.
+    cyc_take: Signal<Local, Bits<3>>,
+    fwd_cut: DFF<Bit>,
+    rep_cut: DFF<Bit>,
+    inpkt_was: DFF<Bit>,
+    slot_cfg: Signal<Local, Bits<2>>,
+    pass_code: Signal<Local, Bit>,
 }
 
 impl Default for SpecialMaster {
@@ -324,6 +408,9 @@ impl Default for SpecialMaster {
             o_hop: Default::default(),
             o_cycles: Default::default(),
             o_running: Default::default(),
+            o_base: Default::default(),
+            i_prio: Default::default(),
+            i_elect: Default::default(),
             rx_in: PortRx::new(false),
             rx_bsr: PortRx::new(false),
             ftx: Default::default(),
@@ -401,6 +488,8 @@ impl Default for SpecialMaster {
             tick: Default::default(),
             unwrap_lead: Constant::new(UNWRAP_LEAD_BITS.to_bits()),
             one: Constant::new(1.into()),
+            jk_bits: Constant::new(crate::rx_framer::JK_BITS.to_bits()),
+            takeover_lead: Constant::new(TAKEOVER_LEAD_BITS.to_bits()),
             unwrap_at: Default::default(),
             st: Default::default(),
             st_ok: Default::default(),
@@ -416,11 +505,45 @@ impl Default for SpecialMaster {
             h1: Default::default(),
             sec_h0: Default::default(),
             st_word: Default::default(),
+            fwd: Fwd::new(),
+            txs: Default::default(),
+            fs_cleared: Default::default(),
+            cb: Default::default(),
+            base: Default::default(),
+            et: Default::default(),
+            rw_hdr: Default::default(),
+            last_cyc3: Default::default(),
+            cyc_gap3: Default::default(),
+            cyc_take: Default::default(),
+            fwd_cut: Default::default(),
+            rep_cut: Default::default(),
+            inpkt_was: Default::default(),
+            in_last: Default::default(),
+            in_code: Default::default(),
+            jk_x: Default::default(),
+            jk_z: Default::default(),
+            jk_ok: Default::default(),
+            jk_bad: Default::default(),
+            since_jk: Default::default(),
+            dcyc: Default::default(),
+            dcyc_v: Default::default(),
+            scyc: Default::default(),
+            scyc_v: Default::default(),
+            g0: Default::default(),
+            g1: Default::default(),
+            slot_cfg: Default::default(),
+            pass_code: Default::default(),
         }
     }
 }
 
 impl Logic for SpecialMaster {
+    // One function of about 800 lines: rust-hdl's `#[hdl_gen]` turns one
+    // `update` into the block's Verilog and cannot call helper methods
+    // ("Unsupported set method"). Its sections, in order: receive ports
+    // and period, headers, the frame's words, alarms, failsafe exit and
+    // SEC check, the returning frame, switchbox, store, database, relay and
+    // outputs, and last the backup's role before its election.
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -475,8 +598,34 @@ impl Logic for SpecialMaster {
             host_clear,
             st_used,
             st_used_slot,
-            last_num
+            last_num,
+            cb,
+            et,
+            rw_hdr,
+            last_cyc3,
+            fwd_cut,
+            rep_cut,
+            inpkt_was,
+            in_last,
+            in_code,
+            fs_cleared,
+            since_jk,
+            dcyc,
+            dcyc_v,
+            scyc,
+            scyc_v
         );
+        // The clock base: priority 0 from power-up, a backup once elected.
+        self.base.next = self.cb.q.val() | (self.i_prio.val() == 0);
+        // The slot whose memories the send side reads: the frame
+        // generator's, or the forwarder's before the election ([`SlotSel`]).
+        self.txs.i_ftx.next = self.ftx.o_slot.val();
+        self.txs.i_fwd.next = self.fwd.o_slot.val();
+        self.txs.i_cb.next = self.cb.q.val();
+        self.txs.i_prio.next = self.i_prio.val();
+        self.mdb.i_tx_slot.next = self.txs.o_slot.val();
+        self.aact.read_address.next = self.txs.o_slot.val();
+        self.o_base.next = self.base.val();
         self.sbox.i_mode.next = self.swc.o_mode.val();
         self.sbox.i_pi.next = self.i_pi.val();
         self.sbox.i_si.next = self.i_si.val();
@@ -512,7 +661,7 @@ impl Logic for SpecialMaster {
         self.half.d.next = !self.half.q.val();
         self.tick.next = false;
         self.unwrap_at.next = false;
-        if self.mdb.o_running.val() & self.half.q.val() {
+        if self.base.val() & self.mdb.o_running.val() & self.half.q.val() {
             if (self.bcnt.q.val() + self.unwrap_lead.val()) == self.i_period.val() {
                 self.unwrap_at.next = true;
             }
@@ -561,9 +710,7 @@ impl Logic for SpecialMaster {
 
         // The word of slot ftx.o_slot (protocol §7, §8): store, data memory,
         // configuration, actuator Alive, all read at that slot.
-        self.mdb.i_tx_slot.next = self.ftx.o_slot.val();
         self.store.read_address.next = self.ftx.o_slot.val();
-        self.aact.read_address.next = self.ftx.o_slot.val();
         // The store's and the Alive memory's read data, registered (issue
         // 20: block RAM outputs go to one flip-flop, not through logic);
         // the slot is set 60 bit times before its word is taken and
@@ -709,7 +856,11 @@ impl Logic for SpecialMaster {
             & (!(self.mdb.o_fs_host.val() | self.fs_request.q.val()) | self.host_clear.q.val());
         self.clr_fail.next =
             self.tick.val() & !self.failsafe.q.val() & (self.clr_sent.q.val() >= 4);
-        self.mdb.i_fs_cleared.next = self.leave.val() & self.host_clear.q.val();
+        // (Registered: the database's input then does not depend on this
+        // block's logic, which reads its outputs; one clock later changes
+        // nothing, the clear is a status bit.)
+        self.fs_cleared.d.next = self.leave.val() & self.host_clear.q.val();
+        self.mdb.i_fs_cleared.next = self.fs_cleared.q.val();
         if self.mdb.o_fs_clear.val() {
             self.host_clear.d.next = true;
         }
@@ -784,6 +935,14 @@ impl Logic for SpecialMaster {
                 if self.rx_in.o_data.val().get_bit(13) & !self.rx_in.o_alive.val() {
                     self.failsafe.d.next = true;
                 }
+                // A backup before its election leaves failsafe like every
+                // node: at a CLR header with FS = 0 (§12).
+                if !self.base.val()
+                    & !self.rx_in.o_data.val().get_bit(13)
+                    & self.rx_in.o_alive.val()
+                {
+                    self.failsafe.d.next = false;
+                }
             }
             if self.rx_in.o_kind.val() == 1 {
                 self.ret_cyc.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
@@ -830,6 +989,38 @@ impl Logic for SpecialMaster {
         }
         if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
             self.failsafe.d.next = true;
+        }
+        // A backup before its election sends its alarms like every node
+        // (crate::slave): through the forwarder, read back at INPUT in the
+        // next frame.
+        if !self.base.val() & self.fwd.o_alarm_sent.val() {
+            if self.fwd.o_sent_reason.val() == 3 {
+                self.pend_fs.d.next = false;
+                self.failsafe.d.next = true;
+            } else if !self.fl_v.q.val() {
+                self.nxt.d.next = !self.nxt.q.val();
+                self.fl_v.d.next = true;
+                self.fl_r.d.next = self.fwd.o_sent_reason.val();
+                if self.fwd.o_sent_reason.val() == 1 {
+                    self.pend_i1.d.next = false;
+                } else if self.fwd.o_sent_reason.val() == 2 {
+                    self.pend_i2.d.next = false;
+                } else {
+                    self.pend_rc.d.next = false;
+                }
+            }
+        }
+        if !self.base.val()
+            & self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 2)
+            & self.rx_in.o_own.val()
+            & !self.fwd.o_prev_alarm.val()
+            & !self.failsafe.q.val()
+            & self.rx_in.o_ok.val()
+            & self.rx_in.o_alarm.val()
+            & (self.rx_in.o_data.val().get_bit(11) != self.nxt.q.val())
+        {
+            self.fl_v.d.next = false;
         }
         // Switchbox decisions, as every node's (crate::switch_ctl); a WD
         // special master unwraps UNWRAP_LEAD_BITS before its next period
@@ -916,7 +1107,8 @@ impl Logic for SpecialMaster {
         if self.mdb.o_s2_ok.val() & !(self.mdb.o_s2_alarm.val() & self.sent_alarm.read_data.val()) {
             self.st_word.next = self.st_word.val() | 0x40000;
         }
-        self.store.write_enable.next = self.mdb.o_s2.val();
+        // (Only as the clock base: a backup's store starts empty, §8.)
+        self.store.write_enable.next = self.mdb.o_s2.val() & self.base.val();
         self.store.write_address.next = self.mdb.o_s2_slot.val();
         self.store.write_data.next = self.st_word.val();
         // An entry is good for one frame (protocol §8): the clock after its
@@ -1052,5 +1244,277 @@ impl Logic for SpecialMaster {
         self.dark.i_so.next = self.sbox.o_so.val();
         self.o_po.next = self.dark.o_po.val();
         self.o_so.next = self.dark.o_so.val();
+
+        // A backup before its election (protocol §8): a master like any other
+        // ([`crate::master`]: the forwarder in master mode on OUTPUT, BSR
+        // repeated on BSS in mode N, failsafe left at a CLR header), with an
+        // election timer that makes it the clock base. Everything here is
+        // overridden by the clock base's logic above once `base` is set (or
+        // from power-up with priority 0), so that node is the special master
+        // exactly as before.
+        // The forwarder, as in a master (crate::slave).
+        self.fwd.clock.next = self.clock.val();
+        self.fwd.i_bvalid.next = self.rx_in.o_bvalid.val();
+        self.fwd.i_level.next = self.rx_in.o_level.val();
+        self.fwd.i_phase.next = self.rx_in.o_phase.val();
+        self.fwd.i_hdr_bad.next = self.rx_in.o_hdr_bad.val()
+            | (self.rx_in.o_wvalid.val()
+                & (self.rx_in.o_kind.val() == 0)
+                & self.rx_in.o_ok.val()
+                & (self.rx_in.o_ptype.val() != 0));
+        if !self.rx_in.o_inpkt.val() {
+            self.fwd_cut.d.next = false;
+        }
+        if self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 0)
+            & self.rx_in.o_ok.val()
+            & (self.rx_in.o_ptype.val() == 2)
+        {
+            self.fwd_cut.d.next = true;
+        }
+        self.fwd.i_mute.next = self.fwd_cut.q.val();
+        self.fwd.i_slots_m1.next = self.i_slots_m1.val();
+        self.fwd.i_address.next = self.i_address.val();
+        self.fwd.i_actuator.next = false;
+        self.fwd.i_sensor_data.next = 0.into();
+        self.fwd.i_act_out.next = 0.into();
+        self.fwd.i_fs.next = self.failsafe.q.val();
+        self.fwd.i_wrapped.next = self.wrapped.val();
+        self.fwd.i_master.next = true;
+        self.fwd.i_alarm_req.next = !self.base.val()
+            & (self.pend_fs.q.val()
+                | self.fl_v.q.val()
+                | self.pend_rc.q.val()
+                | self.pend_i1.q.val()
+                | self.pend_i2.q.val());
+        self.fwd.i_alarm_reason.next = self.reason.val();
+        self.fwd.i_alarm_seq.next = self.seq_tx.val();
+        self.slot_cfg.next = 0.into();
+        if self.mdb.o_running.val() {
+            if self.mdb.o_tx_local.val() {
+                self.slot_cfg.next = 1.into();
+            }
+            if self.mdb.o_tx_act.val() {
+                self.slot_cfg.next = self.slot_cfg.val() | 2;
+            }
+        }
+        self.fwd.i_slot_cfg.next = self.slot_cfg.val();
+        self.fwd.i_slot_data.next = self.mdb.o_tx_data.val();
+        self.fwd.i_slot_alive.next = self.aact.read_data.val();
+        // BSR repeated bit for bit in mode N; a TST's rest cut (protocol §9).
+        if !self.rx_bsr.o_inpkt.val() {
+            self.rep_cut.d.next = false;
+        }
+        if self.rx_bsr.o_wvalid.val()
+            & (self.rx_bsr.o_kind.val() == 0)
+            & self.rx_bsr.o_ok.val()
+            & (self.rx_bsr.o_ptype.val() == 2)
+        {
+            self.rep_cut.d.next = true;
+        }
+        self.pass_code.next =
+            (self.rx_bsr.o_level.val() != self.rlast.q.val()) | self.rep_cut.q.val();
+        self.inpkt_was.d.next = self.rx_in.o_inpkt.val();
+        // What a header tells a master (crate::slave): the ring known
+        // wrapped, and the frames missed since the last good one.
+        self.cyc_gap3.next = self.rx_in.o_data.val().get_bits::<3>(12) - self.last_cyc3.q.val() - 1;
+        self.cyc_take.next = self.last_cyc3.q.val() + self.i_prio.val() + 1;
+        // Election timer (protocol §8): bit times since the last packet
+        // that restarted it started on INPUT (below): its J K (`o_start`), or, where a bit error
+        // destroyed the J K, [`START_BITS`] code bits that show idle 1s
+        // (the 9 oldest), ten that are J K but for one line-bit error (one
+        // code bit, or two neighbours: NRZI) and two data groups (the first
+        // may be hit by the same error when it is J K's last bit): a packet
+        // start with one error. A line without packets cannot show that:
+        // idles are 1s, and a dead upstream line up to 8 0s (such dark
+        // stretches, with the idles between, circulate in a ring wrapped
+        // around the dead clock base, where nothing filters them); and
+        // inside a packet data never has nine 1s in a row.
+        if self.half.q.val() & (self.et.q.val() != 0xfffff) {
+            self.et.d.next = self.et.q.val() + 1;
+        }
+        if self.rx_in.o_bvalid.val() {
+            self.in_last.d.next = self.rx_in.o_level.val();
+            self.in_code.d.next = self.in_code.q.val() << 1;
+            if self.rx_in.o_level.val() != self.in_last.q.val() {
+                self.in_code.d.next = (self.in_code.q.val() << 1) | 1;
+            }
+        }
+        self.jk_x.next = self.in_code.q.val().get_bits::<10>(10) ^ self.jk_bits.val();
+        self.jk_z.next = self.jk_x.val() & (self.jk_x.val() - 1);
+        self.jk_ok.next = (self.jk_z.val() == 0)
+            | ((self.jk_x.val() == (self.jk_z.val() | (self.jk_z.val() >> 1)))
+                & ((self.jk_z.val() & (self.jk_z.val() - 1)) == 0));
+        self.g0.i_code.next = self.in_code.q.val().get_bits::<5>(5);
+        self.g1.i_code.next = self.in_code.q.val().get_bits::<5>(0);
+        self.jk_bad.next = (self.in_code.q.val().get_bits::<9>(21) == 0x1ff)
+            & self.jk_ok.val()
+            & (self.jk_x.val() != 0)
+            & (self.g0.o_data.val() | self.jk_x.val().get_bit(0))
+            & self.g1.o_data.val();
+        // Bit times since the packet now on INPUT started.
+        if self.half.q.val() & (self.since_jk.q.val() != 0xfffff) {
+            self.since_jk.d.next = self.since_jk.q.val() + 1;
+        }
+        if self.rx_in.o_start.val() | self.jk_bad.val() {
+            self.since_jk.d.next = 0.into();
+        }
+        // Which packets restart the timer (counted from their start): a
+        // DATA frame with a CYC other than the last one's, a SEC with a
+        // CYC other than the last one's, a TST, and a damaged packet (a
+        // rejected header or a destroyed J K: a bit error). Not a packet
+        // seen again: in a ring wrapped around the dead clock base nothing
+        // absorbs what was on its way when it died (the rest of its last
+        // frame, its SEC), and that circulates, once per ring latency,
+        // until a clock base takes it off (protocol §8).
+        if self.rx_in.o_wvalid.val() & self.rx_in.o_ok.val() {
+            if (self.rx_in.o_kind.val() == 1)
+                & (self.rx_in.o_ptype.val() == 0)
+                & (!self.dcyc_v.q.val()
+                    | (self.rx_in.o_data.val().get_bits::<3>(12) != self.dcyc.q.val()))
+            {
+                self.dcyc_v.d.next = true;
+                self.dcyc.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
+                self.et.d.next = self.since_jk.q.val();
+            }
+            if (self.rx_in.o_kind.val() == 0)
+                & (self.rx_in.o_ptype.val() == 1)
+                & (!self.scyc_v.q.val()
+                    | (self.rx_in.o_data.val().get_bits::<12>(0) != self.scyc.q.val()))
+            {
+                self.scyc_v.d.next = true;
+                self.scyc.d.next = self.rx_in.o_data.val().get_bits::<12>(0);
+                self.et.d.next = self.since_jk.q.val();
+            }
+            if (self.rx_in.o_kind.val() == 0) & (self.rx_in.o_ptype.val() == 2) {
+                self.et.d.next = self.since_jk.q.val();
+            }
+        }
+        if self.rx_in.o_hdr_bad.val() | self.jk_bad.val() {
+            self.et.d.next = self.since_jk.q.val();
+            if self.jk_bad.val() {
+                self.et.d.next = 0.into();
+            }
+        }
+        if self.base.val() {
+            self.et.d.next = 0.into();
+        }
+        // (A frame seen again, circulating in a ring wrapped around the
+        // dead clock base, is not a new header: its RWC, which a wrapped
+        // node set on its way round, does not make the backup ineligible.)
+        if !self.base.val()
+            & self.rx_in.o_wvalid.val()
+            & self.rx_in.o_ok.val()
+            & (self.rx_in.o_ptype.val() == 0)
+            & (self.rx_in.o_kind.val() == 1)
+            & (!self.dcyc_v.q.val()
+                | (self.rx_in.o_data.val().get_bits::<3>(12) != self.dcyc.q.val()))
+        {
+            self.rw_hdr.d.next =
+                self.ret_rwc.q.val() | self.rx_in.o_data.val().get_bit(15) | self.wrapped.val();
+            self.last_cyc3.d.next = self.rx_in.o_data.val().get_bits::<3>(12);
+            self.ferr_owed.d.next = 0.into();
+            if self.armed.q.val() {
+                self.ferr_owed.d.next = bit_cast::<12, 3>(self.cyc_gap3.val()) | 0;
+            }
+        }
+        if !self.base.val() {
+            self.toggle.d.next = self.fwd.o_toggle.val();
+        }
+        if !self.base.val() {
+            self.swc.i_rw.next = self.rw_hdr.q.val();
+            self.swc.i_frame_start.next = self.inpkt_was.q.val() & !self.rx_in.o_inpkt.val();
+        }
+        if !self.base.val() {
+            // Actuator Alive, as in a master: a good word in an ACT slot
+            // sets it, a regenerated VOID flips it (protocol §7).
+            self.aact.write_enable.next = false;
+            self.aact.write_address.next = self.mdb.o_s2_slot.val();
+            self.aact.write_data.next = self.mdb.o_s2_alive.val();
+            if self.mdb.o_s2.val()
+                & self.mdb.o_s2_ok.val()
+                & self.mdb.o_s2_act.val()
+                & !self.failsafe.q.val()
+            {
+                self.aact.write_enable.next = true;
+            }
+            if self.fwd.o_regen.val() {
+                self.aact.write_enable.next = true;
+                self.aact.write_address.next = self.fwd.o_slot.val();
+                self.aact.write_data.next = !self.aact.read_data.val();
+            }
+        }
+        if !self.base.val() {
+            self.rep.i_code.next = self.pass_code.val();
+            self.bss_pair.next = self.rep.o_line.val();
+            if self.wrapped.val() {
+                self.bss_pair.next = self.tst.o_line.val();
+            }
+            self.sbox.i_output.next = self.fwd.o_line.val();
+            self.sbox.i_bss.next = self.bss_pair.val();
+            self.dark.i_keep_po.next = false;
+        }
+        if !self.base.val() {
+            // Takeover (protocol §8): the timer ran out, and the backup is
+            // armed, not in failsafe, and did not know the ring wrapped at
+            // its last good header (the clock base's death as a first
+            // fault). It starts a frame at once, CYC continuing the count;
+            // what a clock base learns from returning frames starts afresh.
+            if self.mdb.o_running.val()
+                & self.armed.q.val()
+                & !self.failsafe.q.val()
+                & !self.rw_hdr.q.val()
+                & (self.et.q.val() == self.i_elect.val())
+            {
+                self.cb.d.next = true;
+                // The first frame TAKEOVER_LEAD_BITS later: its OUTPUT
+                // carried the forwarder's stream until now (idles, or a
+                // dark stretch circulating in the ring wrapped around the
+                // dead clock base), and the receivers downstream relock on
+                // idles before the frame's J K.
+                self.bcnt.d.next = self.i_period.val() - self.takeover_lead.val();
+                self.cyc.d.next = bit_cast::<12, 3>(self.cyc_take.val()) | 0;
+                self.last_num.d.next = (bit_cast::<12, 3>(self.cyc_take.val()) | 0) - 1;
+                self.ret_rwc.d.next = false;
+                self.ret_rwp.d.next = false;
+                self.hop_ref.d.next = 0.into();
+                self.whole.d.next = 0.into();
+                self.clr_sent.d.next = 0.into();
+                self.fs_request.d.next = false;
+                self.host_clear.d.next = false;
+            }
+        }
+    }
+}
+
+/// The slot whose memories a backup's send side reads (the database's and
+/// the actuator Alive memory's read address): the frame generator's once
+/// the node is the clock base, else the forwarder's. A block of its own so
+/// that the address is not computed in [`SpecialMaster`]'s logic, which
+/// reads the database's outputs: Verilator orders a block's combinational
+/// logic as one piece, and the database's outputs depend on its inputs
+/// there, so the mux inside the node would be a combinational loop
+/// (UNOPTFLAT).
+#[derive(LogicBlock, Default)]
+pub struct SlotSel {
+    /// The frame generator's slot.
+    pub i_ftx: Signal<In, Bits<12>>,
+    /// The forwarder's slot.
+    pub i_fwd: Signal<In, Bits<12>>,
+    /// Elected (the node's `cb` register).
+    pub i_cb: Signal<In, Bit>,
+    /// Backup priority (0: the clock base from power-up).
+    pub i_prio: Signal<In, Bits<3>>,
+    /// The slot to read.
+    pub o_slot: Signal<Out, Bits<12>>,
+}
+
+impl Logic for SlotSel {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.o_slot.next = self.i_ftx.val();
+        if !self.i_cb.val() & (self.i_prio.val() != 0) {
+            self.o_slot.next = self.i_fwd.val();
+        }
     }
 }

@@ -50,7 +50,21 @@ use merkur_model::scenario::Kind;
 /// 2 clocks per bit time. The nodes' 20-bit port holds it for every legal
 /// period (`MAX_PERIOD_BITS`, protocol §8); [`check`] refuses others.
 pub fn cs_timeout_clocks(period_bits: u64) -> u64 {
-    7 * period_bits
+    ring_cs_timeout_clocks(period_bits, 3)
+}
+
+/// The CS timeout in clocks for a ring whose timeout is `cycles` periods
+/// by protocol §12 rule 4 (3 without backup clock bases, 2 + the highest
+/// backup priority with them, §8): `cycles` + 0.5 periods, at 2 clocks per
+/// bit time.
+pub fn ring_cs_timeout_clocks(period_bits: u64, cycles: u32) -> u64 {
+    (2 * cycles as u64 + 1) * period_bits
+}
+
+/// A backup clock base's election time in bit times: (1.5 + `prio`)
+/// periods (protocol §8).
+pub fn elect_bits(period_bits: u64, prio: u8) -> u64 {
+    (3 + 2 * prio as u64) * period_bits / 2
 }
 
 // The 20-bit CS timeout counter saturates at 2²⁰ − 1: the longest legal
@@ -325,9 +339,9 @@ fn master_instance(
     let sm = st.kind == Kind::SpecialMaster;
     v.push_str(&format!("{lint_off}    wire [15:0] aerr;\n"));
     let extra = if sm {
-        v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
+        v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n    wire base; // 1: the special master is the clock base from power-up\n");
         format!(
-            ",\n        .i_period(20'd{}), .o_serr(serr), .o_hop(hop), .o_cycles(cycles)",
+            ",\n        .i_period(20'd{}), .i_prio(3'd0), .i_elect(20'd0), .o_serr(serr), .o_hop(hop), .o_cycles(cycles), .o_base(base)",
             st.period
         )
     } else {

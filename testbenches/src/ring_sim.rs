@@ -111,6 +111,9 @@ pub struct Report {
     /// as it reconstructs it from its alarm queue, the nodes whose last
     /// RECONFIG announced a wrap (protocol §11).
     pub shapes: Vec<(usize, Shape)>,
+    /// Per cycle, the tick at which the driver saw its frame start (a
+    /// cycle without a frame, before a backup's takeover: the next one's).
+    pub starts: Vec<u64>,
 }
 
 /// A ring's shape as a master sees it: the wrapped nodes and their modes.
@@ -156,11 +159,6 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
     if let Some(s) = cfg.last_critical() {
         return Some(format!(
             "frame.critical (slot {s}): retransmission on demand (protocol §8) is in the model only; no RTL node sends or fills the retransmission packet yet"
-        ));
-    }
-    if let Some(&(k, p)) = cfg.backups().first() {
-        return Some(format!(
-            "node[{k}].backup = {p}: the flying special master (protocol §8) is in the model only; no RTL master carries the special master's logic yet"
         ));
     }
     if cfg
@@ -290,6 +288,8 @@ struct Ring {
     h1_seen: Vec<[u64; 4]>,
     /// Capture entries per cycle and fibre.
     capn: usize,
+    /// Per cycle, the frames sent before it ([`frames_before`]).
+    ep: Vec<u32>,
     /// See [`Report::returned_whole`].
     whole: Vec<bool>,
     /// Per slot, whether its Alive bit runs inverted against the model's
@@ -354,15 +354,27 @@ fn slot_token(s: &Slot) -> String {
 }
 
 /// Whether a captured entry was written in cycle `cyc`: its CYC matches
-/// and the special master had sent 0 to 4 frames more than `cyc` when it
-/// was written (not an entry left from 8 cycles before; `ring_top`).
-fn fresh(e: u64, cyc: u32) -> bool {
-    (e >> 20) & 7 == (cyc & 7) as u64 && ((e >> 23) as u32).wrapping_sub(cyc) & 0xff <= 4
+/// and the ring's clock bases had sent 0 to 4 frames more than `ep` (the
+/// frames sent before cycle `cyc`, [`frames_before`]) when it was written
+/// (not an entry left from 8 cycles before; `ring_top`).
+fn fresh(e: u64, cyc: u32, ep: u32) -> bool {
+    (e >> 20) & 7 == (cyc & 7) as u64 && ((e >> 23) as u32).wrapping_sub(ep) & 0xff <= 4
+}
+
+/// Per cycle, the frames the model's clock bases sent before it (a cycle
+/// without a clock base sends none, protocol §8), with the total last.
+fn frames_before(recs: &[CycleRecord]) -> Vec<u32> {
+    let mut v = vec![0];
+    for rec in recs {
+        let last = *v.last().expect("one entry");
+        v.push(last + !rec.path.is_empty() as u32);
+    }
+    v
 }
 
 /// A captured entry of cycle `cyc` as the slot the monitor saw.
-fn cap_slot(e: u64, cyc: u32) -> Slot {
-    if !fresh(e, cyc) {
+fn cap_slot(e: u64, cyc: u32, ep: u32) -> Slot {
+    if !fresh(e, cyc, ep) {
         return Slot::Missing;
     }
     match (e >> 18) & 3 {
@@ -416,7 +428,20 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let s = cfg.slots;
     let capn = cap_slots(s);
     let kinds: Vec<Kind> = cfg.nodes.iter().map(|x| x.kind).collect();
-    let verilog = ring_verilog_once(&kinds, s);
+    // A backup master carries the special master's logic (protocol §8): in
+    // the RTL it is a `merkur_special_master` with a priority.
+    let rtl_kinds: Vec<Kind> = cfg
+        .nodes
+        .iter()
+        .map(|x| match x.backup {
+            Some(_) => Kind::SpecialMaster,
+            None => x.kind,
+        })
+        .collect();
+    let clock_bases: Vec<usize> = (0..n)
+        .filter(|&k| rtl_kinds[k] == Kind::SpecialMaster)
+        .collect();
+    let verilog = ring_verilog_once(&rtl_kinds, s);
     let t0 = Instant::now();
     let mut m = Model::build_top_traced(&verilog, "merkur_ring", opts.wave.as_deref())?;
     let build = t0.elapsed();
@@ -445,6 +470,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         ticks: 0,
         h1_seen: vec![[u64::MAX; 4]; 2 * n],
         capn,
+        ep: frames_before(recs),
         whole: vec![false; cfg.cycles as usize],
         alive_inv: vec![Some(false); s],
         dump: opts.dump,
@@ -453,15 +479,24 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let mut rng = Rng::new(opts.seed ^ cfg.seed);
     let period = cfg.period as u64;
     // Shared configuration: S−1, CS timeout 3.5 periods (3 per protocol
-    // §12 plus margin for the clock offsets; synth_top::cs_timeout_clocks),
+    // §12 plus margin for the clock offsets; 2.5 + the highest backup
+    // priority with backups, §8: synth_top::ring_cs_timeout_clocks),
     // period.
     r.cfg(0, field::SLOTS_M1, s as u64 - 1);
     r.cfg(
         0,
         field::CS_TIMEOUT,
-        merkur_rtl::synth_top::cs_timeout_clocks(period),
+        merkur_rtl::synth_top::ring_cs_timeout_clocks(period, cfg.cs_timeout_cycles()),
     );
     r.cfg(0, field::PERIOD, period);
+    for (k, p) in cfg.backups() {
+        r.cfg(k, field::PRIO, p as u64);
+        r.cfg(
+            k,
+            field::ELECT,
+            merkur_rtl::synth_top::elect_bits(period, p),
+        );
+    }
     for (k, nd) in cfg.nodes.iter().enumerate() {
         let inc = (INC_NOMINAL as f64 * (1.0 + nd.ppm * 1e-6)).round() as u64;
         r.cfg(k, field::INC, inc);
@@ -497,8 +532,10 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     }
     // The special master's failsafe exit (protocol §12): host exit, and a
     // clear command given before the start.
-    if cfg.nodes[cfg.sm].fs_exit_host {
-        r.wb(cfg.sm, WB_STATUS, Some(ST_FS_HOST))?;
+    for &k in &clock_bases {
+        if cfg.nodes[k].fs_exit_host {
+            r.wb(k, WB_STATUS, Some(ST_FS_HOST))?;
+        }
     }
     if cfg.fs_clears.contains(&0) {
         r.wb(cfg.sm, WB_STATUS, Some(ST_FS_CLEAR))?;
@@ -518,7 +555,13 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         }
     }
     reqs.sort();
-    // Host writes after the start, and the special master's host's failsafe
+    // The clock base at cycle c's start (the special master, or the backup
+    // that took over, protocol §8).
+    let base_before = |c: u32| match c {
+        0 => cfg.sm,
+        _ => recs[c as usize - 1].base,
+    };
+    // Host writes after the start, and the clock base's host's failsafe
     // clear commands (to its status register).
     let mut writes: Vec<(u32, usize, usize, u16)> = cfg
         .host_writes
@@ -527,7 +570,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         .chain(
             cfg.fs_clears
                 .iter()
-                .map(|&c| (c, cfg.sm, WB_STATUS as usize, ST_FS_CLEAR)),
+                .map(|&c| (c, base_before(c), WB_STATUS as usize, ST_FS_CLEAR)),
         )
         .filter(|w| w.0 > 0)
         .collect();
@@ -547,6 +590,12 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let mut compared = 0u32; // cycles compared
     let mut starts: Vec<u64> = vec![];
     let last_cycle = cfg.cycles - 1;
+    // The cycles in which the model's clock base sent a frame (all but
+    // those between the clock base's death and a backup's takeover, §8).
+    let framed: Vec<u32> = (0..cfg.cycles)
+        .filter(|&c| !recs[c as usize].path.is_empty())
+        .collect();
+    let last_framed = *framed.last().ok_or("the model's ring sends no frame")?;
     let mut stopped_at: Option<u64> = None;
     // Every break, repair and death: (cycle, the fibres whose monitors time
     // it, slot, configuration write). A death is timed on the fibres out of
@@ -668,9 +717,25 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 ends.join(", ")
             ));
         }
-        let now = r.rd(cfg.sm, st::CYCLES) as u32;
+        // Cycles started: the frames the clock bases sent (a backup's after
+        // the special master's, protocol §8), each the model's next cycle
+        // with a frame; cycles without one (before a takeover) pass with
+        // the next frame, or two periods after the last at the run's end.
+        let frames: usize = clock_bases
+            .iter()
+            .map(|&k| r.rd(k, st::FRAMES) as usize)
+            .sum();
+        let quiet_end = frames >= framed.len()
+            && starts
+                .last()
+                .is_some_and(|&t| r.ticks > t + 2 * period * TICKS_PER_BIT as u64);
+        let now = match frames {
+            0 => 0,
+            _ if quiet_end => cfg.cycles,
+            f => framed[(f - 1).min(framed.len() - 1)] + 1,
+        };
         while sent < now {
-            // Frame `sent` started.
+            // Frame `sent` started (or, in a cycle without one, the next did).
             starts.push(r.ticks);
             // SEC packets seen per fibre before frame `sent` (a SEC starts
             // with its frame and is back within the period).
@@ -680,8 +745,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             if opts.progress && c % progress_every == 0 {
                 eprint!("\rcycle {c}/{} ", cfg.cycles);
             }
-            if c == last_cycle {
-                r.wb(cfg.sm, WB_STATUS, Some(ST_STOP))?;
+            if c == last_framed {
+                r.wb(recs[c as usize].base, WB_STATUS, Some(ST_STOP))?;
             }
             for (k, nd) in cfg.nodes.iter().enumerate() {
                 // Cycle c+2 reuses the entry of cycle c−2, which has passed
@@ -711,7 +776,12 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             if c > sent {
                 break;
             }
-            let pace = if node == cfg.sm { node } else { into(node) };
+            // (A clock-base node, the special master or a backup, on its PO.)
+            let pace = if clock_bases.contains(&node) {
+                node
+            } else {
+                into(node)
+            };
             if frame_over(&mut r, pace, c - 1, &starts, sent, &mut pace_off, period, s) {
                 r.wb(node, slot as u16, Some(data))?;
                 writes.remove(i);
@@ -842,9 +912,10 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             // The last frame has come back to the special master (frames
             // lost to a fault do not count), or, in a ring that a fault
             // left without a way back, two periods have passed.
-            let back = r.rd(into(cfg.sm), st::FRAME);
-            if r.rd(into(cfg.sm), st::NEND) >= cfg.cycles as u64
-                || (back >> 3 & 1 == 0 && back & 7 == (last_cycle & 7) as u64)
+            let last_base = recs[last_framed as usize].base;
+            let back = r.rd(into(last_base), st::FRAME);
+            if r.rd(into(last_base), st::NEND) >= cfg.cycles as u64
+                || (back >> 3 & 1 == 0 && back & 7 == (last_framed & 7) as u64)
                 || r.ticks > t + 2 * period * TICKS_PER_BIT as u64
             {
                 break;
@@ -949,7 +1020,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 check("aerr", want.aerr as u64, v[4]);
             }
         }
-        if k == cfg.sm {
+        if k == last.base {
             if wins.is_empty() {
                 check("serr", want.serr as u64, v[5]);
             }
@@ -1080,7 +1151,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     // (Only nodes whose PI and PO fibres both carried the last frame.)
     let last_cyc = (last_cycle & 7) as u64;
     let fwd_delay_bits = (0..n)
-        .filter(|&k| k != cfg.sm)
+        .filter(|&k| !clock_bases.contains(&k))
         .filter_map(|k| {
             let pi = (k + n - 1) % n;
             let both = [pi, k]
@@ -1090,12 +1161,18 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             (both && d < 64 * TICKS_PER_BIT as u64).then(|| d as f64 / TICKS_PER_BIT as f64)
         })
         .collect();
-    let period_bits = if starts.len() >= 2 {
-        (starts[starts.len() - 1] - starts[0]) as f64
-            / (starts.len() - 1) as f64
-            / TICKS_PER_BIT as f64
-    } else {
+    // (Between consecutive frames of one clock base.)
+    let gaps: Vec<u64> = (1..starts.len())
+        .filter(|&c| {
+            let (a, b) = (&recs[c - 1], &recs[c]);
+            !a.path.is_empty() && !b.path.is_empty() && a.path[0] == b.path[0]
+        })
+        .map(|c| starts[c] - starts[c - 1])
+        .collect();
+    let period_bits = if gaps.is_empty() {
         0.0
+    } else {
+        gaps.iter().sum::<u64>() as f64 / gaps.len() as f64 / TICKS_PER_BIT as f64
     };
     Ok(Report {
         cycles: cfg.cycles,
@@ -1113,6 +1190,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         fs_ticks,
         returned_whole: r.whole.clone(),
         shapes,
+        starts,
     })
 }
 
@@ -1216,7 +1294,7 @@ impl Snapshots {
                         // (Not while a slot is stranded: whether its last
                         // word is checked, stale, or VOID is bit timing.)
                         2 => kind.is_master() && !stranded(cfg, &recs[c as usize]),
-                        3 => k == cfg.sm,
+                        3 => k == recs[c as usize].base,
                         _ => true,
                     };
                     let g = v[i].wrapping_sub(p[i]) & 0xffff;
@@ -1282,12 +1360,16 @@ fn dump_fibre(r: &mut Ring, f: usize, c: u32, frame: &ring::Frame) {
     let mut line = format!("cycle {c} {}:", fibre_name(f, r.h1_seen.len() / 2));
     for i in 0..2 {
         let e = r.cap(f, 4 * capn + 2 * b + i);
-        let stale = if fresh(e, c) { "" } else { "?" };
+        let stale = if fresh(e, c, r.ep[c as usize]) {
+            ""
+        } else {
+            "?"
+        };
         line += &format!(" H{i} {:04x}{stale}", e & 0xffff);
     }
     line += " |";
     for (slot, w) in frame.words.iter().enumerate() {
-        let g = cap_slot(r.cap(f, b * capn + slot), c);
+        let g = cap_slot(r.cap(f, b * capn + slot), c, r.ep[c as usize]);
         let (want, got) = (slot_token(w), slot_token(&g));
         if want == got {
             line += &format!(" {got}");
@@ -1314,15 +1396,16 @@ fn compare_cycle(
     words: &mut u64,
 ) {
     let capn = r.capn;
-    // Whole at the special master: on its PI or its SI fibre.
-    let sm = cfg.sm;
+    let ep = r.ep[c as usize];
+    // Whole at the clock base: on its PI or its SI fibre.
+    let sm = recs[c as usize].base;
     let n_ = cfg.nodes.len();
     for f in [(sm + n_ - 1) % n_, n_ + sm] {
         let h1 = r.cap(f, 4 * capn + 2 * (c & 3) as usize + 1);
-        let mut whole = fresh(h1, c) && (h1 >> 18) & 3 == 1;
+        let mut whole = fresh(h1, c, ep) && (h1 >> 18) & 3 == 1;
         for slot in 0..cfg.slots {
             let e = r.cap(f, (c & 3) as usize * capn + slot);
-            whole &= fresh(e, c) && (e >> 18) & 3 != 0;
+            whole &= fresh(e, c, ep) && (e >> 18) & 3 != 0;
         }
         if whole {
             r.whole[c as usize] = true;
@@ -1391,6 +1474,13 @@ fn compare_cycle(
                 })
         })
     };
+    // The last frame of a clock base that dies at the next cycle's start,
+    // on the fibres back into it: its neighbours' wrap (their loss of
+    // signal, 32 bit times after the death) may cut its tail, as a frame's
+    // round trip outlasts the gap before the next frame (protocol §13).
+    // Nobody alive reads those words.
+    let dies = |k: usize| recs.get(c as usize + 1).is_some_and(|x| !x.nodes[k].up);
+    let cut_back = |f: usize| dies(sm) && (f == (sm + n - 1) % n || f == n + sm);
     for (f, carry) in rec.fibres.iter().enumerate() {
         let hdr = |r: &mut Ring, i: usize| r.cap(f, 4 * capn + 2 * b + i);
         let mut push = |what: String, e: String, g: String| {
@@ -1413,11 +1503,11 @@ fn compare_cycle(
                         r.h1_seen[f][b] = e;
                     }
                     *words += 1;
-                    let ok = fresh(e, c) && (e & 0xffff) as u16 == want;
+                    let ok = fresh(e, c, ep) && (e & 0xffff) as u16 == want;
                     // A window's headers carry what the nodes knew at the
                     // bit-level moment (RWC, FS, HOP): not compared.
                     if !ok && win.is_none() {
-                        let g = if fresh(e, c) {
+                        let g = if fresh(e, c, ep) {
                             format!("{:04x}", e & 0xffff)
                         } else {
                             "none".into()
@@ -1430,7 +1520,7 @@ fn compare_cycle(
                 }
                 for (slot, w) in frame.words.iter().enumerate() {
                     let e = r.cap(f, b * capn + slot);
-                    let g = cap_slot(e, c);
+                    let g = cap_slot(e, c, ep);
                     let (want, got) = (slot_token(w), slot_token(&g));
                     *words += 1;
                     // The Alive bit's phase counts the frames its writer
@@ -1450,7 +1540,8 @@ fn compare_cycle(
                             }
                         }
                     }
-                    if want != got && !legal(slot, &g) && !stranded(slot, &g) {
+                    let cut = cut_back(f) && g == Slot::Missing;
+                    if want != got && !legal(slot, &g) && !stranded(slot, &g) && !cut {
                         push(format!("slot {slot}"), want, got);
                     }
                 }
@@ -1459,7 +1550,7 @@ fn compare_cycle(
                 // No frame on this fibre in this cycle.
                 let e = hdr(r, 1);
                 let stale = e == r.h1_seen[f][b];
-                if !stale && win.is_none() && fresh(e, c) && (e >> 18) & 3 == 1 {
+                if !stale && win.is_none() && fresh(e, c, ep) && (e >> 18) & 3 == 1 {
                     push(
                         "frame".into(),
                         "none".into(),
