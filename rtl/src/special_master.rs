@@ -344,6 +344,7 @@ pub struct SpecialMaster {
     /// most (no code bit, one, or two neighbours: NRZI).
     jk_x: Signal<Local, Bits<10>>,
     jk_z: Signal<Local, Bits<10>>,
+    jk_z1: Signal<Local, Bits<10>>,
     jk_ok: Signal<Local, Bit>,
     /// A packet start whose J K one line-bit error destroyed.
     jk_bad: Signal<Local, Bit>,
@@ -522,6 +523,7 @@ impl Default for SpecialMaster {
             in_code: Default::default(),
             jk_x: Default::default(),
             jk_z: Default::default(),
+            jk_z1: Default::default(),
             jk_ok: Default::default(),
             jk_bad: Default::default(),
             since_jk: Default::default(),
@@ -1342,9 +1344,10 @@ impl Logic for SpecialMaster {
         }
         self.jk_x.next = self.in_code.q.val().get_bits::<10>(10) ^ self.jk_bits.val();
         self.jk_z.next = self.jk_x.val() & (self.jk_x.val() - 1);
+        self.jk_z1.next = self.jk_z.val() - 1;
         self.jk_ok.next = (self.jk_z.val() == 0)
             | ((self.jk_x.val() == (self.jk_z.val() | (self.jk_z.val() >> 1)))
-                & ((self.jk_z.val() & (self.jk_z.val() - 1)) == 0));
+                & ((self.jk_z.val() & self.jk_z1.val()) == 0));
         self.g0.i_code.next = self.in_code.q.val().get_bits::<5>(5);
         self.g1.i_code.next = self.in_code.q.val().get_bits::<5>(0);
         self.jk_bad.next = (self.in_code.q.val().get_bits::<9>(21) == 0x1ff)
