@@ -339,7 +339,8 @@ fn master_instance(
     let sm = st.kind == Kind::SpecialMaster;
     v.push_str(&format!("{lint_off}    wire [15:0] aerr;\n"));
     let extra = if sm {
-        v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n    wire base; // 1: the special master is the clock base from power-up\n");
+        v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
+        v.push_str("    /* verilator lint_off UNUSEDSIGNAL */\n    wire base; // always 1 here: i_prio is 0, the clock base from power-up\n    /* verilator lint_on UNUSEDSIGNAL */\n");
         format!(
             ",\n        .i_period(20'd{}), .i_prio(3'd0), .i_elect(20'd0), .o_serr(serr), .o_hop(hop), .o_cycles(cycles), .o_base(base)",
             st.period
