@@ -316,6 +316,7 @@ fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
         repair_cases(&mut p);
     }
     double_repair_cases(&mut p);
+    restart_cases(&mut p);
     ber_cases(&mut p);
     burst_cases(&mut p);
     offset_cases(&mut p);
@@ -545,6 +546,37 @@ fn repair_cases(p: &mut Planner) {
         p.push(
             format!("{}/repair/{f}@{FAULT_CYCLE}-{fix}", p.ring),
             "repair",
+            cfg,
+        );
+    }
+}
+
+/// Restarts (protocol §12): every slave on rings of up to 16 nodes, 4
+/// sampled on bigger ones, dies before a seeded slot (or the delimiter)
+/// of cycle 3 and gets power again before cycle 6; the case runs 14 cycles
+/// past the restart (the rejoin's window and its tail, then exact).
+fn restart_cases(p: &mut Planner) {
+    let n = p.clean.nodes.len();
+    let mut slaves: Vec<usize> = (0..n)
+        .filter(|&k| !p.clean.nodes[k].kind.is_master())
+        .collect();
+    if n > 16 {
+        sample(&mut slaves, 4, &mut p.rng("restarts"));
+        slaves.sort_unstable();
+    }
+    for k in slaves {
+        let on = FAULT_CYCLE + 3;
+        let key = format!("{}/restart/n{k}", p.ring);
+        let slot = p.slot_of(&key);
+        let mut cfg = p.clean.clone();
+        cfg.cycles = on + 14;
+        cfg.faults = vec![
+            (FAULT_CYCLE, Fault::Kill { node: k, slot }),
+            (on, Fault::Restart { node: k }),
+        ];
+        p.push(
+            format!("{key}@{FAULT_CYCLE}{}-{on}", slot_label(slot)),
+            "restart",
             cfg,
         );
     }
@@ -1173,6 +1205,7 @@ fn all_cases(plan: &Plan) -> Result<Vec<Case>, String> {
             "double",
             "repair",
             "double-repair",
+            "restart",
             "bit-errors",
             "burst",
             "clock-offset",
@@ -1238,19 +1271,14 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
         plan.jobs
     );
     // Build (or find) each ring's Verilator model once, before the workers.
+    // (One model per ring text: a ring with backups or restarts is
+    // another text than the same ring without.)
     let mut built = std::collections::BTreeSet::new();
-    if plan.model_only {
-        built.extend(mine.iter().map(|c| c.ring.clone()));
-    }
-    for c in &mine {
-        if built.insert(c.ring.clone()) {
-            let kinds: Vec<Kind> = c.cfg.nodes.iter().map(|x| x.kind).collect();
+    for c in mine.iter().filter(|_| !plan.model_only) {
+        let v = ring_sim::ring_verilog_of(&c.cfg);
+        if built.insert(std::sync::Arc::as_ptr(&v) as usize) {
             let t = Instant::now();
-            merkur_testbenches::verilator::Model::build_top_traced(
-                &ring_sim::ring_verilog_once(&kinds, c.cfg.slots),
-                "merkur_ring",
-                None,
-            )?;
+            merkur_testbenches::verilator::Model::build_top_traced(&v, "merkur_ring", None)?;
             eprintln!(
                 "  model of {} ready ({:.1} s)",
                 c.ring,

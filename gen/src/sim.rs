@@ -3,7 +3,6 @@
 
 use crate::{read_scenario, write_atomic};
 use merkur_model::ring;
-use merkur_rtl::ring_top::ring_verilog;
 use merkur_rtl::verilog::WAIVERS;
 use merkur_testbenches::ring_sim::{self, Options};
 use std::path::Path;
@@ -11,8 +10,10 @@ use std::path::Path;
 /// Writes `<name>_ring.v` and `waivers.vlt` into `dir`.
 pub fn verilog(path: &Path, dir: &Path) -> Result<(), String> {
     let (_, cfg) = read_scenario(path)?;
-    let kinds: Vec<_> = cfg.nodes.iter().map(|n| n.kind).collect();
-    let v = ring_verilog(&kinds, cfg.slots);
+    // What `merkur sim` runs: backups as clock-base nodes, power-on
+    // resets where the scenario restarts nodes.
+    let kinds = ring_sim::rtl_kinds(&cfg);
+    let v = ring_sim::ring_verilog_of(&cfg);
     std::fs::create_dir_all(dir)
         .map_err(|e| format!("error: --output {}: cannot create: {e}", dir.display()))?;
     let file = dir.join(format!("{}_ring.v", cfg.name));

@@ -232,7 +232,9 @@ fn sim_refuses_what_the_rtl_does_not_run_and_bad_wave_names() {
     assert_eq!(o.status.code(), Some(2));
     let e = text(&o.stderr);
     assert!(
-        e.contains("restart node2") && e.contains("not simulated in RTL"),
+        e.contains("restart node3")
+            && e.contains("a master's restart")
+            && e.contains("not simulated in RTL"),
         "{e}"
     );
     let o = merkur(&["sim", "tb-data/ring8_rtx.toml"]);
@@ -284,6 +286,7 @@ fn bounded_campaign_agrees_with_the_model() {
         "clock-offset",
         "sm-fibres",
         "double-repair",
+        "restart",
         "burst",
     ] {
         assert!(
@@ -302,6 +305,8 @@ fn bounded_campaign_agrees_with_the_model() {
     // The special master's four fibres, three points each, with and
     // without host writes.
     assert_eq!(json.matches("\"class\": \"sm-fibres\"").count(), 24);
+    // Every slave (6 of the 8 nodes) killed and restarted (protocol §12).
+    assert_eq!(json.matches("\"class\": \"restart\"").count(), 6);
     // Repaired double breaks: every one leaves failsafe (model; the RTL
     // agreed: no mismatches above).
     let report: serde_json::Value = serde_json::from_str(&json).unwrap();

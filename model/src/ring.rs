@@ -1909,10 +1909,12 @@ impl Ring {
                 // Stream controllers act once the node is armed, but for a
                 // TST where DATA is expected on INPUT (§12, a restarted node
                 // between wrapped neighbours).
+                // (Without the grace after unwrapping: the RTL keeps this
+                // decision free of the grace counter, protocol §12.)
                 let in_fail = if armed {
                     hard_in || (soft && words(inp))
                 } else {
-                    tst_fails && self.lit(fi) && self.carries_tst(fi)
+                    mode == Mode::N && self.lit(fi) && self.carries_tst(fi)
                 };
                 let bsr_fail = armed && (hard_bsr || (soft && words(bsr)));
                 let new = match mode {

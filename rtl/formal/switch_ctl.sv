@@ -17,6 +17,12 @@
 // safe becomes whole again), so "failsafe is left only by reset" is not a
 // property of this design; what is proved instead is that a WU node in
 // failsafe unwraps only at a DATA header on BSR (`reint_wu`).
+//
+// Restart and rejoin (§12): an unarmed node in mode N wraps up on a TST on
+// its lit INPUT (and on nothing else), a wrapped node reintegrates armed or
+// not, and a node still rejoining (`joined` not yet set: from power-up
+// until a frame boundary in mode N, armed, with no TST on INPUT or BSR)
+// turns round at its WU unwrap (WU -> WD) when a TST arrives on INPUT.
 module switch_ctl_props (
     input wire clock,
     input wire i_armed,
@@ -32,6 +38,8 @@ module switch_ctl_props (
     input wire i_frame_start,
     input wire i_bsr_data,
     input wire i_in_pkt,
+    input wire i_tst_in,
+    input wire i_tst_bsr,
     input wire [19:0] i_cs_timeout,
     input wire [3:0] i_pi,
     input wire [3:0] i_si,
@@ -48,18 +56,19 @@ module switch_ctl_props (
     wire [6:0] settle_q;
     wire [8:0] ack_time_q;
     wire [19:0] grace_q;
-    wire seen_ack_q, pend_up_q;
+    wire seen_ack_q, pend_up_q, joined_q;
     switch_ctl dut (
         .clock(clock), .i_armed(i_armed), .i_hard_in(i_hard_in),
         .i_hard_bsr(i_hard_bsr), .i_run_in(i_run_in), .i_run_bsr(i_run_bsr),
         .i_los_in(i_los_in), .i_los_bsr(i_los_bsr), .i_rw(i_rw), .i_fs(i_fs),
         .i_tst_ack(i_tst_ack), .i_frame_start(i_frame_start),
         .i_bsr_data(i_bsr_data), .i_in_pkt(i_in_pkt),
+        .i_tst_in(i_tst_in), .i_tst_bsr(i_tst_bsr),
         .i_cs_timeout(i_cs_timeout), .o_mode(o_mode), .o_change(o_change),
         .o_relink(o_relink), .o_tst_start(o_tst_start), .o_fs_set(o_fs_set),
         .o_grace_over(o_grace_over),
         .settle_q(settle_q), .ack_time_q(ack_time_q), .grace_q(grace_q),
-        .seen_ack_q(seen_ack_q), .pend_up_q(pend_up_q)
+        .seen_ack_q(seen_ack_q), .pend_up_q(pend_up_q), .joined_q(joined_q)
     );
 
     wire [3:0] o_input, o_bsr;
@@ -96,23 +105,30 @@ module switch_ctl_props (
     reg wu_ok = 1'b0;
     // Grace after unwrapping: CS timeout / 2 clocks (§12).
     reg [19:0] grace = 20'd0;
+    // Whole again after power-up (§12).
+    reg joined = 1'b0;
     wire settled = since >= SETTLE;
     wire acting = i_armed & settled;
+    // An unarmed node's one decision: a TST on its lit INPUT in mode N.
+    wire wake = ~i_armed & settled & (o_mode == N) & i_tst_in & ~i_los_in;
+    // A rejoining node's WU unwrap turns round when a TST is on INPUT.
+    wire ref_turn = (o_mode == WU) & ~joined & i_tst_in;
     always @(posedge clock) begin
         since <= o_change ? 9'd0 : (since == 9'd511 ? since : since + 9'd1);
         grace <= (o_change & (next_mode == N)) ? (i_cs_timeout >> 1)
                : (grace == 0 ? grace : grace - 20'd1);
+        if (i_armed & (o_mode == N) & i_frame_start & ~i_tst_in & ~i_tst_bsr) joined <= 1'b1;
         if (o_change) begin
             acks <= 0;
             wu_ok <= 1'b0;
-        end else if (acting & (o_mode != N)) begin
+        end else if (settled & (o_mode != N)) begin
             if (i_tst_ack & (acks != 9'd511)) acks <= acks + 9'd1;
             if ((o_mode == WU) & ((acks != 0 | i_fs) & i_bsr_data)) wu_ok <= 1'b1;
         end
     end
     // The mode after this clock edge.
     reg [1:0] next_mode;
-    always @(*) next_mode = o_change ? (o_mode == N ? ref_new_n : N) : o_mode;
+    always @(*) next_mode = o_change ? (o_mode == N ? (i_armed ? ref_new_n : WU) : (ref_turn ? WD : N)) : o_mode;
 
     // ---- properties ----------------------------------------------------
     always @(*) begin
@@ -124,11 +140,14 @@ module switch_ctl_props (
             WD: row_wd: assert (o_input == i_pi && o_bsr == i_si && o_po == i_bss && o_so == i_output);
             default: row_n: assert (o_input == i_pi && o_bsr == i_si && o_po == i_output && o_so == i_bss);
         endcase
-        // Nothing is decided before the first good frame or while the
-        // receivers settle after a change (§10).
-        if (!acting) begin
-            quiet_change: assert (!o_change);
-            quiet_fs: assert (!o_fs_set);
+        // Nothing is decided while the receivers settle after a change
+        // (§10); before the first good frame, no failsafe, and in mode N
+        // only the wrap on a TST (§12).
+        if (!settled) quiet_change: assert (!o_change);
+        if (!acting) quiet_fs: assert (!o_fs_set);
+        if (!i_armed && o_mode == N) begin
+            unarmed_wake: assert (o_change == wake);
+            if (wake) unarmed_wake_wu: assert (next_mode == WU);
         end
         // Mode N: the model's decision, and exactly it.
         if (acting && o_mode == N) begin
@@ -150,9 +169,14 @@ module switch_ctl_props (
         // ACK (in failsafe: the header alone), never inside a packet on INPUT.
         if (o_change && o_mode == WD) reint_wd: assert (acks >= REINTEGRATE && i_frame_start);
         if (o_change && o_mode == WU) reint_wu: assert (!i_in_pkt && (wu_ok || ((acks != 0 | i_fs) & i_bsr_data)));
-        // TST starts exactly when a node wraps; the receivers move exactly
-        // when the node goes into or out of WU (INPUT and BSR swap).
-        tst_start: assert (o_tst_start == (o_change && o_mode == N));
+        // A WU node turns round (WD) only while rejoining with a TST on
+        // INPUT; otherwise an unwrap goes to N.
+        if (o_change && o_mode == WU) turn_rule: assert ((next_mode == WD) == ref_turn);
+        if (o_change && o_mode == WD) wd_to_n: assert (next_mode == N);
+        // TST starts exactly when a node wraps or turns round; the
+        // receivers move exactly when the node goes into or out of WU
+        // (INPUT and BSR swap).
+        tst_start: assert (o_tst_start == (o_change && (o_mode == N || next_mode == WD)));
         relink: assert (o_relink == (o_change && (o_mode == WU || next_mode == WU)));
         // After unwrapping, a TST on a mode-N input is no failure for half
         // a CS timeout (§12).
@@ -163,6 +187,7 @@ module switch_ctl_props (
         inv_acks: assert (ack_time_q == acks && seen_ack_q == (acks != 0));
         inv_pend: assert (pend_up_q == (wu_ok && o_mode == WU));
         inv_grace: assert (grace_q == grace);
+        inv_joined: assert (joined_q == joined);
         if (o_mode == N) inv_n: assert (acks == 0 && !wu_ok);
 
         // Every decision happens (the properties above are not vacuous).
@@ -175,5 +200,7 @@ module switch_ctl_props (
         cover_wu_n: cover (o_change && o_mode == WU && !i_fs);
         cover_wu_n_fs: cover (o_change && o_mode == WU && i_fs && !i_tst_ack && acks == 0);
         cover_wd_n: cover (o_change && o_mode == WD);
+        cover_wake: cover (wake && o_change);
+        cover_turn: cover (o_change && o_mode == WU && next_mode == WD);
     end
 endmodule

@@ -278,6 +278,7 @@ fn switch_ctl() -> Proof {
         "grace_q",
         "seen_ack_q",
         "pend_up_q",
+        "joined_q",
     ];
     Proof {
         name: "switch_ctl",

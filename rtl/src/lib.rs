@@ -57,6 +57,7 @@ pub mod monitor;
 pub mod nrzi_tx;
 pub mod pkt_tx;
 pub mod port_rx;
+pub mod power_on;
 pub mod readable;
 pub mod retime;
 pub mod ring_top;

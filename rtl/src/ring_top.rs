@@ -107,6 +107,10 @@ pub mod cfg {
     pub const BREAK: u32 = 8;
     /// Node: 1 dead (both its output fibres dark), 0 alive.
     pub const KILL: u32 = 10;
+    /// Node: 1 holds the node in its power-on reset (a restart, protocol
+    /// §12; only a ring top built with restarts,
+    /// [`super::ring_verilog_with`], connects it), 0 releases it.
+    pub const POR: u32 = 11;
     /// Clock-base node (`merkur_special_master`): backup priority (0: the
     /// clock base from power-up; protocol §8).
     pub const PRIO: u32 = 5;
@@ -377,7 +381,7 @@ const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated rin
 // |---|---|---|---|
 // | `clk` | in | 1 | simulation tick |
 // | `i_index` | in | 16 | the node's index (constant) |
-// | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | the ring top's configuration write; this node's when `i_cfg_sel` = `i_index` (fields INC, PHASE, KILL, ADDRESS, REQUEST, SENSOR) |
+// | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | the ring top's configuration write; this node's when `i_cfg_sel` = `i_index` (fields INC, PHASE, KILL, POR, ADDRESS, REQUEST, SENSOR) |
 // | `i_incyc`, `i_innew` | in | 3, 1 | CYC of the last DATA frame on the fibre that brings the node its frames, and its end (one monitor clock) |
 // | `i_pi`, `i_si` | in | 4, 4 | the PI and SI fibres' last 4 line levels (oldest in bit 0) |
 // | `i_slots_m1`, `i_cs_timeout`, `i_period` | in | 12, 20, 20 | the ring's configuration |
@@ -386,10 +390,11 @@ const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated rin
 // | `o_hs` | out | 1 | a new half of the node's DDR output pair starts on the line this tick |
 // | `o_first` | out | 1 | the line carries the first half (bit 0) of the node's DDR pair |
 // | `o_dead` | out | 1 | the node is dead (its output fibres dark) |
+// | `o_por` | out | 1 | the node is held in its power-on reset (a restart) |
 // | `o_pi` … `o_period` | out | | the inputs above and the node's address, user request `{fs, irq2, irq1}` and sensor value (chosen by `i_incyc`), registered on `o_nclk` |
 // | `o_nirq1`, `o_nirq2`, `o_nirqfs`, `o_nirqrc`, `o_nirqfsc` | out | 16 each | interrupt pulses counted |
 module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_incyc, i_innew, i_pi, i_si,
-    i_slots_m1, i_cs_timeout, i_period, i_irq, o_nclk, o_hs, o_first, o_dead, o_pi, o_si, o_addr, o_slots_m1,
+    i_slots_m1, i_cs_timeout, i_period, i_irq, o_nclk, o_hs, o_first, o_dead, o_por, o_pi, o_si, o_addr, o_slots_m1,
     o_cs_timeout, o_period, o_ureq, o_sens, o_nirq1, o_nirq2, o_nirqfs, o_nirqrc, o_nirqfsc);
     input wire clk;
     input wire [15:0] i_index;
@@ -409,6 +414,7 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     output wire o_hs;
     output wire o_first;
     output reg o_dead = 1'b0;
+    output reg o_por = 1'b0;
     output reg [3:0] o_pi = 4'd0;
     output reg [3:0] o_si = 4'd0;
     output reg [11:0] o_addr = 12'd0;
@@ -438,6 +444,7 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
         if (mine && i_cfg_field == 8'd@INC@) inc <= i_cfg_val;
         if (mine && i_cfg_field == 8'd@PHASE@) acc <= i_cfg_val;
         if (mine && i_cfg_field == 8'd@KILL@) o_dead <= i_cfg_val[0];
+        if (mine && i_cfg_field == 8'd@POR@) o_por <= i_cfg_val[0];
     end
     always @(negedge clk) enl <= en;
     assign o_nclk = clk & enl;
@@ -486,6 +493,14 @@ endmodule
 
 /// The Verilog of every module the ring needs plus the `merkur_ring` top.
 pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
+    ring_verilog_with(kinds, slots, false)
+}
+
+/// [`ring_verilog`], with `restarts`: every node with a power-on reset
+/// ([`crate::power_on`]) that configuration field [`cfg::POR`] drives, for
+/// scenarios that restart nodes (protocol §12). Without, the nodes keep
+/// rust-hdl's text (a reset on every register costs simulation time).
+pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String {
     let n = kinds.len();
     let cap = cap_slots(slots);
     let mut out = String::new();
@@ -502,7 +517,12 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
         }
     }
     for k in need {
-        out.push_str(&node_verilog(k, slots));
+        let v = node_verilog(k, slots);
+        if restarts {
+            out.push_str(&crate::power_on::with_power_on_reset(&v, &[module_name(k)]));
+        } else {
+            out.push_str(&v);
+        }
     }
     out.push_str(&rename_top(
         &block_verilog(crate::monitor::Monitor::new(false)),
@@ -518,17 +538,18 @@ pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
             .replace("@INC@", &cfg::INC.to_string())
             .replace("@PHASE@", &cfg::PHASE.to_string())
             .replace("@KILL@", &cfg::KILL.to_string())
+            .replace("@POR@", &cfg::POR.to_string())
             .replace("@ADDRESS@", &cfg::ADDRESS.to_string())
             .replace("@REQUEST@", &cfg::REQUEST.to_string())
             .replace("@SENSOR@", &cfg::SENSOR.to_string()),
     );
-    out.push_str(&top(kinds, cap));
+    out.push_str(&top(kinds, cap, restarts));
     out
 }
 
 /// Node `k` of the ring top: its surroundings (`merkur_node_env`) and its
 /// instance.
-fn node(k: usize, kind: Kind, n: usize) -> String {
+fn node(k: usize, kind: Kind, n: usize, restarts: bool) -> String {
     let mut v = String::new();
     let w = |v: &mut String, s: &str| {
         v.push_str(s);
@@ -561,7 +582,7 @@ fn node(k: usize, kind: Kind, n: usize) -> String {
              \x20   wire [1:0] mode_{k};\n\
              \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
              \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
-             \x20   wire nclk_{k}, hs_{k}, first_{k}, dead_{k};\n\
+             \x20   wire nclk_{k}, hs_{k}, first_{k}, dead_{k}{por_w};\n{por_u}\
              \x20   wire [3:0] pi_r_{k}, si_r_{k};\n    wire [11:0] addr_r_{k}, slots_m1_r_{k};\n    wire [19:0] cs_timeout_r_{k};\n    wire [2:0] ureq_r_{k};\n\
              \x20   wire [15:0] nirq1_{k}, nirq2_{k}, nirqfs_{k}, nirqrc_{k}, nirqfsc_{k};\n\
              \x20   wire irq1_{k}, irq2_{k}, irqfs_{k}, irqrc_{k}, irqfsc_{k};\n\
@@ -571,15 +592,26 @@ fn node(k: usize, kind: Kind, n: usize) -> String {
              \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val),\n\
              \x20       .i_incyc(incyc_{k}), .i_innew(innew_{k}), .i_pi({pi}), .i_si({si}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_period(period),\n\
              \x20       .i_irq({{irqfsc_{k}, irqrc_{k}, irqfs_{k}, irq2_{k}, irq1_{k}}}),\n\
-             \x20       .o_nclk(nclk_{k}), .o_hs(hs_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
+             \x20       .o_nclk(nclk_{k}), .o_hs(hs_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_por(por_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
              \x20       .o_slots_m1(slots_m1_r_{k}), .o_cs_timeout(cs_timeout_r_{k}), .o_period(period_r_{k}), .o_ureq(ureq_r_{k}), .o_sens(sens_r_{k}),\n\
              \x20       .o_nirq1(nirq1_{k}), .o_nirq2(nirq2_{k}), .o_nirqfs(nirqfs_{k}), .o_nirqrc(nirqrc_{k}), .o_nirqfsc(nirqfsc_{k}));\n\
              \x20   wire [1:0] po_{k}, so_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
-            kind = kind.name()
+            kind = kind.name(),
+            por_w = if restarts { format!(", por_{k}") } else { String::new() },
+            por_u = if restarts {
+                String::new()
+            } else {
+                format!("    /* verilator lint_off UNUSEDSIGNAL */\n    wire por_{k}; // no restart in this ring: the node has no power-on reset\n    /* verilator lint_on UNUSEDSIGNAL */\n")
+            },
         ),
     );
+    let por = if restarts {
+        format!(".i_por(por_{k}), ")
+    } else {
+        String::new()
+    };
     let common = format!(
-        ".clock(nclk_{k}), .i_pi(pi_r_{k}), .i_si(si_r_{k}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_r_{k}), .i_slots_m1(slots_m1_r_{k}), .i_cs_timeout(cs_timeout_r_{k}), .i_irq1(ureq_r_{k}[0]), .i_irq2(ureq_r_{k}[1]), .i_fs_req(ureq_r_{k}[2])"
+        "{por}.clock(nclk_{k}), .i_pi(pi_r_{k}), .i_si(si_r_{k}), .o_po(po_{k}), .o_so(so_{k}), .i_address(addr_r_{k}), .i_slots_m1(slots_m1_r_{k}), .i_cs_timeout(cs_timeout_r_{k}), .i_irq1(ureq_r_{k}[0]), .i_irq2(ureq_r_{k}[1]), .i_fs_req(ureq_r_{k}[2])"
     );
     match kind {
         Kind::Sensor | Kind::Actuator => {
@@ -791,7 +823,7 @@ fn read_muxes(kinds: &[Kind]) -> String {
     v
 }
 
-fn top(kinds: &[Kind], cap: usize) -> String {
+fn top(kinds: &[Kind], cap: usize, restarts: bool) -> String {
     let n = kinds.len();
     let nf = 2 * n;
     let capw = (8 * cap).trailing_zeros() as usize;
@@ -835,7 +867,7 @@ fn top(kinds: &[Kind], cap: usize) -> String {
     w(&mut v, "    /* verilator lint_on UNUSEDSIGNAL */");
     // Nodes: their surroundings (`merkur_node_env`: clock, inputs), instances.
     for (k, &kind) in kinds.iter().enumerate() {
-        v.push_str(&node(k, kind, n));
+        v.push_str(&node(k, kind, n, restarts));
     }
     // Capture entries carry the ring's frame count when written (its low 8
     // bits: the frames every clock-base node has sent, the special master

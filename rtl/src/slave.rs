@@ -508,6 +508,8 @@ impl Logic for Slave {
         self.swc.i_frame_start.next = self.inpkt_was.q.val() & !self.rx_in.o_inpkt.val();
         self.inpkt_was.d.next = self.rx_in.o_inpkt.val();
         self.swc.i_in_pkt.next = self.rx_in.o_inpkt.val();
+        self.swc.i_tst_in.next = self.rx_in.o_tst.val();
+        self.swc.i_tst_bsr.next = self.rx_bsr.o_tst.val();
         self.swc.i_bsr_data.next = self.rx_bsr.o_wvalid.val()
             & (self.rx_bsr.o_kind.val() == 0)
             & self.rx_bsr.o_ok.val()

@@ -1041,6 +1041,8 @@ impl Logic for SpecialMaster {
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
         self.swc.i_frame_start.next = self.unwrap_at.val();
         self.swc.i_in_pkt.next = self.rx_in.o_inpkt.val();
+        self.swc.i_tst_in.next = self.rx_in.o_tst.val();
+        self.swc.i_tst_bsr.next = self.rx_bsr.o_tst.val();
         self.swc.i_bsr_data.next = self.rx_bsr.o_wvalid.val()
             & (self.rx_bsr.o_kind.val() == 0)
             & self.rx_bsr.o_ok.val()

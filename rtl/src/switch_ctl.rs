@@ -25,7 +25,14 @@
 //! - stream controllers act only once the node is armed (its first good
 //!   frame) and not for [`crate::slave::SETTLE_CLOCKS`] after a change (the
 //!   receivers lock to their new lines); after unwrapping, a TST where DATA
-//!   is expected is not a failure for half a CS timeout (`o_grace_over`).
+//!   is expected is not a failure for half a CS timeout (`o_grace_over`);
+//! - restart and rejoin (§12): an unarmed node in mode N wraps up (WU) on a
+//!   TST where DATA is expected on a lit INPUT (a restarted node between
+//!   wrapped neighbours), and unwraps like an armed one; a node that is
+//!   still rejoining (from power-up until, at a frame boundary, it is in
+//!   mode N, armed, with no TST on INPUT or BSR: `joined`) turns round at
+//!   its WU unwrap (WU → WD) when a TST arrives on INPUT (its downstream
+//!   neighbour is wrapped towards it), so the ring stays closed.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -40,6 +47,7 @@
 //! | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
 //! | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
 //! | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+//! | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::stream_ctrl`] `o_tst`) |
 //! | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
 //! | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
@@ -90,6 +98,10 @@ pub struct SwitchCtl {
     pub i_bsr_data: Signal<In, Bit>,
     /// A packet is arriving on INPUT.
     pub i_in_pkt: Signal<In, Bit>,
+    /// A TST heard on INPUT.
+    pub i_tst_in: Signal<In, Bit>,
+    /// A TST heard on BSR.
+    pub i_tst_bsr: Signal<In, Bit>,
     /// CS timeout, clocks.
     pub i_cs_timeout: Signal<In, Bits<20>>,
     /// Mode.
@@ -115,11 +127,15 @@ pub struct SwitchCtl {
     ack_done: DFF<Bit>,
     seen_ack: DFF<Bit>,
     pend_up: DFF<Bit>,
+    joined: DFF<Bit>,
     new_mode: Signal<Local, Bits<2>>,
     fail_in: Signal<Local, Bit>,
     fail_bsr: Signal<Local, Bit>,
     up_ok: Signal<Local, Bit>,
     acting: Signal<Local, Bit>,
+    live: Signal<Local, Bit>,
+    wake: Signal<Local, Bit>,
+    turn: Signal<Local, Bit>,
     in_n: Signal<Local, Bit>,
     go_wu: Signal<Local, Bit>,
     go_wd: Signal<Local, Bit>,
@@ -145,6 +161,8 @@ impl Default for SwitchCtl {
             i_frame_start: Default::default(),
             i_bsr_data: Default::default(),
             i_in_pkt: Default::default(),
+            i_tst_in: Default::default(),
+            i_tst_bsr: Default::default(),
             i_cs_timeout: Default::default(),
             o_mode: Default::default(),
             o_change: Default::default(),
@@ -163,11 +181,15 @@ impl Default for SwitchCtl {
             ack_done: Default::default(),
             seen_ack: Default::default(),
             pend_up: Default::default(),
+            joined: Default::default(),
             new_mode: Default::default(),
             fail_in: Default::default(),
             fail_bsr: Default::default(),
             up_ok: Default::default(),
             acting: Default::default(),
+            live: Default::default(),
+            wake: Default::default(),
+            turn: Default::default(),
             in_n: Default::default(),
             go_wu: Default::default(),
             go_wd: Default::default(),
@@ -181,7 +203,9 @@ impl Default for SwitchCtl {
 impl Logic for SwitchCtl {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, mode, settle, busy, grace, ack_time, ack_done, seen_ack, pend_up);
+        dff_setup!(
+            self, clock, mode, settle, busy, grace, ack_time, ack_done, seen_ack, pend_up, joined
+        );
         if self.grace.q.val() != 0 {
             self.grace.d.next = self.grace.q.val() - 1;
         }
@@ -193,25 +217,46 @@ impl Logic for SwitchCtl {
         self.busy.d.next = self.settle.q.val() > 1;
         // The decisions as flat expressions (issue 20: a few levels of
         // logic from registered inputs to the change).
-        self.acting.next = self.i_armed.val() & !self.busy.q.val();
+        self.live.next = !self.busy.q.val();
+        self.acting.next = self.i_armed.val() & self.live.val();
         // In failsafe a DATA header on BSR is as good as the ACK (§12).
         self.up_ok.next = self.seen_ack.q.val() | self.i_fs.val();
         // A run of bad words wraps only a ring not known to be wrapped.
         self.fail_in.next = self.i_hard_in.val() | (self.i_run_in.val() & !self.i_rw.val());
         self.fail_bsr.next = self.i_hard_bsr.val() | (self.i_run_bsr.val() & !self.i_rw.val());
         self.in_n.next = self.mode.q.val() == 0;
-        self.go_wu.next = self.acting.val() & self.in_n.val() & self.fail_in.val();
+        // An unarmed node wraps on a TST where DATA is expected on a lit
+        // INPUT, and only on that (§12: a restarted node between wrapped
+        // neighbours; no frame could reach it otherwise). (No grace test:
+        // an unarmed node has not unwrapped into mode N, which takes a
+        // frame through its INPUT, and the decision stays free of the
+        // 20-bit grace counter.)
+        self.wake.next =
+            !self.i_armed.val() & self.live.val() & self.i_tst_in.val() & !self.i_los_in.val();
+        self.go_wu.next =
+            self.in_n.val() & ((self.acting.val() & self.fail_in.val()) | self.wake.val());
         self.go_wd.next =
             self.acting.val() & self.in_n.val() & !self.fail_in.val() & self.fail_bsr.val();
         self.bsr_ok.next = self.up_ok.val() & self.i_bsr_data.val();
-        self.unwrap.next = self.acting.val()
+        // Unwrapping needs no first frame: a restarted node's neighbours
+        // reintegrate with it before it can have one (§12).
+        self.unwrap.next = self.live.val()
             & (((self.mode.q.val() == 2) & self.ack_done.q.val() & self.i_frame_start.val())
                 | ((self.mode.q.val() == 1)
                     & (self.pend_up.q.val() | self.bsr_ok.val())
                     & !self.i_in_pkt.val()));
+        // A rejoining node whose downstream neighbour is wrapped towards
+        // it (its TST on INPUT, SI in WU) turns round instead (§12).
+        self.turn.next = self.unwrap.val()
+            & (self.mode.q.val() == 1)
+            & !self.joined.q.val()
+            & self.i_tst_in.val();
         self.new_mode.next = self.mode.q.val();
         if self.unwrap.val() {
             self.new_mode.next = 0.into();
+        }
+        if self.turn.val() {
+            self.new_mode.next = 2.into();
         }
         if self.go_wd.val() {
             self.new_mode.next = 2.into();
@@ -221,7 +266,7 @@ impl Logic for SwitchCtl {
         }
         self.o_change.next = self.go_wu.val() | self.go_wd.val() | self.unwrap.val();
         self.o_relink.next = self.go_wu.val() | (self.unwrap.val() & (self.mode.q.val() == 1));
-        self.o_tst_start.next = self.go_wu.val() | self.go_wd.val();
+        self.o_tst_start.next = self.go_wu.val() | self.go_wd.val() | self.turn.val();
         // Mode N: the second structural fault; or both lines dark at once.
         // Wrapped: INPUT dark.
         self.o_fs_set.next = self.acting.val()
@@ -231,23 +276,33 @@ impl Logic for SwitchCtl {
                 | (!self.in_n.val() & self.i_los_in.val()));
         // Wrapped: the partner's ACKed TST, and a WU node's DATA header on
         // BSR after it.
-        self.ack_inc.next = self.acting.val()
+        self.ack_inc.next = self.live.val()
             & !self.in_n.val()
             & self.i_tst_ack.val()
             & (self.ack_time.q.val() != 511);
-        if self.acting.val() & !self.in_n.val() & self.i_tst_ack.val() {
+        if self.live.val() & !self.in_n.val() & self.i_tst_ack.val() {
             self.seen_ack.d.next = true;
         }
         if self.ack_inc.val() {
             self.ack_time.d.next = self.ack_time.q.val() + 1;
         }
-        if self.acting.val() & (self.mode.q.val() == 1) & self.bsr_ok.val() {
+        if self.live.val() & (self.mode.q.val() == 1) & self.bsr_ok.val() {
             self.pend_up.d.next = true;
         }
         // `ack_done` is `ack_time >= REINTEGRATE_CLOCKS`, in its own
         // register (cleared with `ack_time` at a change, below).
         self.ack_done.d.next = (self.ack_time.q.val() >= self.reintegrate.val())
             | ((self.ack_time.q.val() == self.reint_m1.val()) & self.ack_inc.val());
+        // Whole again (§12): at a frame boundary in mode N, armed, with no
+        // TST on INPUT or BSR.
+        if self.i_armed.val()
+            & self.in_n.val()
+            & self.i_frame_start.val()
+            & !self.i_tst_in.val()
+            & !self.i_tst_bsr.val()
+        {
+            self.joined.d.next = true;
+        }
         if self.o_change.val() {
             self.mode.d.next = self.new_mode.val();
             self.settle.d.next = self.settle_start.val();
@@ -256,7 +311,7 @@ impl Logic for SwitchCtl {
             self.ack_done.d.next = false;
             self.seen_ack.d.next = false;
             self.pend_up.d.next = false;
-            if self.unwrap.val() {
+            if self.unwrap.val() & !self.turn.val() {
                 self.grace.d.next = self.i_cs_timeout.val() >> 1;
             }
         }
@@ -306,6 +361,10 @@ pub struct SwitchPipe {
     pub i_bsr_data: Signal<In, Bit>,
     /// A packet is arriving on INPUT.
     pub i_in_pkt: Signal<In, Bit>,
+    /// A TST heard on INPUT.
+    pub i_tst_in: Signal<In, Bit>,
+    /// A TST heard on BSR.
+    pub i_tst_bsr: Signal<In, Bit>,
     /// CS timeout, clocks.
     pub i_cs_timeout: Signal<In, Bits<20>>,
     /// Switchbox mode.
@@ -331,6 +390,8 @@ pub struct SwitchPipe {
     frame_start: DFF<Bit>,
     bsr_data: DFF<Bit>,
     in_pkt: DFF<Bit>,
+    tst_in: DFF<Bit>,
+    tst_bsr: DFF<Bit>,
     mode: DFF<Bits<2>>,
     change: DFF<Bit>,
     relink: DFF<Bit>,
@@ -355,6 +416,8 @@ impl Logic for SwitchPipe {
             frame_start,
             bsr_data,
             in_pkt,
+            tst_in,
+            tst_bsr,
             mode,
             change,
             relink,
@@ -373,6 +436,8 @@ impl Logic for SwitchPipe {
         self.frame_start.d.next = self.i_frame_start.val();
         self.bsr_data.d.next = self.i_bsr_data.val();
         self.in_pkt.d.next = self.i_in_pkt.val();
+        self.tst_in.d.next = self.i_tst_in.val();
+        self.tst_bsr.d.next = self.i_tst_bsr.val();
         self.ctl.i_armed.next = self.i_armed.val();
         self.ctl.i_hard_in.next = self.hard_in.q.val();
         self.ctl.i_hard_bsr.next = self.hard_bsr.q.val();
@@ -386,6 +451,8 @@ impl Logic for SwitchPipe {
         self.ctl.i_frame_start.next = self.frame_start.q.val();
         self.ctl.i_bsr_data.next = self.bsr_data.q.val();
         self.ctl.i_in_pkt.next = self.in_pkt.q.val();
+        self.ctl.i_tst_in.next = self.tst_in.q.val();
+        self.ctl.i_tst_bsr.next = self.tst_bsr.q.val();
         self.ctl.i_cs_timeout.next = self.i_cs_timeout.val();
         self.mode.d.next = self.ctl.o_mode.val();
         self.change.d.next = self.ctl.o_change.val();

@@ -20,7 +20,7 @@ use merkur_model::ring::{self, table1, Carry, CycleRecord, EventKind, HeaderRx, 
 use merkur_model::scenario::{IrqLine, Kind};
 use merkur_rtl::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
 use merkur_rtl::ring_top::{
-    cap_slots, cfg as field, ring_verilog, status as st, INC_NOMINAL, TICKS_PER_BIT,
+    cap_slots, cfg as field, ring_verilog_with, status as st, INC_NOMINAL, TICKS_PER_BIT,
 };
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -146,14 +146,11 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
             "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
         );
     }
-    if let Some((i, (c, f))) = cfg
-        .faults
-        .iter()
-        .enumerate()
-        .find(|(_, (_, f))| matches!(f, Fault::Restart { .. }))
-    {
+    if let Some((i, (c, f))) = cfg.faults.iter().enumerate().find(
+        |(_, (_, f))| matches!(f, Fault::Restart { node } if cfg.nodes[*node].kind.is_master()),
+    ) {
         return Some(format!(
-            "fault[{i}] (cycle {c}, {f}): a node's restart (protocol §12) is in the model only; the RTL nodes have no reset yet"
+            "fault[{i}] (cycle {c}, {f}): a master's restart (protocol §12: it reloads its memory from the ring) is in the model only; the RTL restarts slaves"
         ));
     }
     if let Some(s) = cfg.last_critical() {
@@ -263,6 +260,8 @@ enum When {
     FrameEnded(usize),
     /// A flip of the SEC on this fibre: armed when this many SECs passed.
     Secs(usize, u64),
+    /// When the clock base has started the cycle's frame (a restart).
+    Started,
 }
 
 struct Ring {
@@ -399,20 +398,44 @@ fn fibre_name(f: usize, n: usize) -> String {
     }
 }
 
-/// The ring Verilog of `kinds` with `slots` slots, generated once per
-/// process: a campaign builds each ring's model and then runs hundreds of
-/// cases of it, and generating ring100's text takes about 0.1 s.
-pub fn ring_verilog_once(kinds: &[Kind], slots: usize) -> std::sync::Arc<String> {
+/// The RTL node kind of each node of `cfg`: a backup master carries the
+/// special master's logic (protocol §8), so in the RTL it is a
+/// `merkur_special_master` with a priority.
+pub fn rtl_kinds(cfg: &Config) -> Vec<Kind> {
+    cfg.nodes
+        .iter()
+        .map(|x| match x.backup {
+            Some(_) => Kind::SpecialMaster,
+            None => x.kind,
+        })
+        .collect()
+}
+
+/// The ring Verilog that runs `cfg` ([`ring_verilog_once`] of its RTL
+/// kinds, with power-on resets where it restarts nodes).
+pub fn ring_verilog_of(cfg: &Config) -> std::sync::Arc<String> {
+    let restarts = cfg
+        .faults
+        .iter()
+        .any(|(_, f)| matches!(f, Fault::Restart { .. }));
+    ring_verilog_once(&rtl_kinds(cfg), cfg.slots, restarts)
+}
+
+/// The ring Verilog of `kinds` with `slots` slots (and power-on resets
+/// with `restarts`), generated once per process: a campaign builds each
+/// ring's model and then runs hundreds of cases of it, and generating
+/// ring100's text takes about 0.1 s.
+pub fn ring_verilog_once(kinds: &[Kind], slots: usize, restarts: bool) -> std::sync::Arc<String> {
     use std::collections::HashMap;
     use std::sync::{Arc, Mutex, OnceLock};
-    type Done = HashMap<(String, usize), Arc<String>>;
+    type Done = HashMap<(String, usize, bool), Arc<String>>;
     static DONE: OnceLock<Mutex<Done>> = OnceLock::new();
     let done = DONE.get_or_init(|| Mutex::new(HashMap::new()));
-    let key = (format!("{kinds:?}"), slots);
+    let key = (format!("{kinds:?}"), slots, restarts);
     if let Some(v) = done.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return v.clone();
     }
-    let v = Arc::new(ring_verilog(kinds, slots));
+    let v = Arc::new(ring_verilog_with(kinds, slots, restarts));
     done.lock()
         .unwrap_or_else(|e| e.into_inner())
         .insert(key, v.clone());
@@ -428,20 +451,11 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     let s = cfg.slots;
     let capn = cap_slots(s);
     let kinds: Vec<Kind> = cfg.nodes.iter().map(|x| x.kind).collect();
-    // A backup master carries the special master's logic (protocol §8): in
-    // the RTL it is a `merkur_special_master` with a priority.
-    let rtl_kinds: Vec<Kind> = cfg
-        .nodes
-        .iter()
-        .map(|x| match x.backup {
-            Some(_) => Kind::SpecialMaster,
-            None => x.kind,
-        })
-        .collect();
+    let rtl_kinds = rtl_kinds(cfg);
     let clock_bases: Vec<usize> = (0..n)
         .filter(|&k| rtl_kinds[k] == Kind::SpecialMaster)
         .collect();
-    let verilog = ring_verilog_once(&rtl_kinds, s);
+    let verilog = ring_verilog_of(cfg);
     let t0 = Instant::now();
     let mut m = Model::build_top_traced(&verilog, "merkur_ring", opts.wave.as_deref())?;
     let build = t0.elapsed();
@@ -619,7 +633,9 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                     (fi, field::BREAK, dark as u64),
                 )
             }
-            Fault::Restart { .. } => unreachable!("refused by unsupported()"),
+            // A restart's node gets power when its cycle's frame starts
+            // (handled below: the power-on reset, then the node's fibres).
+            Fault::Restart { node } => (i, c, When::Started, (node, field::POR, 1)),
             Fault::Kill { node, slot } => {
                 let rec = &recs[if slot.is_some() {
                     c
@@ -868,6 +884,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                             ))
                 }
                 When::Secs(fi, k) => c == 0 || sent > c + 1 || r.rd(fi, st::NSEC) >= k,
+                When::Started => sent > c,
             };
             if due {
                 fault_ticks[idx] = Some(r.ticks);
@@ -878,6 +895,16 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                     );
                 }
                 r.cfg(sel, fd, val);
+                if fd == field::POR {
+                    // Power on (protocol §12): the node held in its
+                    // power-on reset for 4 bit times (8 of its clocks),
+                    // then alive.
+                    for _ in 0..4 * TICKS_PER_BIT {
+                        r.tick();
+                    }
+                    r.cfg(sel, field::KILL, 0);
+                    r.cfg(sel, field::POR, 0);
+                }
                 faults.remove(i);
             } else {
                 i += 1;

@@ -83,8 +83,10 @@ fn every_block_synthesizes_for_ice40() {
 }
 
 /// The ring top `merkur verilog` writes (here for tb-data/ring8.toml: all
-/// four node kinds): lint-clean and accepted by Yosys (elaboration, process
-/// and design checks; it is a simulation harness, not a bitstream).
+/// four node kinds), without and with the nodes' power-on resets (a ring
+/// that restarts nodes, rtl/src/power_on.rs): lint-clean and accepted by
+/// Yosys (elaboration, process and design checks; it is a simulation
+/// harness, not a bitstream).
 #[test]
 fn the_ring_top_is_lint_clean_and_checked_by_yosys() {
     let d = scratch();
@@ -95,24 +97,31 @@ fn the_ring_top_is_lint_clean_and_checked_by_yosys() {
     let text = std::fs::read_to_string(root.join("tb-data").join(name)).unwrap();
     let cfg = merkur_model::config::load(name, &text).unwrap();
     let kinds: Vec<_> = cfg.nodes.iter().map(|n| n.kind).collect();
-    let v = merkur_rtl::ring_top::ring_verilog(&kinds, cfg.slots);
-    let f = d.join("ring8_ring.v");
-    std::fs::write(&f, &v).unwrap();
-    if let Err(err) = lint(&[&waivers, &f], "merkur_ring") {
-        panic!("ring top lint:\n{err}");
+    for restarts in [false, true] {
+        let v = merkur_rtl::ring_top::ring_verilog_with(&kinds, cfg.slots, restarts);
+        assert_eq!(
+            v.contains("i_por"),
+            restarts,
+            "power-on reset only with restarts"
+        );
+        let f = d.join(format!("ring8_ring_{restarts}.v"));
+        std::fs::write(&f, &v).unwrap();
+        if let Err(err) = lint(&[&waivers, &f], "merkur_ring") {
+            panic!("ring top (restarts {restarts}) lint:\n{err}");
+        }
+        let o = Command::new("yosys")
+            .arg("-p")
+            .arg(format!(
+                "read_verilog {}; hierarchy -check -top merkur_ring; proc; check -assert",
+                f.display()
+            ))
+            .output()
+            .expect("yosys runs");
+        assert!(
+            o.status.success(),
+            "ring top (restarts {restarts}): yosys failed:\n{}\n{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
     }
-    let o = Command::new("yosys")
-        .arg("-p")
-        .arg(format!(
-            "read_verilog {}; hierarchy -check -top merkur_ring; proc; check -assert",
-            f.display()
-        ))
-        .output()
-        .expect("yosys runs");
-    assert!(
-        o.status.success(),
-        "ring top: yosys failed:\n{}\n{}",
-        String::from_utf8_lossy(&o.stdout),
-        String::from_utf8_lossy(&o.stderr)
-    );
 }

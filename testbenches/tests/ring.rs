@@ -284,6 +284,38 @@ fn a_backup_takes_over_from_the_dead_special_master() {
     taken_over("ring8_sm_kill.toml");
 }
 
+/// A sensor dies in cycle 3 and gets power again before cycle 6
+/// (`tb-data/ring8_restart_slave.toml`, protocol §12): it starts from its
+/// power-on reset in mode N, wraps up on its wrapped upstream neighbour's
+/// TST (WU), turns round at its WU unwrap (WD: its downstream neighbour is
+/// still wrapped towards it), then unwraps (N); the ring agrees with the
+/// model, and nobody fails safe. (Without the turn: 115 mismatches.)
+#[test]
+fn a_restarted_sensor_rejoins_through_the_tst_handshake() {
+    let name = "ring8_restart_slave.toml";
+    let cfg = load(name);
+    let recs = ring::run(&cfg);
+    let rep = agrees(name, &cfg, &recs, Rng::seed(0x7105));
+    assert!(
+        rep.fs_ticks.iter().all(Option::is_none),
+        "{name}: a node failed safe: {:?}",
+        rep.fs_ticks
+    );
+    let power = rep.fault_ticks[1].expect("the restart was injected");
+    let modes: Vec<u64> = rep
+        .mode_ticks
+        .iter()
+        .filter(|&&(k, t, _)| k == 2 && t >= power)
+        .map(|m| m.2)
+        .collect();
+    // N (power-up), WU, WD, N (protocol §12; 0 N, 1 WU, 2 WD).
+    assert_eq!(
+        modes,
+        [0, 1, 2, 0],
+        "{name}: node 2's modes after the restart"
+    );
+}
+
 /// Bit errors destroy the start delimiter of three frames in a row on the
 /// way to both backups (`tb-data/ring8_backup_jk_errors.toml`): the
 /// forwarders pass the frames on, and the backups' election timers
