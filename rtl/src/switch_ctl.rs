@@ -227,10 +227,10 @@ impl Logic for SwitchCtl {
         self.in_n.next = self.mode.q.val() == 0;
         // An unarmed node wraps on a TST where DATA is expected on a lit
         // INPUT, and only on that (§12: a restarted node between wrapped
-        // neighbours; no frame could reach it otherwise). (No grace test:
-        // an unarmed node has not unwrapped into mode N, which takes a
-        // frame through its INPUT, and the decision stays free of the
-        // 20-bit grace counter.)
+        // neighbours; no frame could reach it otherwise). No grace test
+        // (§12): the decision stays free of the 20-bit grace counter; the
+        // rule differs only for an unarmed node that hears a TST on INPUT
+        // within half a CS timeout of unwrapping into mode N.
         self.wake.next =
             !self.i_armed.val() & self.live.val() & self.i_tst_in.val() & !self.i_los_in.val();
         self.go_wu.next =
