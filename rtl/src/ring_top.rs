@@ -37,9 +37,19 @@
 //! the silicon's timing, this keeps every input of a node still between
 //! its own clock edges, so Verilator evaluates a node's logic at its edges
 //! only, not at every tick (issue 24: ring100 1.7× faster,
-//! docs/benchmarks.md). A node clock period of 3 or 5 ticks (how the accumulator
-//! makes the offset) moves that node's edges or samples by one tick = one
-//! receive sample; the receiver's margin (`cdr`, `retime`) covers it. Each
+//! docs/benchmarks.md). **Sub-tick time.** The gated clock puts a node's
+//! edges on ticks, an oscillator does not: a clock period of 3 or 5 ticks
+//! (how the accumulator makes the offset) moves an edge by up to a tick =
+//! one receive sample, at the sender's line and at the receiver's samples,
+//! two samples on one edge interval, where a link has one sample of margin
+//! for a retimer's short bit (protocol §9, [`crate::cdr`]): a fault-free
+//! 100-node ring lost frames at some offsets. So each half on the line
+//! carries its clock edge's time before the tick in eighths of a tick (the
+//! accumulator's excess after its carry), the fibre delays it with the
+//! level, and a receiver's sample in a tick where the line changed shows the
+//! new level only when the sender's half started no later than its own
+//! edge's time: a link sees its two oscillators' edge intervals to a
+//! quarter of a sample. Each
 //! fibre has a **fault point** (break: the line goes dark, as when its
 //! sender dies; flip: one line bit of the next packet is inverted, on the
 //! sender's own bit grid — the harness finds it from the line's edges, a
@@ -232,16 +242,21 @@ const FIBRE_MODULE: &str = r#"// ---- merkur_fibre: one fibre of the simulated r
 // | `i_tick` | in | 32 | ticks since the start |
 // | `i_txl` | in | 1 | the sender's line level this tick (the half of its DDR output pair on the line) |
 // | `i_hs` | in | 1 | a new half of the sender's DDR pair starts this tick |
+// | `i_hfrac` | in | 3 | that half's sub-tick time (`merkur_node_env`'s `o_hfrac`) |
 // | `i_dead` | in | 1 | the sender is dead: the line is dark |
 // | `i_index` | in | 16 | the fibre's index (P0.. then S0..; constant) |
 // | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | the ring top's configuration write; this fibre's when `i_cfg_sel` = `i_index` (fields BREAK, FLIP) |
 // | `o_line` | out | 1 | the line level at the receiver: the sender's 4 ticks before, faults applied |
 // | `o_sh` | out | 3 | the three line levels before `o_line`, newest first |
-module merkur_fibre(clk, i_tick, i_txl, i_hs, i_dead, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, o_line, o_sh);
+// | `o_old` | out | 1 | the line level before those |
+// | `o_fr` | out | 12 | the sender's sub-tick time in the ticks of `{o_line, o_sh}` (3 bits each, in that order) |
+module merkur_fibre(clk, i_tick, i_txl, i_hs, i_hfrac, i_dead, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val,
+    o_line, o_sh, o_old, o_fr);
     input wire clk;
     input wire [31:0] i_tick;
     input wire i_txl;
     input wire i_hs;
+    input wire [2:0] i_hfrac;
     input wire i_dead;
     input wire [15:0] i_index;
     input wire i_cfg_we;
@@ -250,8 +265,15 @@ module merkur_fibre(clk, i_tick, i_txl, i_hs, i_dead, i_index, i_cfg_we, i_cfg_s
     input wire [31:0] i_cfg_val;
     output o_line;
     output [2:0] o_sh;
+    output o_old;
+    output [11:0] o_fr;
     reg o_line = 1'b0;
     reg [2:0] o_sh = 3'd0;
+    reg o_old = 1'b0;
+    reg [11:0] o_fr = 12'd0;
+    // The sender's sub-tick time, delayed with its level (a change of the level is a half's start; the dark line of
+    // a break or a death starts at a tick the harness chose and takes the time that is there: it has none).
+    reg [11:0] frd = 12'd0;
     reg brk = 1'b0;
     // Flip point. The sender's bit grid from its line (a boundary at every edge, else 4 DDR halves after the last;
     // a 5-half bit shows as an edge one half after a boundary without one, so such a boundary is confirmed a half
@@ -290,6 +312,9 @@ module merkur_fibre(clk, i_tick, i_txl, i_hs, i_dead, i_index, i_cfg_we, i_cfg_s
         txd <= {txd[2:0], i_txl};
         o_line <= (brk | i_dead) ? 1'b0 : (txd[3] ^ inv);
         o_sh <= {o_line, o_sh[2:1]};
+        o_old <= o_sh[0];
+        frd <= {frd[8:0], i_hfrac};
+        o_fr <= {frd[11:9], o_fr[11:3]};
         if (trk & i_hs) begin
             hp <= i_txl;
             if (lvl_edge) begin
@@ -384,17 +409,21 @@ const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated rin
 // | `i_cfg_we`, `i_cfg_sel`, `i_cfg_field`, `i_cfg_val` | in | 1, 16, 8, 32 | the ring top's configuration write; this node's when `i_cfg_sel` = `i_index` (fields INC, PHASE, KILL, POR, ADDRESS, REQUEST, SENSOR) |
 // | `i_incyc`, `i_innew` | in | 3, 1 | CYC of the last DATA frame on the fibre that brings the node its frames, and its end (one monitor clock) |
 // | `i_pi`, `i_si` | in | 4, 4 | the PI and SI fibres' last 4 line levels (oldest in bit 0) |
+// | `i_pio`, `i_sio` | in | 1, 1 | the level before the oldest of them |
+// | `i_pif`, `i_sif` | in | 12, 12 | for each of the 4 levels (3 bits each, oldest in bits 2:0), the sub-tick time of the sender's half that starts in that tick: eighths of a tick before it |
 // | `i_slots_m1`, `i_cs_timeout`, `i_period` | in | 12, 20, 20 | the ring's configuration |
 // | `i_irq` | in | 5 | the node's interrupt pulses `{fs change, reconfig, failsafe, irq2, irq1}` |
 // | `o_nclk` | out | 1 | the node's clock |
 // | `o_hs` | out | 1 | a new half of the node's DDR output pair starts on the line this tick |
+// | `o_hfrac` | out | 3 | the sub-tick time of that half: its clock edge's, eighths of a tick before the tick |
 // | `o_first` | out | 1 | the line carries the first half (bit 0) of the node's DDR pair |
 // | `o_dead` | out | 1 | the node is dead (its output fibres dark) |
 // | `o_por` | out | 1 | the node is held in its power-on reset (a restart) |
 // | `o_pi` … `o_period` | out | | the inputs above and the node's address, user request `{fs, irq2, irq1}` and sensor value (chosen by `i_incyc`), registered on `o_nclk` |
 // | `o_nirq1`, `o_nirq2`, `o_nirqfs`, `o_nirqrc`, `o_nirqfsc` | out | 16 each | interrupt pulses counted |
 module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_incyc, i_innew, i_pi, i_si,
-    i_slots_m1, i_cs_timeout, i_period, i_irq, o_nclk, o_hs, o_first, o_dead, o_por, o_pi, o_si, o_addr, o_slots_m1,
+    i_pio, i_sio, i_pif, i_sif, i_slots_m1, i_cs_timeout, i_period, i_irq, o_nclk, o_hs, o_hfrac, o_first, o_dead,
+    o_por, o_pi, o_si, o_addr, o_slots_m1,
     o_cs_timeout, o_period, o_ureq, o_sens, o_nirq1, o_nirq2, o_nirqfs, o_nirqrc, o_nirqfsc);
     input wire clk;
     input wire [15:0] i_index;
@@ -406,12 +435,17 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     input wire i_innew;
     input wire [3:0] i_pi;
     input wire [3:0] i_si;
+    input wire i_pio;
+    input wire i_sio;
+    input wire [11:0] i_pif;
+    input wire [11:0] i_sif;
     input wire [11:0] i_slots_m1;
     input wire [19:0] i_cs_timeout;
     input wire [19:0] i_period;
     input wire [4:0] i_irq;
     output wire o_nclk;
     output wire o_hs;
+    output reg [2:0] o_hfrac = 3'd0;
     output wire o_first;
     output reg o_dead = 1'b0;
     output reg o_por = 1'b0;
@@ -436,8 +470,19 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     reg fired = 1'b0, fired2 = 1'b0, selp = 1'b0;
     assign o_hs = fired | (selp & !fired2);
     assign o_first = fired | fired2;
+    // Sub-tick time. The gated clock puts every edge on a tick; the oscillator's edge was earlier by the
+    // accumulator's excess after its carry over the increment: `frac` eighths of a tick (inc is 2^30 to 0.1 %, an
+    // excess of 2^30 or more only below a fast node's inc). It is the time of the clock edge to come (the carry's
+    // tick is the one before the edge) until the next carry, at least 3 ticks later; `o_hfrac` keeps it for both
+    // halves of that clock on the line. A receiver takes its samples at its own edge's sub-tick time (`pi_at`
+    // below), so a link sees the edge intervals the two oscillators make, not those plus a tick of rounding at each
+    // end: that was 2 samples, more than the one sample of margin a retimer's short bit leaves (cdr, retime).
+    wire [32:0] sum = {1'b0, acc} + {1'b0, inc};
+    reg [2:0] frac = 3'd0;
     always @(posedge clk) begin
-        {en, acc} <= {1'b0, acc} + {1'b0, inc};
+        {en, acc} <= sum;
+        if (sum[32]) frac <= sum[30] ? 3'd7 : sum[29:27];
+        if (enl) o_hfrac <= frac;
         fired <= enl;
         fired2 <= fired;
         selp <= fired | fired2;
@@ -473,9 +518,21 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
         if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd3) sens_3 <= i_cfg_val[15:0];
     end
     wire [15:0] sens = i_incyc[1:0] == 2'd0 ? sens_0 : i_incyc[1:0] == 2'd1 ? sens_1 : i_incyc[1:0] == 2'd2 ? sens_2 : sens_3;
+    // A sample in the tick where the line changed shows the new level only if the sender's half started no later
+    // than the sample was taken (its fraction before the tick at least this node's).
+    wire [4:0] pi_l = {i_pi, i_pio};
+    wire [4:0] si_l = {i_si, i_sio};
+    wire [3:0] pi_at, si_at;
+    genvar j;
+    generate
+        for (j = 0; j < 4; j = j + 1) begin : at
+            assign pi_at[j] = (pi_l[j + 1] != pi_l[j]) && (i_pif[3 * j +: 3] < frac) ? pi_l[j] : pi_l[j + 1];
+            assign si_at[j] = (si_l[j + 1] != si_l[j]) && (i_sif[3 * j +: 3] < frac) ? si_l[j] : si_l[j + 1];
+        end
+    endgenerate
     always @(posedge o_nclk) begin
-        o_pi <= i_pi;
-        o_si <= i_si;
+        o_pi <= pi_at;
+        o_si <= si_at;
         o_addr <= addr;
         o_slots_m1 <= i_slots_m1;
         o_cs_timeout <= i_cs_timeout;
@@ -582,7 +639,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool) -> String {
              \x20   wire [1:0] mode_{k};\n\
              \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
              \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
-             \x20   wire nclk_{k}, hs_{k}, first_{k}, dead_{k}{por_w};\n{por_u}\
+             \x20   wire nclk_{k}, hs_{k}, first_{k}, dead_{k}{por_w};\n    wire [2:0] hfrac_{k};\n{por_u}\
              \x20   wire [3:0] pi_r_{k}, si_r_{k};\n    wire [11:0] addr_r_{k}, slots_m1_r_{k};\n    wire [19:0] cs_timeout_r_{k};\n    wire [2:0] ureq_r_{k};\n\
              \x20   wire [15:0] nirq1_{k}, nirq2_{k}, nirqfs_{k}, nirqrc_{k}, nirqfsc_{k};\n\
              \x20   wire irq1_{k}, irq2_{k}, irqfs_{k}, irqrc_{k}, irqfsc_{k};\n\
@@ -590,13 +647,15 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool) -> String {
              \x20   wire [15:0] sens_r_{k};\n    wire [19:0] period_r_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
              \x20   merkur_node_env env_{k}(.clk(clk), .i_index(16'd{k}),\n\
              \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val),\n\
-             \x20       .i_incyc(incyc_{k}), .i_innew(innew_{k}), .i_pi({pi}), .i_si({si}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_period(period),\n\
+             \x20       .i_incyc(incyc_{k}), .i_innew(innew_{k}), .i_pi({pi}), .i_si({si}),\n\
+             \x20       .i_pio(old_{pi_f}), .i_sio(old_{sif}), .i_pif(fr_{pi_f}), .i_sif(fr_{sif}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_period(period),\n\
              \x20       .i_irq({{irqfsc_{k}, irqrc_{k}, irqfs_{k}, irq2_{k}, irq1_{k}}}),\n\
-             \x20       .o_nclk(nclk_{k}), .o_hs(hs_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_por(por_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
+             \x20       .o_nclk(nclk_{k}), .o_hs(hs_{k}), .o_hfrac(hfrac_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_por(por_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
              \x20       .o_slots_m1(slots_m1_r_{k}), .o_cs_timeout(cs_timeout_r_{k}), .o_period(period_r_{k}), .o_ureq(ureq_r_{k}), .o_sens(sens_r_{k}),\n\
              \x20       .o_nirq1(nirq1_{k}), .o_nirq2(nirq2_{k}), .o_nirqfs(nirqfs_{k}), .o_nirqrc(nirqrc_{k}), .o_nirqfsc(nirqfsc_{k}));\n\
              \x20   wire [1:0] po_{k}, so_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
             kind = kind.name(),
+            sif = n + k,
             por_w = if restarts { format!(", por_{k}") } else { String::new() },
             por_u = if restarts {
                 String::new()
@@ -695,12 +754,13 @@ fn fibre(f: usize, n: usize, capw: usize) -> String {
         &mut v,
         &format!(
             "    // ---- fibre {name} (from node {src}) ----\n\
-             \x20   wire line_{f};\n    wire [2:0] sh_{f};\n\
+             \x20   wire line_{f}, old_{f};\n    wire [2:0] sh_{f};\n    wire [11:0] fr_{f};\n\
              \x20   wire txl_{f} = first_{src} ? {port}_{src}[0] : {port}_{src}[1];\n\
              \x20   // The line and its fault point (module `merkur_fibre` above).\n\
-             \x20   merkur_fibre fib_{f}(.clk(clk), .i_tick(tick), .i_txl(txl_{f}), .i_hs(hs_{src}), .i_dead(dead_{src}),\n\
+             \x20   merkur_fibre fib_{f}(.clk(clk), .i_tick(tick), .i_txl(txl_{f}), .i_hs(hs_{src}), .i_hfrac(hfrac_{src}), .i_dead(dead_{src}),\n\
              \x20       .i_index(16'd{f}),\n\
-             \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val), .o_line(line_{f}), .o_sh(sh_{f}));\n\
+             \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val), .o_line(line_{f}), .o_sh(sh_{f}),\n\
+             \x20       .o_old(old_{f}), .o_fr(fr_{f}));\n\
              \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
              \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
              \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff), .i_flush(1'b0),\n\

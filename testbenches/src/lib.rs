@@ -112,8 +112,29 @@ pub fn line_samples(
     jitter: f64,
     rng: &mut Rng,
 ) -> Vec<u8> {
-    let period = SAMPLES_PER_BIT as f64 * (1.0 + delta_ppm * 1e-6);
-    let mut out = Vec::with_capacity(levels.len() * SAMPLES_PER_BIT + 8);
+    timed_samples(
+        levels,
+        SAMPLES_PER_BIT as f64,
+        delta_ppm,
+        phase,
+        jitter,
+        rng,
+    )
+}
+
+/// [`line_samples`] for `levels` that each last `per_level` receiver
+/// samples at 0 ppm: a bit each ([`SAMPLES_PER_BIT`]), or a half clock of a
+/// DDR output pair (2).
+pub fn timed_samples(
+    levels: &[u8],
+    per_level: f64,
+    delta_ppm: f64,
+    phase: f64,
+    jitter: f64,
+    rng: &mut Rng,
+) -> Vec<u8> {
+    let period = per_level * (1.0 + delta_ppm * 1e-6);
+    let mut out = Vec::with_capacity((levels.len() as f64 * per_level) as usize + 8);
     let mut k = 0usize;
     let mut next = phase + period;
     let mut t = 0.0;

@@ -14,7 +14,9 @@ use merkur_rtl::{
     retime::Retime,
     verilog::block_verilog,
 };
-use merkur_testbenches::{line_samples, sample_words, verilator::Model, Rng, SAMPLES_PER_BIT};
+use merkur_testbenches::{
+    line_samples, sample_words, timed_samples, verilator::Model, Rng, SAMPLES_PER_BIT,
+};
 
 /// What one run showed.
 struct Out {
@@ -181,4 +183,82 @@ fn a_stopped_input_leaves_the_line_dark_then_idles() {
         );
         assert_eq!(out.slips, 1, "{ctx}: one underflow");
     }
+}
+
+/// One link behind a retimer: a random data stream at `up_ppm` from node B
+/// goes through B's receiver and retimer; B's output (its DDR halves, the
+/// short and long bits among them) reaches a receiver C whose sample period
+/// makes each of B's halves 2·(1 + `down_ppm`·10⁻⁶) samples, with every
+/// half boundary moved by uniform jitter in ±`jitter` samples. Returns how
+/// many of the stream's code bits C read wrong (after lining the two up).
+fn link(seed: u64, up_ppm: f64, down_ppm: f64, nbits: usize, jitter: f64) -> Result<usize, String> {
+    let mut rng = Rng::new(seed ^ (up_ppm as i64 as u64) ^ ((down_ppm as i64 as u64) << 20));
+    let mut code = vec![];
+    while code.len() < nbits {
+        push_group(&mut code, DATA_CODES[rng.below(16) as usize]);
+    }
+    let levels = nrzi_encode(&code, &mut 0);
+    let phase = rng.below(800) as f64 / 100.0;
+    let samples = line_samples(&levels, up_ppm, phase, 0.0, &mut rng);
+    let mut cdr = Model::build(&block_verilog(Cdr::default())).unwrap();
+    let mut rt = Model::build(&block_verilog(Retime::default())).unwrap();
+    let out = run(&mut cdr, &mut rt, &samples);
+    let ctx = format!("seed {seed} (MERKUR_SEED), {up_ppm}/{down_ppm} ppm, jitter ±{jitter}");
+    if out.slips != 0 {
+        return Err(format!("{ctx}: the retimer slipped {} times", out.slips));
+    }
+    let phase = rng.below(200) as f64 / 100.0;
+    let at_c = timed_samples(&out.halves, 2.0, down_ppm, phase, jitter, &mut rng);
+    let mut c = Model::build(&block_verilog(Cdr::default())).unwrap();
+    let (clk, s, v, b) = (
+        c.port("clock"),
+        c.port("i_samples"),
+        c.port("o_valid"),
+        c.port("o_bit"),
+    );
+    let mut got = vec![];
+    for word in sample_words(&at_c) {
+        c.set(s, word);
+        c.tick(clk);
+        if c.get(v) == 1 {
+            got.push(c.get(b) as u8);
+        }
+    }
+    let code_of = |l: &[u8]| -> Vec<u8> { l.windows(2).map(|w| w[0] ^ w[1]).collect() };
+    let (got, sent) = (code_of(&got), code_of(&levels));
+    // B sends idles until its buffer runs; skip them, then line up.
+    let skip = 32;
+    let off = (0..96)
+        .find(|&off| (0..256).all(|i| got.get(skip + i) == sent.get(off + i)))
+        .ok_or(format!("{ctx}: C never reads the stream"))?;
+    let n = (got.len() - skip).min(sent.len() - off);
+    if n + 64 < nbits {
+        return Err(format!("{ctx}: only {n} of {nbits} bits read"));
+    }
+    Ok((0..n).filter(|&i| got[skip + i] != sent[off + i]).count())
+}
+
+/// The link's jitter budget (protocol §9): the retimer's short bit (3 half
+/// clocks, 6 samples) leaves one sample before the receiver's limit (5), the
+/// long bit two. With the receiver off by ±2000 ppm from the retimer and
+/// half a sample of jitter on every edge (under one on an interval), every
+/// bit arrives; with 1.2 samples on every edge (up to 2.4 on an interval)
+/// bits are lost, so the budget is no wider than protocol §9 says. (The
+/// simulated ring top adds at most a quarter of a sample, `ring_top`.)
+#[test]
+fn a_retimed_stream_crosses_a_link_within_its_jitter_budget() {
+    let seed = Rng::seed(0x11c);
+    let nbits = 100_000;
+    for (up, down) in [(-2000.0, 2000.0), (2000.0, -2000.0), (-1000.0, -1000.0)] {
+        let wrong = link(seed, up, down, nbits, 0.45).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            wrong, 0,
+            "seed {seed} (MERKUR_SEED): {up}/{down} ppm: {wrong} bits wrong"
+        );
+    }
+    let over = link(seed, -2000.0, 2000.0, nbits, 1.2);
+    assert!(
+        over.as_ref().map_or(true, |&wrong| wrong > 0),
+        "seed {seed} (MERKUR_SEED): 1.2 samples of jitter per edge lost no bit: {over:?}"
+    );
 }

@@ -249,6 +249,23 @@ fn ring100_agrees_with_the_model() {
     passes("ring100.toml");
 }
 
+/// A fault-free 100-node ring at clock offsets and phases where the RTL ring
+/// lost frames from cycle 13 on (`tb-data/ring100_offsets.toml`: node 28 at
+/// +661 ppm sends node 29 at −849 ppm a retimer's short bit). The ring top
+/// rounded the sender's edges and the receiver's samples to its tick, two
+/// samples on one edge interval where a link has one (protocol §9, jitter
+/// budget); it now times both to an eighth of a tick. Fixed phases: the
+/// failure needs this alignment (`merkur sim` with the same seed shows it on
+/// the ring top before the change).
+#[test]
+fn ring100_at_unlucky_offsets_loses_no_frame() {
+    let name = "ring100_offsets.toml";
+    let cfg = load(name);
+    let recs = ring::run(&cfg);
+    let rep = agrees(name, &cfg, &recs, 12_516_503_063_645_393_113);
+    assert_eq!(rep.cycles, cfg.cycles, "{name}: every cycle compared");
+}
+
 /// The flying special master (protocol §8, issue 22) on `ring_file`: the
 /// special master dies, the backup of priority 1 takes over and the others
 /// stand down. Beside agreeing with the model (which has exactly one clock
