@@ -8,7 +8,8 @@
 //! N, alarms through the forwarder and read back at INPUT, failsafe left at
 //! a CLR header) whose clock base waits for its election. Its election
 //! timer counts bit times since the last packet started on INPUT (J K, or
-//! [`START_BITS`] code bits that only a packet's start shows); when it reaches
+//! [`START_BITS`] code bits that show a DATA frame's start with one line-bit
+//! error); when it reaches
 //! `i_elect` ((1.5 + p) periods) while the node is armed, not in failsafe
 //! and did not know the ring wrapped at its last good header, the node
 //! becomes the clock base for good (`o_base`): [`TAKEOVER_LEAD_BITS`] of
@@ -131,12 +132,13 @@ const _: () = assert!(RELAY_BITS == 76);
 /// the previous frame and its idles have left (a period is at least the
 /// frame plus 20 bit times).
 pub const UNWRAP_LEAD_BITS: u64 = 16;
-/// Code bits by which a backup's election timer sees a packet whose J K a
-/// bit error destroyed (protocol §8): idle 1s, J K but for one line-bit
-/// error, two data groups.
-pub const START_BITS: u64 = 30;
-// `in_code` is a `Bits<30>` (rust-hdl widths are literals).
-const _: () = assert!(START_BITS == 30);
+/// Code bits by which a backup's election timer sees a DATA frame whose J K
+/// a bit error destroyed (protocol §8): 9 idle 1s, J K but for one
+/// line-bit error, and H0's first four groups, which carry S − 1 (the
+/// first one's part unless the error reached it).
+pub const START_BITS: u64 = 39;
+// `in_code` is a `Bits<39>` (rust-hdl widths are literals).
+const _: () = assert!(START_BITS == 39);
 /// Bit times of idles an elected backup sends on OUTPUT before its first
 /// frame (protocol §8): more than the 20 between packets, so that
 /// receivers that saw a dark stretch relock first.
@@ -338,7 +340,7 @@ pub struct SpecialMaster {
     et: DFF<Bits<20>>,
     /// INPUT's last line level and its last 30 code bits (newest in bit 0).
     in_last: DFF<Bit>,
-    in_code: DFF<Bits<30>>,
+    in_code: DFF<Bits<39>>,
     /// The delimiter-like ten code bits against J K: their difference,
     /// it without its lowest 1, and whether it is one line-bit error at
     /// most (no code bit, one, or two neighbours: NRZI).
@@ -358,6 +360,9 @@ pub struct SpecialMaster {
     scyc_v: DFF<Bit>,
     g0: Dec5b4b,
     g1: Dec5b4b,
+    g2: Dec5b4b,
+    g3: Dec5b4b,
+    jk_s: Signal<Local, Bit>,
     /// The ring was known wrapped at the last good header processed.
     rw_hdr: DFF<Bit>,
     /// CYC of the last good header processed, and the gap to the next.
@@ -533,6 +538,9 @@ impl Default for SpecialMaster {
             scyc_v: Default::default(),
             g0: Default::default(),
             g1: Default::default(),
+            g2: Default::default(),
+            g3: Default::default(),
+            jk_s: Default::default(),
             slot_cfg: Default::default(),
             pass_code: Default::default(),
         }
@@ -1324,16 +1332,24 @@ impl Logic for SpecialMaster {
         self.cyc_gap3.next = self.rx_in.o_data.val().get_bits::<3>(12) - self.last_cyc3.q.val() - 1;
         self.cyc_take.next = self.last_cyc3.q.val() + self.i_prio.val() + 1;
         // Election timer (protocol §8): bit times since the last packet
-        // that restarted it started on INPUT (below): its J K (`o_start`), or, where a bit error
-        // destroyed the J K, [`START_BITS`] code bits that show idle 1s
-        // (the 9 oldest), ten that are J K but for one line-bit error (one
-        // code bit, or two neighbours: NRZI) and two data groups (the first
-        // may be hit by the same error when it is J K's last bit): a packet
-        // start with one error. A line without packets cannot show that:
-        // idles are 1s, and a dead upstream line up to 8 0s (such dark
-        // stretches, with the idles between, circulate in a ring wrapped
-        // around the dead clock base, where nothing filters them); and
-        // inside a packet data never has nine 1s in a row.
+        // that restarted it started on INPUT (below): its J K (`o_start`),
+        // or, where a bit error destroyed a DATA frame's J K,
+        // [`START_BITS`] code bits that show idle 1s (the 9 oldest), ten
+        // that are J K but for one line-bit error (one code bit, or two
+        // neighbours: NRZI) and H0's first four groups, which carry S − 1
+        // (the first group's two bits of it unless the error, at J K's last
+        // bit, reached it). Inside a packet data never has nine 1s in a row. What
+        // circulates in a ring wrapped around the dead clock base, where
+        // nothing filters it, is idles and dark stretches of up to 8 0s,
+        // and after them, where a node relocked, short runs of 0s: with
+        // only two data groups after the J K (until 2026-12-04) such a
+        // line showed "J K but for one error, 0, 7" (a dark stretch of 7,
+        // five 1s, two 0s) to a backup of an 8-node ring, whose timer then
+        // restarted and expired after its CS timeout: the ring failed
+        // safe instead of taking over. Now a false start needs two more
+        // groups and twelve bits of S − 1 to match; it
+        // is not proven impossible (garbage is any string), it is not seen
+        // in the full campaign (docs/campaign/campaign.md).
         if self.half.q.val() & (self.et.q.val() != 0xfffff) {
             self.et.d.next = self.et.q.val() + 1;
         }
@@ -1344,19 +1360,34 @@ impl Logic for SpecialMaster {
                 self.in_code.d.next = (self.in_code.q.val() << 1) | 1;
             }
         }
-        self.jk_x.next = self.in_code.q.val().get_bits::<10>(10) ^ self.jk_bits.val();
+        self.jk_x.next = self.in_code.q.val().get_bits::<10>(20) ^ self.jk_bits.val();
         self.jk_z.next = self.jk_x.val() & (self.jk_x.val() - 1);
         self.jk_z1.next = self.jk_z.val() - 1;
         self.jk_ok.next = (self.jk_z.val() == 0)
             | ((self.jk_x.val() == (self.jk_z.val() | (self.jk_z.val() >> 1)))
                 & ((self.jk_z.val() & self.jk_z1.val()) == 0));
-        self.g0.i_code.next = self.in_code.q.val().get_bits::<5>(5);
-        self.g1.i_code.next = self.in_code.q.val().get_bits::<5>(0);
-        self.jk_bad.next = (self.in_code.q.val().get_bits::<9>(21) == 0x1ff)
+        self.g0.i_code.next = self.in_code.q.val().get_bits::<5>(15);
+        self.g1.i_code.next = self.in_code.q.val().get_bits::<5>(10);
+        self.g2.i_code.next = self.in_code.q.val().get_bits::<5>(5);
+        self.g3.i_code.next = self.in_code.q.val().get_bits::<5>(0);
+        // H0 = {00, FS, RWC, S − 1}, least significant bits first (protocol
+        // §4): its groups carry {ALARM, ALIVE, D1, D0}, D[5:2], D[9:6],
+        // D[13:10], so S − 1 is in the low two bits of the first and the
+        // fourth and in the second and the third.
+        self.jk_s.next = self.g1.o_data.val()
+            & self.g2.o_data.val()
+            & self.g3.o_data.val()
+            & (self.g1.o_nibble.val() == self.i_slots_m1.val().get_bits::<4>(2))
+            & (self.g2.o_nibble.val() == self.i_slots_m1.val().get_bits::<4>(6))
+            & (self.g3.o_nibble.val().get_bits::<2>(0) == self.i_slots_m1.val().get_bits::<2>(10));
+        self.jk_bad.next = (self.in_code.q.val().get_bits::<9>(30) == 0x1ff)
             & self.jk_ok.val()
             & (self.jk_x.val() != 0)
-            & (self.g0.o_data.val() | self.jk_x.val().get_bit(0))
-            & self.g1.o_data.val();
+            & ((self.g0.o_data.val()
+                & (self.g0.o_nibble.val().get_bits::<2>(0)
+                    == self.i_slots_m1.val().get_bits::<2>(0)))
+                | self.jk_x.val().get_bit(0))
+            & self.jk_s.val();
         // Bit times since the packet now on INPUT started.
         if self.half.q.val() & (self.since_jk.q.val() != 0xfffff) {
             self.since_jk.d.next = self.since_jk.q.val() + 1;
