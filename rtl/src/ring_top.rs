@@ -474,7 +474,7 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     // accumulator's excess after its carry over the increment: `frac` eighths of a tick (inc is 2^30 to 0.1 %, an
     // excess of 2^30 or more only below a fast node's inc). It is the time of the clock edge to come (the carry's
     // tick is the one before the edge) until the next carry, at least 3 ticks later; `o_hfrac` keeps it for both
-    // halves of that clock on the line. A receiver takes its samples at its own edge's sub-tick time (`pi_at`
+    // halves of that clock on the line. A receiver takes its samples at its own edge's sub-tick time (`o_pi`
     // below), so a link sees the edge intervals the two oscillators make, not those plus a tick of rounding at each
     // end: that was 2 samples, more than the one sample of margin a retimer's short bit leaves (cdr, retime).
     wire [32:0] sum = {1'b0, acc} + {1'b0, inc};
@@ -519,20 +519,16 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     end
     wire [15:0] sens = i_incyc[1:0] == 2'd0 ? sens_0 : i_incyc[1:0] == 2'd1 ? sens_1 : i_incyc[1:0] == 2'd2 ? sens_2 : sens_3;
     // A sample in the tick where the line changed shows the new level only if the sender's half started no later
-    // than the sample was taken (its fraction before the tick at least this node's).
+    // than the sample was taken (its fraction before the tick at least this node's). Worked out at the node's own
+    // edges only (the fibres change every tick).
     wire [4:0] pi_l = {i_pi, i_pio};
     wire [4:0] si_l = {i_si, i_sio};
-    wire [3:0] pi_at, si_at;
-    genvar j;
-    generate
-        for (j = 0; j < 4; j = j + 1) begin : at
-            assign pi_at[j] = (pi_l[j + 1] != pi_l[j]) && (i_pif[3 * j +: 3] < frac) ? pi_l[j] : pi_l[j + 1];
-            assign si_at[j] = (si_l[j + 1] != si_l[j]) && (i_sif[3 * j +: 3] < frac) ? si_l[j] : si_l[j + 1];
-        end
-    endgenerate
+    integer j;
     always @(posedge o_nclk) begin
-        o_pi <= pi_at;
-        o_si <= si_at;
+        for (j = 0; j < 4; j = j + 1) begin
+            o_pi[j] <= (pi_l[j + 1] != pi_l[j]) && (i_pif[3 * j +: 3] < frac) ? pi_l[j] : pi_l[j + 1];
+            o_si[j] <= (si_l[j + 1] != si_l[j]) && (i_sif[3 * j +: 3] < frac) ? si_l[j] : si_l[j + 1];
+        end
         o_addr <= addr;
         o_slots_m1 <= i_slots_m1;
         o_cs_timeout <= i_cs_timeout;

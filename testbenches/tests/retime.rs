@@ -7,7 +7,7 @@
 //! no edge at the underflow and stays dark long enough for a downstream
 //! receiver to mute, but not for loss of signal.
 
-use merkur_model::line::{nrzi_encode, push_group, DATA_CODES};
+use merkur_model::line::{nrzi_decode, nrzi_encode, push_group, DATA_CODES};
 use merkur_rtl::{
     cdr::{Cdr, LOS_SAMPLES, MUTE_SAMPLES},
     fwd::DEAD_CLOCKS,
@@ -102,20 +102,40 @@ fn check(seed: u64, delta_ppm: f64, nbits: usize, jitter: f64) -> Result<usize, 
     }
     // The code bits out are the code bits in (after the first few): the
     // buffer sends level changes, so its absolute level may be the other.
-    let code = |l: &[u8]| -> Vec<u8> { l.windows(2).map(|w| w[0] ^ w[1]).collect() };
-    let (bits, levels) = (code(&bits), code(&levels));
-    let skip = 16;
-    let off = (0..64)
-        .find(|&off| (0..256).all(|i| bits.get(skip + i) == levels.get(off + i)))
-        .ok_or(format!("{ctx}: output never matches the input"))?;
-    let n = (bits.len() - skip).min(levels.len() - off);
-    if n + 64 < nbits {
-        return Err(format!("{ctx}: only {n} of {nbits} bits out"));
-    }
-    if let Some(i) = (0..n).find(|&i| bits[skip + i] != levels[off + i]) {
+    let (bits, levels) = (code_of(&bits), code_of(&levels));
+    let (off, n) =
+        line_up(&bits[16..], &levels, 64, nbits).map_err(|e| format!("{ctx}: output {e}"))?;
+    if let Some(i) = (0..n).find(|&i| bits[16 + i] != levels[off + i]) {
         return Err(format!("{ctx}: bit {} out wrong (slip)", off + i));
     }
     Ok(corrections)
+}
+
+/// The code bits of NRZI `levels` from the second level on.
+fn code_of(levels: &[u8]) -> Vec<u8> {
+    levels
+        .first()
+        .map_or(vec![], |&l0| nrzi_decode(&levels[1..], l0))
+}
+
+/// Where `got` (code bits read, the first few skipped by the caller)
+/// starts in `sent`: the first offset below `offsets` at which 256 bits
+/// agree; and how many bits the two then have in common, at least
+/// `nbits` − 64.
+fn line_up(
+    got: &[u8],
+    sent: &[u8],
+    offsets: usize,
+    nbits: usize,
+) -> Result<(usize, usize), String> {
+    let off = (0..offsets)
+        .find(|&off| (0..256).all(|i| got.get(i) == sent.get(off + i)))
+        .ok_or("never matches the input")?;
+    let n = got.len().min(sent.len() - off);
+    if n + 64 < nbits {
+        return Err(format!("has only {n} of {nbits} bits"));
+    }
+    Ok((off, n))
 }
 
 #[test]
@@ -224,18 +244,11 @@ fn link(seed: u64, up_ppm: f64, down_ppm: f64, nbits: usize, jitter: f64) -> Res
             got.push(c.get(b) as u8);
         }
     }
-    let code_of = |l: &[u8]| -> Vec<u8> { l.windows(2).map(|w| w[0] ^ w[1]).collect() };
     let (got, sent) = (code_of(&got), code_of(&levels));
     // B sends idles until its buffer runs; skip them, then line up.
-    let skip = 32;
-    let off = (0..96)
-        .find(|&off| (0..256).all(|i| got.get(skip + i) == sent.get(off + i)))
-        .ok_or(format!("{ctx}: C never reads the stream"))?;
-    let n = (got.len() - skip).min(sent.len() - off);
-    if n + 64 < nbits {
-        return Err(format!("{ctx}: only {n} of {nbits} bits read"));
-    }
-    Ok((0..n).filter(|&i| got[skip + i] != sent[off + i]).count())
+    let (off, n) =
+        line_up(&got[32..], &sent, 96, nbits).map_err(|e| format!("{ctx}: C's stream {e}"))?;
+    Ok((0..n).filter(|&i| got[32 + i] != sent[off + i]).count())
 }
 
 /// The link's jitter budget (protocol §9): the retimer's short bit (3 half
