@@ -551,24 +551,71 @@ fn repair_cases(p: &mut Planner) {
     }
 }
 
-/// Restarts (protocol §12): every slave on rings of up to 16 nodes, 4
-/// sampled on bigger ones, dies before a seeded slot (or the delimiter)
-/// of cycle 3 and gets power again before cycle 6; the case runs 14 cycles
-/// past the restart (the rejoin's window and its tail, then exact).
+/// Restarts (protocol §12): every slave and every master (not the special
+/// master nor a backup) on rings of up to 16 nodes, 4 slaves and 2 masters
+/// sampled on bigger ones, dies before a seeded slot (or the delimiter) of
+/// cycle 3 and gets power again before cycle 6 (a master: its host loads
+/// the configuration and starts it with JOIN, and writes nothing after);
+/// the case runs 14 cycles past the restart (the rejoin's window and its
+/// tail, then exact).
 fn restart_cases(p: &mut Planner) {
     let n = p.clean.nodes.len();
     let mut slaves: Vec<usize> = (0..n)
         .filter(|&k| !p.clean.nodes[k].kind.is_master())
         .collect();
+    let mut masters: Vec<usize> = (0..n)
+        .filter(|&k| p.clean.nodes[k].kind == Kind::Master && p.clean.nodes[k].backup.is_none())
+        .collect();
     if n > 16 {
         sample(&mut slaves, 4, &mut p.rng("restarts"));
         slaves.sort_unstable();
+        sample(&mut masters, 2, &mut p.rng("master restarts"));
+        masters.sort_unstable();
     }
+    slaves.extend(masters);
     for k in slaves {
         let on = FAULT_CYCLE + 3;
         let key = format!("{}/restart/n{k}", p.ring);
         let slot = p.slot_of(&key);
         let mut cfg = p.clean.clone();
+        cfg.cycles = on + 14;
+        cfg.faults = vec![
+            (FAULT_CYCLE, Fault::Kill { node: k, slot }),
+            (on, Fault::Restart { node: k }),
+        ];
+        p.push(
+            format!("{key}@{FAULT_CYCLE}{}-{on}", slot_label(slot)),
+            "restart",
+            cfg,
+        );
+    }
+    restart_clock_base_cases(p);
+}
+
+/// Restarts in a ring with backups (every master a backup, priorities in
+/// node order, seven at most; protocol §8, §12): the special master dies before a seeded
+/// slot of cycle 3, the backup of priority 1 takes over, and the old
+/// special master gets power again before cycle 9 (its host starts it with
+/// JOIN: it rejoins as a master and never starts a clock base); and the
+/// backup of priority 1 dies and restarts (cycles 3 and 6) while the
+/// special master lives. Each runs 14 cycles past the restart.
+fn restart_clock_base_cases(p: &mut Planner) {
+    let masters: Vec<usize> = (0..p.clean.nodes.len())
+        .filter(|&k| p.clean.nodes[k].kind == Kind::Master)
+        .take(7)
+        .collect();
+    let Some(&first) = masters.first() else {
+        return;
+    };
+    let sm = p.clean.sm;
+    for (k, on) in [(sm, FAULT_CYCLE + 6), (first, FAULT_CYCLE + 3)] {
+        let role = if k == sm { "sm" } else { "backup" };
+        let key = format!("{}/restart/{role}-n{k}", p.ring);
+        let slot = p.slot_of(&key);
+        let mut cfg = p.clean.clone();
+        for (i, &m) in masters.iter().enumerate() {
+            cfg.nodes[m].backup = Some(i as u8 + 1);
+        }
         cfg.cycles = on + 14;
         cfg.faults = vec![
             (FAULT_CYCLE, Fault::Kill { node: k, slot }),

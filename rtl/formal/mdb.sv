@@ -17,8 +17,12 @@
 // - data_write_is_the_request: a host write writes what was asked where
 //   it was asked;
 // - cfg_locked: the host never writes the configuration while the ring
-//   runs; its writes go to both copies; the receive copy's own writes
-//   (bit 0, the alarm SEQ of protocol §11) come only while the ring runs.
+//   runs; its writes (bit 0 of the send copy clear: LAST is not stored)
+//   go to both copies; the receive copy's own writes (bit 0, the alarm SEQ
+//   of protocol §11) come only while the ring runs;
+// - has_value_with_data: the send copy's other writes set its bit 0, the
+//   has-value bit (protocol §12), and only with a write of the data
+//   memory (the host's, or a word of an own slot taken from the ring).
 //   (That they keep bits 3:1 as the host wrote them needs the memory's
 //   contents, which this bounded check from power-up does not model
 //   faithfully: the ring runs check it, every word of every master.)
@@ -26,7 +30,7 @@ module mdb_props (
     input wire clock,
     input wire i_wb_cyc, input wire i_wb_stb, input wire i_wb_we,
     input wire [13:0] i_wb_adr, input wire [15:0] i_wb_dat,
-    input wire [11:0] i_home, input wire i_fs, input wire [1:0] i_mode,
+    input wire [11:0] i_home, input wire [11:0] i_slots_m1, input wire i_fs, input wire [1:0] i_mode,
     input wire i_wvalid, input wire [1:0] i_kind, input wire [11:0] i_slot,
     input wire [15:0] i_data, input wire i_alive, input wire i_alarm,
     input wire i_ok, input wire i_hdr_bad, input wire [11:0] i_tx_slot,
@@ -37,23 +41,24 @@ module mdb_props (
 
     wire [15:0] o_wb_dat;
     wire o_wb_ack, o_running;
-    wire db_we, cfg_tx_we, cfg_rx_we, s2_write;
+    wire db_we, cfg_tx_we, cfg_rx_we, s2_write, s3_take;
     wire [11:0] db_waddr, cfg_rx_waddr;
     wire [15:0] db_wdata;
-    wire [3:0] cfg_rx_wdata;
+    wire [3:0] cfg_rx_wdata, cfg_tx_wdata;
     mdb dut (
         .clock(clock), .i_wb_cyc(i_wb_cyc), .i_wb_stb(i_wb_stb),
         .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),
-        .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack), .i_home(i_home),
+        .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack), .i_home(i_home), .i_slots_m1(i_slots_m1),
         .i_fs(i_fs), .i_mode(i_mode), .i_wvalid(i_wvalid), .i_kind(i_kind),
         .i_slot(i_slot), .i_data(i_data), .i_alive(i_alive),
         .i_alarm(i_alarm), .i_ok(i_ok), .i_hdr_bad(i_hdr_bad),
         .i_tx_slot(i_tx_slot), .i_fs_cleared(i_fs_cleared),
         .o_running(o_running),
         .db__write_enable(db_we), .db__write_address(db_waddr),
-        .db__write_data(db_wdata), .cfg_tx__write_enable(cfg_tx_we),
+        .db__write_data(db_wdata), .cfg_tx__write_enable(cfg_tx_we), .cfg_tx__write_data(cfg_tx_wdata),
         .cfg_rx__write_enable(cfg_rx_we), .cfg_rx__write_address(cfg_rx_waddr),
-        .cfg_rx__write_data(cfg_rx_wdata), .s2_write(s2_write)
+        .cfg_rx__write_data(cfg_rx_wdata), .s2_write(s2_write),
+        .s3_take(s3_take)
     );
 
     reg past_valid = 1'b0;
@@ -81,7 +86,8 @@ module mdb_props (
     // ---- properties ----------------------------------------------------------
     reg ring_due = 1'b0;  // a word was received in the clock before
     always @(posedge clock) ring_due <= i_wvalid;
-    wire host_write = db_we && !ring_due;
+    // (An own slot's word taken after JOIN is written in stage 3, s3_take.)
+    wire host_write = db_we && !ring_due && !s3_take;
     always @(*) begin
         if (o_wb_ack) wb_ack_only_for_request: assert (req);
         wb_ack_in_time: assert (waited <= 4);
@@ -91,8 +97,11 @@ module mdb_props (
                                                && db_waddr == i_wb_adr[11:0] && db_wdata == i_wb_dat);
             if (db_waddr == x) data_write_refused: assert ((cfg_x & OWNS) != 0);
         end
-        cfg_locked: assert (!cfg_tx_we || !o_running);
-        if (cfg_tx_we) cfg_copies: assert (cfg_rx_we);
+        if (cfg_tx_we && !cfg_tx_wdata[0]) begin
+            cfg_locked: assert (!o_running);
+            cfg_copies: assert (cfg_rx_we);
+        end
+        if (cfg_tx_we && cfg_tx_wdata[0]) has_value_with_data: assert (db_we);
         if (cfg_rx_we && !cfg_tx_we) cfg_seq_while_running: assert (o_running);
 
         cover_refused: cover (o_wb_ack && i_wb_we && i_wb_adr == {2'd0, x} && (cfg_x & OWNS) == 0);

@@ -46,9 +46,10 @@ module special_master_props (
         .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),
         .i_wb_dat(i_wb_dat), .i_irq1(i_irq1), .i_irq2(i_irq2),
         .i_fs_req(i_fs_req),
-        // The clock base from power-up (a backup's election is not under
-        // proof here).
-        .i_prio(3'd0), .i_elect(20'd0),
+        // The clock base from power-up, in a ring without backups (a
+        // backup's election and a restarted special master's JOIN into a
+        // ring with backups are not under proof here).
+        .i_prio(3'd0), .i_elect(20'd0), .i_flying(1'b0),
         .ftx__i_start(tick), .mdb__o_running(running), .half_q(half_q),
         .bcnt_q(bcnt_q), .quiet_q(quiet_q), .armed_q(armed_q),
         .failsafe_q(failsafe_q), .rx_in__o_wvalid(rx_wvalid),

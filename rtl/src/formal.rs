@@ -194,10 +194,12 @@ fn mdb() -> Proof {
         "db__write_address",
         "db__write_data",
         "cfg_tx__write_enable",
+        "cfg_tx__write_data",
         "cfg_rx__write_enable",
         "cfg_rx__write_address",
         "cfg_rx__write_data",
         "s2_write",
+        "s3_take",
     ];
     Proof {
         name: "mdb",

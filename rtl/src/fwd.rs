@@ -51,7 +51,7 @@
 //! | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
 //! | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (D[11]) |
 //! | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
-//! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: configuration (bit 0 LOCAL, bit 1 ACT), data memory and actuator Alive of slot `o_slot`, valid by the word's first group |
+//! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 //! | `o_slot` | out | 12 | clock | slot of the word passing |
 //! | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 //! | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
@@ -518,16 +518,23 @@ impl Logic for Fwd {
             & (self.slot.q.val() == self.i_address.val())
             & !self.dead.q.val()
             & !self.fs_r.q.val();
+        // An alarm goes in the home slot when the node writes it (a master:
+        // when its configuration lets it, `i_slot_cfg` not 0).
+        self.send_c.next = self.home_c.val()
+            & self.i_alarm_req.val()
+            & !self.prev_alarm.q.val()
+            & (!self.i_master.val() | (self.i_slot_cfg.val() != 0));
         self.own_c.next = self.home_c.val();
         if self.i_master.val() {
+            // 3: a home slot without a value (protocol §12): only an alarm.
             self.own_c.next = (self.wcount.q.val() == 2)
                 & (self.i_slot_cfg.val() != 0)
+                & ((self.i_slot_cfg.val() != 3) | self.send_c.val())
                 & !self.dead.q.val()
                 & !self.fs_r.q.val();
         }
         self.pre_home.d.next = self.home_c.val();
         self.pre_own.d.next = self.own_c.val();
-        self.send_c.next = self.home_c.val() & self.i_alarm_req.val() & !self.prev_alarm.q.val();
         // The word's action, decided in stage A from the group as it
         // completes (its first group decides; the others keep `action`),
         // registered for stage B (`act_now`).
@@ -558,7 +565,7 @@ impl Logic for Fwd {
                         self.act_c.next = 0.into();
                     }
                 }
-                if self.i_master.val() & self.i_slot_cfg.val().get_bit(1) & !self.send_c.val() {
+                if self.i_master.val() & (self.i_slot_cfg.val() == 2) & !self.send_c.val() {
                     self.act_c.next = 0.into();
                     if self.dec_data.val() & !self.dec_nib.val().get_bit(3) {
                         self.act_c.next = 5.into();
@@ -580,7 +587,7 @@ impl Logic for Fwd {
         }
         if self.i_master.val() {
             self.fresh_data.next = self.i_slot_data.val();
-            if self.i_slot_cfg.val().get_bit(1) {
+            if self.i_slot_cfg.val() == 2 {
                 self.fresh_alive.next = !self.i_slot_alive.val();
             }
         }
@@ -909,7 +916,7 @@ impl Logic for Fwd {
                 self.carry.d.next = false;
                 self.regen.d.next = self.pre_own.q.val()
                     & self.i_master.val()
-                    & self.i_slot_cfg.val().get_bit(1)
+                    & (self.i_slot_cfg.val() == 2)
                     & (self.act_now.val() == 3);
                 if self.pre_home.q.val() {
                     self.prev_alarm.d.next = self.f_alarm.q.val();

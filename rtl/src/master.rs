@@ -12,7 +12,11 @@
 //!
 //! The ring logic runs from power-up; the master writes slots only after the
 //! host has loaded the configuration and set the start bit (`0x2000` bit 0),
-//! after which configuration writes are refused.
+//! after which configuration writes are refused. After a restart (power
+//! lost and back, protocol §12) the host loads the configuration again and
+//! starts it with JOIN (`0x2000` bit 6): it reads one frame without writing
+//! (the reload frame) and writes an own slot only once it has a value, from
+//! the ring or from its host ([`Mdb`]).
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -138,14 +142,21 @@ impl Logic for Master {
         self.node.i_fs_set.next = self.mdb.o_irq_fs.val();
 
         // The forwarder's per-slot look-ups: LOCAL (cfg bit 3) and ACT
-        // (cfg bit 1), only once the host started the ring.
+        // (cfg bit 1), only once the host started the ring, not in a
+        // restarted master's reload frame, and only for a slot with a value
+        // (protocol §12): a LOCAL home slot without one takes only an alarm
+        // (3).
         self.slot_cfg.next = 0.into();
-        if self.mdb.o_running.val() {
+        if self.mdb.o_running.val() & !self.mdb.o_reload.val() {
             if self.mdb.o_tx_local.val() {
-                self.slot_cfg.next = 1.into();
+                if self.mdb.o_tx_value.val() {
+                    self.slot_cfg.next = 1.into();
+                } else if self.mdb.o_tx_home.val() {
+                    self.slot_cfg.next = 3.into();
+                }
             }
-            if self.mdb.o_tx_act.val() {
-                self.slot_cfg.next = self.slot_cfg.val() | 2;
+            if self.mdb.o_tx_act.val() & self.mdb.o_tx_value.val() {
+                self.slot_cfg.next = 2.into();
             }
         }
         self.node.i_slot_cfg.next = self.slot_cfg.val();
@@ -180,6 +191,7 @@ impl Logic for Master {
         self.o_wb_dat.next = self.mdb.o_wb_dat.val();
         self.o_wb_ack.next = self.mdb.o_wb_ack.val();
         self.mdb.i_home.next = self.i_address.val();
+        self.mdb.i_slots_m1.next = self.i_slots_m1.val();
         self.mdb.i_fs.next = self.node.o_failsafe.val();
         self.mdb.i_mode.next = self.node.o_mode.val();
         self.mdb.i_wvalid.next = self.node.o_wvalid.val();

@@ -7,12 +7,14 @@
 //!   and writes every good word of a slot it does not write itself; the host
 //!   reads and writes it through Wishbone;
 //! - **configuration memory**, one byte per slot (bits 0 LAST, 1 ACT,
-//!   2 ALIVE_EN, 3 LOCAL; kept as 4 bits), in two copies (ring send side,
-//!   ring receive side + host), writable only before the ring runs; the
-//!   receive copy keeps in bit 0, instead of LAST, the SEQ that a new alarm
-//!   of that slot has (the inverse of the last one read there; 0 after
-//!   reset and after a host write), and the host reads LAST from the send
-//!   copy;
+//!   2 ALIVE_EN, 3 LOCAL; bits 3:1 kept), in two copies (ring send side,
+//!   ring receive side + host), writable only before the ring runs. LAST
+//!   is not stored (protocol §7: the header carries S − 1): the host reads
+//!   it as 1 for slot `i_slots_m1`. Bit 0 of each copy holds ring state
+//!   instead: the receive copy's, the SEQ that a new alarm of that slot
+//!   has (the inverse of the last one read there; 0 after reset and after
+//!   a configuration write); the send copy's, the slot's has-value bit
+//!   (below);
 //! - **Alive check** per slot with ALIVE_EN (state memory: valid, last
 //!   Alive, lost, and the CYC that wrote it, so a slot missing in the
 //!   previous cycle is not compared), counted in `aerr`;
@@ -39,15 +41,30 @@
 //! | address | R/W | meaning |
 //! |---|---|---|
 //! | 0x0000–0x0FFF | R/W | data memory, slot = address; a write to a slot that is neither LOCAL nor ACT is refused (not written, `status[2]` set) |
-//! | 0x1000–0x1FFF | R/W | configuration byte of slot address − 0x1000; a write while running is refused (`status[1]` set) |
-//! | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode, 6 FS_HOST, 7 FS_CLEAR given and not yet used |
-//! | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames); bit 4 = 1: FS_CLEAR, the host allows the ring out of failsafe (a special master; protocol §12); bit 5: FS_HOST, the ring leaves failsafe only after FS_CLEAR (a special master; written before the start, refused while running: `status[1]`) |
+//! | 0x1000–0x1FFF | R/W | configuration byte of slot address − 0x1000; a write while running is refused (`status[1]` set); LAST (bit 0) is not stored and reads 1 for slot `i_slots_m1` |
+//! | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode, 6 FS_HOST, 7 FS_CLEAR given and not yet used, 8 started by JOIN, 9 the reload frame not yet read |
+//! | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames); bit 4 = 1: FS_CLEAR, the host allows the ring out of failsafe (a special master; protocol §12); bit 5: FS_HOST, the ring leaves failsafe only after FS_CLEAR (a special master; written before the start, refused while running: `status[1]`); bit 6 = 1: JOIN, start after a restart (below; refused while running: `status[1]`) |
 //! | 0x2001 | R | `aerr` Alive-check failures (saturating) |
 //! | 0x2002 | R | last alarm delivered: reason [15:12], slot [11:0] |
 //! | 0x2003 | R | alarm queue, oldest entry: reason [15:12], slot [11:0] (0: the queue is empty) |
 //! | 0x2004 | R | alarm queue: entries [4:0] (0–16), CYC of the oldest entry [14:12] |
 //! | 0x2004 | W | bit 0 = 1: remove the oldest entry (none: ignored); bit 1 = 1: clear the overflow count |
 //! | 0x2005 | R | alarm queue overflow: alarms not kept because the queue was full (saturating) |
+//!
+//! **Restart (protocol §12).** A master that got power again is started
+//! with JOIN (`0x2000` bit 6) instead of bit 0, after its host loaded the
+//! configuration again: its first frame read with a good header outside
+//! failsafe is the **reload frame**, in which it writes nothing (`o_reload`);
+//! and each of its own slots (LOCAL or ACT) has a value only once a good
+//! data word came by in it (taken into the data memory, which it otherwise
+//! never does for its own slots) or its host wrote it — one has-value bit
+//! per slot, zero at power-up, in the send copy of the configuration
+//! (bit 0: LAST is not stored), so no memory grows; the receive side reads
+//! it in the clock a word arrives (the send side's look-up waits that
+//! clock).
+//! Until then the send side reports `o_tx_value` low and the node does not
+//! write the slot (but for an alarm in its home slot, `o_tx_home`). A
+//! master started with bit 0 has a value for every slot from the start.
 //!
 //! A host drains the queue with: read 0x2004; while entries > 0, read 0x2003
 //! (and 0x2004's CYC), write 1 to 0x2004.
@@ -61,12 +78,16 @@
 //! | `o_wb_dat` | out | 16 | clock | Wishbone read data (valid with `o_wb_ack`) |
 //! | `o_wb_ack` | out | 1 | clock | Wishbone acknowledge (one clock) |
 //! | `i_home` | in | 12 | static | home slot (no interrupt for its own alarms) |
+//! | `i_slots_m1` | in | 12 | static | slots per frame − 1 (the slot whose configuration reads LAST) |
 //! | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 //! | `i_mode` | in | 2 | clock | switchbox mode (status register) |
 //! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
 //! | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 //! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
-//! | `o_tx_data`, `o_tx_local`, `o_tx_act` | out | 16, 1, 1 | clock | data memory and configuration (LOCAL, ACT) of `i_tx_slot`, valid 2–3 clocks after it changes |
+//! | `o_tx_data`, `o_tx_local`, `o_tx_act` | out | 16, 1, 1 | clock | data memory and configuration (LOCAL, ACT) of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
+//! | `o_tx_value`, `o_tx_home` | out | 1, 1 | clock | `i_tx_slot` has a value to write (always, but after JOIN see above); it is the home slot (same timing) |
+//! | `o_reload` | out | 1 | clock | started by JOIN, the reload frame not yet read to its end: write nothing |
+//! | `o_join` | out | 1 | clock | started by JOIN |
 //! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 //! | `o_running` | out | 1 | clock | the host started the ring |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
@@ -75,7 +96,8 @@
 //! | `o_fs_host`, `o_fs_clear` | out | 1 | clock | FS_HOST set; FS_CLEAR written (one clock) |
 //! | `o_aerr` | out | 16 | clock | Alive-check failures |
 //!
-//! Latency: a good word is in the data memory 2 clocks after `i_wvalid`.
+//! Latency: a good word is in the data memory 2 clocks after `i_wvalid`
+//! (an own slot's taken after JOIN: 3, or 4 behind a host write).
 //!
 //! ```text
 //! clock      _/‾\_/‾\_/‾\_/‾\_/‾\_
@@ -100,6 +122,10 @@ pub const ST_FS_CLEAR: u16 = 16;
 /// Status register bit 5 on write: FS_HOST, leave failsafe only after
 /// FS_CLEAR (read back at bit 6).
 pub const ST_FS_HOST: u16 = 32;
+/// Status register bit 6 on write: JOIN, start a restarted master (a
+/// reload frame first, own slots without a value; protocol §12). Read:
+/// bit 8 started by JOIN, bit 9 the reload frame not yet read.
+pub const ST_JOIN: u16 = 64;
 /// Wishbone address of the status / control register.
 pub const WB_STATUS: u16 = 0x2000;
 /// Wishbone address of the Alive error counter.
@@ -143,6 +169,8 @@ pub struct Mdb {
     pub o_wb_ack: Signal<Out, Bit>,
     /// Home slot.
     pub i_home: Signal<In, Bits<12>>,
+    /// Slots − 1 (the slot whose configuration reads LAST).
+    pub i_slots_m1: Signal<In, Bits<12>>,
     /// Failsafe.
     pub i_fs: Signal<In, Bit>,
     /// Switchbox mode.
@@ -171,6 +199,14 @@ pub struct Mdb {
     pub o_tx_local: Signal<Out, Bit>,
     /// `i_tx_slot` is ACT.
     pub o_tx_act: Signal<Out, Bit>,
+    /// `i_tx_slot` has a value to write (protocol §12).
+    pub o_tx_value: Signal<Out, Bit>,
+    /// `i_tx_slot` is the home slot.
+    pub o_tx_home: Signal<Out, Bit>,
+    /// Started by JOIN and the reload frame not yet read: write nothing.
+    pub o_reload: Signal<Out, Bit>,
+    /// Started by JOIN (after a restart).
+    pub o_join: Signal<Out, Bit>,
     /// Stage 2 valid.
     pub o_s2: Signal<Out, Bit>,
     /// Stage 2 slot.
@@ -211,6 +247,11 @@ pub struct Mdb {
     cfg_tx: RAM<Bits<4>, 12>,
     cfg_rx: RAM<Bits<4>, 12>,
     ast: RAM<Bits<6>, 12>,
+    /// Started by JOIN (after a restart).
+    join: DFF<Bit>,
+    /// The reload frame: 0 none (read, or no JOIN), 1 JOIN given and no
+    /// good header read since, 2 its header read (its words pass).
+    rl: DFF<Bits<2>>,
     // Alarm queue, 16 entries of two words in one memory (one block RAM):
     // {reason, slot} at an even address, {CYC at bits 14:12} after it. The
     // pointers count in twos (bit 0 selects the word).
@@ -239,6 +280,18 @@ pub struct Mdb {
     tx_served: DFF<Bit>,
     tx_data: DFF<Bits<16>>,
     tx_cfg: DFF<Bits<4>>,
+    tx_home: DFF<Bit>,
+    /// The host writes the data memory of the slot a received word in
+    /// stage 1 is (its has-value bit was read before the write).
+    hwsame: DFF<Bit>,
+    // Stage 3 (protocol §12): a good data word of an own slot after JOIN,
+    // taken if the slot has no value (its has-value bit registered here:
+    // the block RAM's read data goes into no logic, timing).
+    t3: DFF<Bit>,
+    t3_hv: DFF<Bit>,
+    t3_slot: DFF<Bits<12>>,
+    t3_data: DFF<Bits<16>>,
+    t3_cfg: DFF<Bits<4>>,
     // Receive pipeline.
     s2: DFF<Bit>,
     s2_slot: DFF<Bits<12>>,
@@ -293,6 +346,12 @@ pub struct Mdb {
     s2_new: Signal<Local, Bit>,
     ast_word: Signal<Local, Bits<6>>,
     s2_write: Signal<Local, Bit>,
+    /// Stage 2: the slot is the node's own (LOCAL or ACT).
+    s2_own: Signal<Local, Bit>,
+    /// Stage 3: the own slot's word is taken now (it had no value).
+    s3_take: Signal<Local, Bit>,
+    /// The host writes the data memory in this clock.
+    host_wr: Signal<Local, Bit>,
     host_req: Signal<Local, Bit>,
     adr_data: Signal<Local, Bit>,
     adr_cfg: Signal<Local, Bit>,
@@ -307,6 +366,15 @@ impl Logic for Mdb {
             tx_served,
             tx_data,
             tx_cfg,
+            tx_home,
+            hwsame,
+            t3,
+            t3_hv,
+            t3_slot,
+            t3_data,
+            t3_cfg,
+            join,
+            rl,
             s2,
             s2_slot,
             s2_ok,
@@ -367,9 +435,11 @@ impl Logic for Mdb {
         self.adr_data.next = self.i_wb_adr.val().get_bits::<2>(12) == 0;
         self.adr_cfg.next = self.i_wb_adr.val().get_bits::<2>(12) == 1;
 
-        // Send side: the data memory's read port serves i_tx_slot in every
-        // clock the host does not read it (at most one clock in a row), so
-        // the look-up follows i_tx_slot and host writes within 2-3 clocks.
+        // Send side: the data memory's and the send copy's read ports serve
+        // i_tx_slot in every clock the host does not read the data memory
+        // and no word is received (stage 1 reads the send copy's has-value
+        // bit): at most two clocks in a row, so the look-up follows
+        // i_tx_slot and host writes within 2-4 clocks.
         self.tx_served.d.next = true;
         self.db.read_address.next = self.i_tx_slot.val();
         self.cfg_tx.read_address.next = self.i_tx_slot.val();
@@ -377,14 +447,25 @@ impl Logic for Mdb {
             self.tx_data.d.next = self.db.read_data.val();
             self.tx_cfg.d.next = self.cfg_tx.read_data.val();
         }
+        self.tx_home.d.next = self.i_tx_slot.val() == self.i_home.val();
         self.o_tx_data.next = self.tx_data.q.val();
         self.o_tx_local.next = self.tx_cfg.q.val().get_bit(3);
         self.o_tx_act.next = self.tx_cfg.q.val().get_bit(1);
+        self.o_tx_value.next = !self.join.q.val() | self.tx_cfg.q.val().get_bit(0);
+        self.o_tx_home.next = self.tx_home.q.val();
+        self.o_reload.next = self.rl.q.val() != 0;
+        self.o_join.next = self.join.q.val();
 
         // Receive pipeline, stage 1: read the slot's configuration and
         // Alive state.
         self.cfg_rx.read_address.next = self.i_slot.val();
         self.ast.read_address.next = self.i_slot.val();
+        // The has-value bit of the received word's slot (protocol §12):
+        // the send copy's read port serves stage 1 in its clock.
+        if self.i_wvalid.val() {
+            self.cfg_tx.read_address.next = self.i_slot.val();
+            self.tx_served.d.next = false;
+        }
         self.s2.d.next = self.i_wvalid.val() & (self.i_kind.val() == 2);
         self.s2_slot.d.next = self.i_slot.val();
         self.s2_ok.d.next = self.i_ok.val();
@@ -413,6 +494,11 @@ impl Logic for Mdb {
             self.fs_clear_held.d.next = false;
         }
         self.s2_write.next = false;
+        self.s2_own.next = false;
+        self.s3_take.next = false;
+        self.host_wr.next = false;
+        self.hwsame.d.next = false;
+        self.t3.d.next = false;
         // Alive state: bit 0 valid, bit 1 last Alive, bit 2 lost, bits 5:3
         // the CYC of the frame that wrote it: a state not written in the
         // previous cycle (the slot was missing, or no frame came) has
@@ -430,6 +516,14 @@ impl Logic for Mdb {
             self.fs_frame.d.next = self.i_fs.val();
             self.read_prev.d.next = !self.unread.q.val() & !self.fs_frame.q.val();
             self.unread.d.next = false;
+            // The reload frame (protocol §12): the first good header read
+            // outside failsafe after JOIN starts it, the next ends it.
+            if !self.i_fs.val() & (self.rl.q.val() == 1) {
+                self.rl.d.next = 2.into();
+            }
+            if !self.i_fs.val() & (self.rl.q.val() == 2) {
+                self.rl.d.next = 0.into();
+            }
         }
         self.prev_cyc.next = self.cur_cyc.q.val() - 1;
         self.ast_valid.next = self.s2_ast.val().get_bit(0)
@@ -439,7 +533,7 @@ impl Logic for Mdb {
         self.ast.write_enable.next = false;
         self.ast.write_address.next = self.s2_slot.q.val();
         // Alarm SEQ per slot (protocol §11), in bit 0 of the receive copy
-        // of the configuration (the host reads LAST from the send copy),
+        // of the configuration (LAST is not stored),
         // inverted: the SEQ a new alarm of that slot has (0 after reset and
         // after a host write: the sender's first alarm is new). A good
         // alarm word with the other SEQ is a repeat. Kept in failsafe
@@ -525,7 +619,17 @@ impl Logic for Mdb {
                         self.irq_rc.d.next = true;
                     }
                 }
-                self.s2_write.next = !self.s2_alarm.q.val() & ((self.s2_cfg.val() & 10) == 0);
+                // A slot of its own only in stage 3, after JOIN, while it
+                // has no value (protocol §12: the send copy's bit 0, read
+                // in stage 1; a host write of the slot in the clock of that
+                // read counts).
+                self.s2_own.next = (self.s2_cfg.val() & 10) != 0;
+                self.s2_write.next = !self.s2_alarm.q.val() & !self.s2_own.val();
+                self.t3.d.next = !self.s2_alarm.q.val() & self.s2_own.val() & self.join.q.val();
+                self.t3_hv.d.next = self.cfg_tx.read_data.val().get_bit(0) | self.hwsame.q.val();
+                self.t3_slot.d.next = self.s2_slot.q.val();
+                self.t3_data.d.next = self.s2_data.q.val();
+                self.t3_cfg.d.next = self.s2_cfg.val();
                 if self.s2_cfg.val().get_bit(2) {
                     self.new_ast.next = (self.s2_ast.val() & 4) | 1;
                     if self.s2_alive.q.val() {
@@ -564,7 +668,9 @@ impl Logic for Mdb {
         self.ack.d.next = false;
         self.cfg_tx.write_enable.next = false;
         self.cfg_tx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
-        self.cfg_tx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0);
+        // A configuration write stores bits 3:1 (LAST is not stored, its
+        // bit is the has-value bit, protocol §7, §12).
+        self.cfg_tx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0) & 14;
         if !self.host_req.val() {
             self.hstate.d.next = 0.into();
         } else if self.hstate.q.val() == 0 {
@@ -593,11 +699,9 @@ impl Logic for Mdb {
                     }
                     self.ack.d.next = true;
                 } else if !self.i_wvalid.val() {
-                    // Bits 3:1 from the receive copy, LAST from the send
-                    // copy (the receive copy's bit 0 is the alarm SEQ).
+                    // Bits 3:1 from the receive copy (its bit 0 is the
+                    // alarm SEQ); LAST is not stored: slot S − 1 has it.
                     self.cfg_rx.read_address.next = self.i_wb_adr.val().get_bits::<12>(0);
-                    self.cfg_tx.read_address.next = self.i_wb_adr.val().get_bits::<12>(0);
-                    self.tx_served.d.next = false;
                     self.hstate.d.next = 5.into();
                 }
             } else {
@@ -629,6 +733,12 @@ impl Logic for Mdb {
                     if self.fs_clear_held.q.val() {
                         self.stat.next = self.stat.val() | 128;
                     }
+                    if self.join.q.val() {
+                        self.stat.next = self.stat.val() | 256;
+                    }
+                    if self.rl.q.val() != 0 {
+                        self.stat.next = self.stat.val() | 512;
+                    }
                     self.rdat.d.next = self.stat.val();
                     if self.i_wb_we.val() {
                         if self.i_wb_dat.val().get_bit(4) {
@@ -644,6 +754,15 @@ impl Logic for Mdb {
                         }
                         if self.i_wb_dat.val().get_bit(0) {
                             self.running.d.next = true;
+                        }
+                        if self.i_wb_dat.val().get_bit(6) {
+                            if self.running.q.val() {
+                                self.err_cfg.d.next = true;
+                            } else {
+                                self.running.d.next = true;
+                                self.join.d.next = true;
+                                self.rl.d.next = 1.into();
+                            }
                         }
                         if self.i_wb_dat.val().get_bit(1) {
                             self.err_cfg.d.next = false;
@@ -713,6 +832,13 @@ impl Logic for Mdb {
                 self.db.write_enable.next = true;
                 self.db.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
                 self.db.write_data.next = self.i_wb_dat.val();
+                // The host's value (protocol §12): the has-value bit, in
+                // the send copy's bit 0 (bits 3:1 as configured).
+                self.cfg_tx.write_enable.next = true;
+                self.cfg_tx.write_data.next = (self.perm.q.val() & 14) | 1;
+                self.hwsame.d.next = self.i_wvalid.val()
+                    & (self.i_slot.val() == self.i_wb_adr.val().get_bits::<12>(0));
+                self.host_wr.next = true;
                 self.ack.d.next = true;
                 self.hstate.d.next = 7.into();
             }
@@ -746,7 +872,7 @@ impl Logic for Mdb {
             self.hstate.d.next = 7.into();
         } else if self.hstate.q.val() == 5 {
             self.stat.next = 0.into();
-            if self.cfg_tx.read_data.val().get_bit(0) {
+            if self.i_wb_adr.val().get_bits::<12>(0) == self.i_slots_m1.val() {
                 self.stat.next = self.stat.val() | 1;
             }
             if self.cfg_rx.read_data.val().get_bit(1) {
@@ -761,6 +887,26 @@ impl Logic for Mdb {
             self.rdat.d.next = self.stat.val();
             self.ack.d.next = true;
             self.hstate.d.next = 7.into();
+        }
+        // Stage 3: the own slot's word taken (protocol §12): the data
+        // memory and the has-value bit. A host write in this clock goes
+        // first, and the take waits a clock (the host's transfers are two
+        // clocks apart at least, received words three) — or is dropped if
+        // the host wrote this very slot (its value counts).
+        if self.t3.q.val() & !self.t3_hv.q.val() {
+            if self.host_wr.val() {
+                self.t3.d.next = self.t3_slot.q.val() != self.i_wb_adr.val().get_bits::<12>(0);
+            } else {
+                self.s3_take.next = true;
+            }
+        }
+        if self.s3_take.val() {
+            self.db.write_enable.next = true;
+            self.db.write_address.next = self.t3_slot.q.val();
+            self.db.write_data.next = self.t3_data.q.val();
+            self.cfg_tx.write_enable.next = true;
+            self.cfg_tx.write_address.next = self.t3_slot.q.val();
+            self.cfg_tx.write_data.next = (self.t3_cfg.q.val() & 14) | 1;
         }
         self.o_wb_ack.next = self.ack.q.val();
         self.o_wb_dat.next = self.rdat.q.val();

@@ -420,7 +420,7 @@ const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated rin
 // | `o_dead` | out | 1 | the node is dead (its output fibres dark) |
 // | `o_por` | out | 1 | the node is held in its power-on reset (a restart) |
 // | `o_pi` … `o_period` | out | | the inputs above and the node's address, user request `{fs, irq2, irq1}` and sensor value (chosen by `i_incyc`), registered on `o_nclk` |
-// | `o_nirq1`, `o_nirq2`, `o_nirqfs`, `o_nirqrc`, `o_nirqfsc` | out | 16 each | interrupt pulses counted |
+// | `o_nirq1`, `o_nirq2`, `o_nirqfs`, `o_nirqrc`, `o_nirqfsc` | out | 16 each | interrupt pulses counted while the node is alive |
 module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_incyc, i_innew, i_pi, i_si,
     i_pio, i_sio, i_pif, i_sif, i_slots_m1, i_cs_timeout, i_period, i_irq, o_nclk, o_hs, o_hfrac, o_first, o_dead,
     o_por, o_pi, o_si, o_addr, o_slots_m1,
@@ -535,11 +535,12 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
         o_period <= i_period;
         o_ureq <= ureq;
         o_sens <= sens;
-        if (i_irq[0]) o_nirq1 <= o_nirq1 + 16'd1;
-        if (i_irq[1]) o_nirq2 <= o_nirq2 + 16'd1;
-        if (i_irq[2]) o_nirqfs <= o_nirqfs + 16'd1;
-        if (i_irq[3]) o_nirqrc <= o_nirqrc + 16'd1;
-        if (i_irq[4]) o_nirqfsc <= o_nirqfsc + 16'd1;
+        // A dead node (its logic runs on in simulation) raises no interrupt.
+        if (i_irq[0] && !o_dead) o_nirq1 <= o_nirq1 + 16'd1;
+        if (i_irq[1] && !o_dead) o_nirq2 <= o_nirq2 + 16'd1;
+        if (i_irq[2] && !o_dead) o_nirqfs <= o_nirqfs + 16'd1;
+        if (i_irq[3] && !o_dead) o_nirqrc <= o_nirqrc + 16'd1;
+        if (i_irq[4] && !o_dead) o_nirqfsc <= o_nirqfsc + 16'd1;
     end
 endmodule
 "#;
@@ -601,8 +602,9 @@ pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String
 }
 
 /// Node `k` of the ring top: its surroundings (`merkur_node_env`) and its
-/// instance.
-fn node(k: usize, kind: Kind, n: usize, restarts: bool) -> String {
+/// instance (`flying`: the ring has backups, [`crate::special_master`]'s
+/// `i_flying`).
+fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String {
     let mut v = String::new();
     let w = |v: &mut String, s: &str| {
         v.push_str(s);
@@ -708,7 +710,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool) -> String {
                         pf = cfg::PRIO,
                         ef = cfg::ELECT
                     ),
-                    format!(".i_period(period_r_{k}), .i_prio(prio_{k}), .i_elect(elect_{k}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}), .o_base(base_{k}),"),
+                    format!(".i_period(period_r_{k}), .i_prio(prio_{k}), .i_elect(elect_{k}), .i_flying(1'b{}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}), .o_base(base_{k}),", u8::from(flying)),
                 )
             } else {
                 (
@@ -922,8 +924,10 @@ fn top(kinds: &[Kind], cap: usize, restarts: bool) -> String {
     }
     w(&mut v, "    /* verilator lint_on UNUSEDSIGNAL */");
     // Nodes: their surroundings (`merkur_node_env`: clock, inputs), instances.
+    // A ring with backups (more than one clock-base node, protocol §8).
+    let flying = kinds.iter().filter(|&&x| x == Kind::SpecialMaster).count() > 1;
     for (k, &kind) in kinds.iter().enumerate() {
-        v.push_str(&node(k, kind, n, restarts));
+        v.push_str(&node(k, kind, n, restarts, flying));
     }
     // Capture entries carry the ring's frame count when written (its low 8
     // bits: the frames every clock-base node has sent, the special master

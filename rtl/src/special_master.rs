@@ -85,6 +85,7 @@
 //! | `i_cs_timeout` | in | 20 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods; 2.5 + the highest backup priority in a ring with backups, §8) |
 //! | `i_prio` | in | 3 | static | 0: the clock base from power-up; 1–7: a backup of this priority |
 //! | `i_elect` | in | 20 | static | a backup's election time in bit times ((1.5 + `i_prio`) periods) |
+//! | `i_flying` | in | 1 | static | the ring has backups: a priority-0 node that its host starts with JOIN after a restart ([`Mdb`], protocol §12) rejoins as a master and never starts a clock base (0: a ring without backups, whose special master's restart restarts the ring: its host starts it with bit 0; synthesis removes the forwarder) |
 //! | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
 //! | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word; each also goes into the alarm queue, `mdb`) |
@@ -169,6 +170,9 @@ pub struct SpecialMaster {
     pub i_prio: Signal<In, Bits<3>>,
     /// A backup's election time in bit times ((1.5 + priority) periods).
     pub i_elect: Signal<In, Bits<20>>,
+    /// The ring has backups: with priority 0, a restart's JOIN makes the
+    /// node a master that never starts a clock base (protocol §8, §12).
+    pub i_flying: Signal<In, Bit>,
     /// Wishbone cycle.
     pub i_wb_cyc: Signal<In, Bit>,
     /// Wishbone strobe.
@@ -334,6 +338,9 @@ pub struct SpecialMaster {
     fs_cleared: DFF<Bit>,
     /// Elected (a backup that took over the clock base).
     cb: DFF<Bit>,
+    /// Priority 0 restarted in a ring with backups (JOIN): a master; a
+    /// register copy for [`SlotSel`].
+    join_r: DFF<Bit>,
     /// The clock base now: elected, or priority 0.
     base: Signal<Local, Bit>,
     /// Bit times since the last packet started on INPUT (election timer).
@@ -417,6 +424,7 @@ impl Default for SpecialMaster {
             o_base: Default::default(),
             i_prio: Default::default(),
             i_elect: Default::default(),
+            i_flying: Default::default(),
             rx_in: PortRx::new(false),
             rx_bsr: PortRx::new(false),
             ftx: Default::default(),
@@ -515,6 +523,7 @@ impl Default for SpecialMaster {
             txs: Default::default(),
             fs_cleared: Default::default(),
             cb: Default::default(),
+            join_r: Default::default(),
             base: Default::default(),
             et: Default::default(),
             rw_hdr: Default::default(),
@@ -610,6 +619,7 @@ impl Logic for SpecialMaster {
             st_used_slot,
             last_num,
             cb,
+            join_r,
             et,
             rw_hdr,
             last_cyc3,
@@ -625,14 +635,18 @@ impl Logic for SpecialMaster {
             scyc,
             scyc_v
         );
-        // The clock base: priority 0 from power-up, a backup once elected.
-        self.base.next = self.cb.q.val() | (self.i_prio.val() == 0);
+        // The clock base: priority 0 from power-up (but after a restart in
+        // a ring with backups: JOIN), a backup once elected.
+        self.base.next = self.cb.q.val()
+            | ((self.i_prio.val() == 0) & !(self.mdb.o_join.val() & self.i_flying.val()));
+        self.join_r.d.next = self.mdb.o_join.val() & self.i_flying.val();
         // The slot whose memories the send side reads: the frame
         // generator's, or the forwarder's before the election ([`SlotSel`]).
         self.txs.i_ftx.next = self.ftx.o_slot.val();
         self.txs.i_fwd.next = self.fwd.o_slot.val();
         self.txs.i_cb.next = self.cb.q.val();
         self.txs.i_prio.next = self.i_prio.val();
+        self.txs.i_join.next = self.join_r.q.val();
         self.mdb.i_tx_slot.next = self.txs.o_slot.val();
         self.aact.read_address.next = self.txs.o_slot.val();
         self.o_base.next = self.base.val();
@@ -1148,6 +1162,7 @@ impl Logic for SpecialMaster {
         self.o_wb_dat.next = self.mdb.o_wb_dat.val();
         self.o_wb_ack.next = self.mdb.o_wb_ack.val();
         self.mdb.i_home.next = self.i_address.val();
+        self.mdb.i_slots_m1.next = self.i_slots_m1.val();
         self.mdb.i_fs.next = self.failsafe.q.val();
         self.mdb.i_mode.next = self.swc.o_mode.val();
         self.mdb.i_wvalid.next = self.rx_in.o_wvalid.val();
@@ -1301,13 +1316,19 @@ impl Logic for SpecialMaster {
                 | self.pend_i2.q.val());
         self.fwd.i_alarm_reason.next = self.reason.val();
         self.fwd.i_alarm_seq.next = self.seq_tx.val();
+        // As in a master (crate::master): not in the reload frame after a
+        // restart, an own slot only with a value (protocol §12).
         self.slot_cfg.next = 0.into();
-        if self.mdb.o_running.val() {
+        if self.mdb.o_running.val() & !self.mdb.o_reload.val() {
             if self.mdb.o_tx_local.val() {
-                self.slot_cfg.next = 1.into();
+                if self.mdb.o_tx_value.val() {
+                    self.slot_cfg.next = 1.into();
+                } else if self.mdb.o_tx_home.val() {
+                    self.slot_cfg.next = 3.into();
+                }
             }
-            if self.mdb.o_tx_act.val() {
-                self.slot_cfg.next = self.slot_cfg.val() | 2;
+            if self.mdb.o_tx_act.val() & self.mdb.o_tx_value.val() {
+                self.slot_cfg.next = 2.into();
             }
         }
         self.fwd.i_slot_cfg.next = self.slot_cfg.val();
@@ -1497,6 +1518,7 @@ impl Logic for SpecialMaster {
             // fault). It starts a frame at once, CYC continuing the count;
             // what a clock base learns from returning frames starts afresh.
             if self.mdb.o_running.val()
+                & (self.i_prio.val() != 0)
                 & self.armed.q.val()
                 & !self.failsafe.q.val()
                 & !self.rw_hdr.q.val()
@@ -1541,6 +1563,8 @@ pub struct SlotSel {
     pub i_cb: Signal<In, Bit>,
     /// Backup priority (0: the clock base from power-up).
     pub i_prio: Signal<In, Bits<3>>,
+    /// Priority 0 restarted in a ring with backups: a master (a register).
+    pub i_join: Signal<In, Bit>,
     /// The slot to read.
     pub o_slot: Signal<Out, Bits<12>>,
 }
@@ -1549,7 +1573,7 @@ impl Logic for SlotSel {
     #[hdl_gen]
     fn update(&mut self) {
         self.o_slot.next = self.i_ftx.val();
-        if !self.i_cb.val() & (self.i_prio.val() != 0) {
+        if !self.i_cb.val() & ((self.i_prio.val() != 0) | self.i_join.val()) {
             self.o_slot.next = self.i_fwd.val();
         }
     }

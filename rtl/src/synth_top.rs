@@ -342,7 +342,7 @@ fn master_instance(
         v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
         v.push_str("    /* verilator lint_off UNUSEDSIGNAL */\n    wire base; // always 1 here: i_prio is 0, the clock base from power-up\n    /* verilator lint_on UNUSEDSIGNAL */\n");
         format!(
-            ",\n        .i_period(20'd{}), .i_prio(3'd0), .i_elect(20'd0), .o_serr(serr), .o_hop(hop), .o_cycles(cycles), .o_base(base)",
+            ",\n        .i_period(20'd{}), .i_prio(3'd0), .i_elect(20'd0), .i_flying(1'b0), .o_serr(serr), .o_hop(hop), .o_cycles(cycles), .o_base(base)",
             st.period
         )
     } else {

@@ -18,7 +18,7 @@ use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::line::{Lead, Word};
 use merkur_model::ring::{self, table1, Carry, CycleRecord, EventKind, HeaderRx, Mode, Port, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
-use merkur_rtl::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
+use merkur_rtl::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_JOIN, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
 use merkur_rtl::ring_top::{
     cap_slots, cfg as field, ring_verilog_with, status as st, INC_NOMINAL, TICKS_PER_BIT,
 };
@@ -145,13 +145,6 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
         return Some(
             "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
         );
-    }
-    if let Some((i, (c, f))) = cfg.faults.iter().enumerate().find(
-        |(_, (_, f))| matches!(f, Fault::Restart { node } if cfg.nodes[*node].kind.is_master()),
-    ) {
-        return Some(format!(
-            "fault[{i}] (cycle {c}, {f}): a master's restart (protocol §12: it reloads its memory from the ring) is in the model only; the RTL restarts slaves"
-        ));
     }
     if let Some(s) = cfg.last_critical() {
         return Some(format!(
@@ -898,12 +891,22 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                 if fd == field::POR {
                     // Power on (protocol §12): the node held in its
                     // power-on reset for 4 bit times (8 of its clocks),
-                    // then alive.
+                    // then alive; a master's host loads its configuration
+                    // again and starts it with JOIN (a reload frame first).
                     for _ in 0..4 * TICKS_PER_BIT {
                         r.tick();
                     }
                     r.cfg(sel, field::KILL, 0);
                     r.cfg(sel, field::POR, 0);
+                    if kinds[sel].is_master() {
+                        for slot in 0..s {
+                            let b = cfg.config_byte(sel, slot);
+                            if b != 0 {
+                                r.wb(sel, WB_CFG + slot as u16, Some(b as u16))?;
+                            }
+                        }
+                        r.wb(sel, WB_STATUS, Some(ST_JOIN))?;
+                    }
                 }
                 faults.remove(i);
             } else {

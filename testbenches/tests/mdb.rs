@@ -263,3 +263,137 @@ fn a_full_queue_takes_an_alarm_in_the_clock_an_entry_is_removed() {
     expect.push(2 << 12 | 20);
     assert_eq!(out, expect, "oldest first, the new alarm last");
 }
+
+/// A restarted master (protocol §12) against a naive model kept here: the
+/// host loads the configuration (LOCAL home slot 3 and slot 9, ACT slot 7;
+/// LAST reads back for slot S − 1 only, §7)
+/// and starts it with JOIN or, in about a third of the seeds' runs, with
+/// bit 0 (a power-up: every slot has a value). Seeded random received
+/// words (good and bad headers, some in failsafe; good, bad and alarm data
+/// words in the own slots and others) and host writes (own slots, and
+/// others, which are refused); after each step the send side's look-up of
+/// a random slot (`o_tx_value`, `o_tx_home`), `o_reload`, and now and then
+/// the data memory as the host reads it.
+#[test]
+fn a_joined_master_reads_a_reload_frame_and_writes_an_own_slot_only_with_a_value() {
+    const SLOTS: usize = 12;
+    const HOME: usize = 3;
+    let own = |s: usize| [3usize, 7, 9].contains(&s);
+    let seed = Rng::seed(0x701e);
+    let mut rng = Rng::new(seed);
+    for run in 0..6 {
+        let mut b = Bench::new();
+        let home_port = b.m.port("i_home");
+        b.m.set(home_port, HOME as u64);
+        let m1 = b.m.port("i_slots_m1");
+        b.m.set(m1, SLOTS as u64 - 1);
+        // LAST is not stored (protocol §7): it reads 1 for slot S − 1 only.
+        for (s, cfg) in [(3u16, 9u16), (9, 8), (7, 2)] {
+            b.wb(merkur_rtl::mdb::WB_CFG + s, Some(cfg));
+        }
+        let cfg_of = |b: &mut Bench, s: u16| b.wb(merkur_rtl::mdb::WB_CFG + s, None);
+        assert_eq!(
+            cfg_of(&mut b, 3),
+            8,
+            "seed {seed}, run {run}: LAST written, not S - 1"
+        );
+        assert_eq!(
+            cfg_of(&mut b, SLOTS as u16 - 1),
+            1,
+            "seed {seed}, run {run}: LAST of S - 1"
+        );
+        let join = rng.below(3) != 0;
+        let start = if join {
+            merkur_rtl::mdb::ST_JOIN
+        } else {
+            ST_RUN
+        };
+        b.wb(WB_STATUS, Some(start));
+        // The naive model.
+        let mut rl = if join { 1 } else { 0 };
+        let mut hv = [false; SLOTS];
+        let mut db = [0u16; SLOTS];
+        let mut fs_frame = false;
+        let fs_port = b.m.port("i_fs");
+        let tx_port = b.m.port("i_tx_slot");
+        let (value_port, home_out, reload_port) = (
+            b.m.port("o_tx_value"),
+            b.m.port("o_tx_home"),
+            b.m.port("o_reload"),
+        );
+        let status = b.wb(WB_STATUS, None);
+        assert_eq!(
+            status >> 8 & 1 == 1,
+            join,
+            "seed {seed}, run {run}: status bit 8 (JOIN)"
+        );
+        for step in 0..600 {
+            let ctx = format!("seed {seed}, run {run} (join {join}), step {step}");
+            match rng.below(8) {
+                // A header, good or bad, in failsafe now and then.
+                0 => {
+                    let fs = rng.below(5) == 0;
+                    let ok = rng.below(6) != 0;
+                    b.m.set(fs_port, fs as u64);
+                    b.word(1, 0, rng.below(8) << 12, false, ok);
+                    if ok {
+                        fs_frame = fs;
+                        if !fs {
+                            rl = match rl {
+                                1 => 2,
+                                _ => 0,
+                            };
+                        }
+                    }
+                }
+                // A host write: an own slot takes it and has a value.
+                1 => {
+                    let s = rng.below(SLOTS as u64) as usize;
+                    let d = rng.below(1 << 16) as u16;
+                    b.wb(s as u16, Some(d));
+                    if own(s) {
+                        db[s] = d;
+                        hv[s] = true;
+                    }
+                }
+                // A received data word: good, bad or an alarm.
+                _ => {
+                    let s = if rng.below(2) == 0 {
+                        [3usize, 7, 9][rng.below(3) as usize]
+                    } else {
+                        rng.below(SLOTS as u64) as usize
+                    };
+                    let d = rng.below(1 << 16) as u16;
+                    let ok = rng.below(5) != 0;
+                    let alarm = rng.below(6) == 0;
+                    b.word(2, s as u64, d as u64, alarm, ok);
+                    if ok && !alarm && !fs_frame && (!own(s) || (join && !hv[s])) {
+                        db[s] = d;
+                        hv[s] |= own(s);
+                    }
+                }
+            }
+            assert_eq!(b.m.get(reload_port) == 1, rl != 0, "{ctx}: o_reload");
+            let s = rng.below(SLOTS as u64) as usize;
+            b.m.set(tx_port, s as u64);
+            for _ in 0..4 {
+                b.tick();
+            }
+            let value = !join || hv[s];
+            assert_eq!(
+                b.m.get(value_port) == 1,
+                value,
+                "{ctx}: o_tx_value of slot {s}"
+            );
+            assert_eq!(
+                b.m.get(home_out) == 1,
+                s == HOME,
+                "{ctx}: o_tx_home of slot {s}"
+            );
+            if rng.below(10) == 0 {
+                let s = rng.below(SLOTS as u64) as usize;
+                assert_eq!(b.wb(s as u16, None), db[s], "{ctx}: data memory, slot {s}");
+            }
+        }
+    }
+}

@@ -7,7 +7,7 @@
 use merkur_model::config::{self, cfg_bits};
 use merkur_model::ring::{self, Slot};
 use merkur_rtl::master::Master;
-use merkur_rtl::mdb::{ST_RUN, WB_CFG, WB_STATUS};
+use merkur_rtl::mdb::{ST_JOIN, ST_RUN, WB_CFG, WB_STATUS};
 use merkur_rtl::ring_top::TICKS_PER_BIT;
 use merkur_rtl::verilog::block_verilog;
 use merkur_testbenches::ring_sim::{run, Options, Report};
@@ -333,18 +333,74 @@ fn a_restarted_sensor_rejoins_through_the_tst_handshake() {
         "{name}: a node failed safe: {:?}",
         rep.fs_ticks
     );
-    let power = rep.fault_ticks[1].expect("the restart was injected");
-    let modes: Vec<u64> = rep
-        .mode_ticks
-        .iter()
-        .filter(|&&(k, t, _)| k == 2 && t >= power)
-        .map(|m| m.2)
-        .collect();
     // N (power-up), WU, WD, N (protocol §12; 0 N, 1 WU, 2 WD).
     assert_eq!(
-        modes,
+        modes_after(&rep, 2, 1),
         [0, 1, 2, 0],
         "{name}: node 2's modes after the restart"
+    );
+}
+
+/// Node `k`'s switchbox modes (0 N, 1 WU, 2 WD) from its restart (fault
+/// `fault`) on.
+fn modes_after(rep: &Report, k: usize, fault: usize) -> Vec<u64> {
+    let power = rep.fault_ticks[fault].expect("the restart was injected");
+    rep.mode_ticks
+        .iter()
+        .filter(|&&(n, t, _)| n == k && t >= power)
+        .map(|m| m.2)
+        .collect()
+}
+
+/// Master node 3 dies in cycle 18 and gets power again before cycle 21
+/// (`tb-data/ring8_restart.toml`, protocol §12): its host loads the
+/// configuration and starts it with JOIN; it reads its reload frame
+/// without writing, takes its ACT slot 7 from the ring (the actuator's
+/// output register in the VOID nobody served), leaves its LOCAL slot 9 VOID
+/// until its host writes it in cycle 30, and rejoins through the TST
+/// handshake; the ring agrees with the model, nobody fails safe. (Started
+/// with bit 0 instead of JOIN, it writes its empty memory's zeros: 126
+/// mismatches, measured 2026-12-04.)
+#[test]
+fn a_restarted_master_reloads_from_the_ring_before_it_writes() {
+    let name = "ring8_restart.toml";
+    let cfg = load(name);
+    let recs = ring::run(&cfg);
+    let rep = agrees(name, &cfg, &recs, Rng::seed(0x7105));
+    assert!(
+        rep.fs_ticks.iter().all(Option::is_none),
+        "{name}: a node failed safe: {:?}",
+        rep.fs_ticks
+    );
+    assert_eq!(
+        modes_after(&rep, 3, 3),
+        [0, 1, 2, 0],
+        "{name}: node 3's modes after the restart"
+    );
+}
+
+/// The special master dies before cycle 4, backup node 3 takes over, and
+/// the old special master gets power again before cycle 9
+/// (`tb-data/ring8_sm_restart.toml`, protocol §8, §12): its host starts it
+/// with JOIN, and in a ring with backups that makes it a master — it
+/// rejoins (N, WU, WD, N), reloads, and never starts a clock base (started
+/// with bit 0, it starts a second one and the ring loses its frames,
+/// measured 2026-12-04).
+#[test]
+fn a_restarted_special_master_rejoins_as_a_master() {
+    let name = "ring8_sm_restart.toml";
+    let cfg = load(name);
+    let recs = ring::run(&cfg);
+    let rep = agrees(name, &cfg, &recs, Rng::seed(0x7105));
+    assert_eq!(
+        recs.last().unwrap().base,
+        3,
+        "{name}: the model's clock base"
+    );
+    assert_eq!(
+        modes_after(&rep, 0, 1),
+        [0, 1, 2, 0],
+        "{name}: node 0's modes after the restart"
     );
 }
 
@@ -654,4 +710,11 @@ fn the_host_bus_refuses_foreign_slots_and_late_configuration() {
         2,
         "configuration refusal flagged"
     );
+    // A JOIN (the start after a restart, protocol §12) while running is
+    // refused and flagged the same way.
+    wb(&mut m, &bus, WB_STATUS, Some(2));
+    wb(&mut m, &bus, WB_STATUS, Some(ST_JOIN));
+    let st = wb(&mut m, &bus, WB_STATUS, None);
+    assert_eq!(st & 2, 2, "JOIN while running flagged");
+    assert_eq!(st & 0x100, 0, "JOIN while running taken");
 }
