@@ -115,7 +115,6 @@ pub struct Master {
     node: Slave,
     mdb: Mdb,
     aact: RAM<Bit, 12>,
-    slot_cfg: Signal<Local, Bits<2>>,
 }
 
 impl Logic for Master {
@@ -141,25 +140,13 @@ impl Logic for Master {
         self.node.i_master.next = true;
         self.node.i_fs_set.next = self.mdb.o_irq_fs.val();
 
-        // The forwarder's per-slot look-ups: LOCAL (cfg bit 3) and ACT
-        // (cfg bit 1), only once the host started the ring, not in a
-        // restarted master's reload frame, and only for a slot with a value
-        // (protocol §12): a LOCAL home slot without one takes only an alarm
-        // (3).
-        self.slot_cfg.next = 0.into();
-        if self.mdb.o_running.val() & !self.mdb.o_reload.val() {
-            if self.mdb.o_tx_local.val() {
-                if self.mdb.o_tx_value.val() {
-                    self.slot_cfg.next = 1.into();
-                } else if self.mdb.o_tx_home.val() {
-                    self.slot_cfg.next = 3.into();
-                }
-            }
-            if self.mdb.o_tx_act.val() & self.mdb.o_tx_value.val() {
-                self.slot_cfg.next = 2.into();
-            }
+        // What the forwarder writes in each slot: the data block decides
+        // (LOCAL, ACT, an alarm only; protocol §12), once the host started
+        // the node.
+        self.node.i_slot_cfg.next = 0.into();
+        if self.mdb.o_running.val() {
+            self.node.i_slot_cfg.next = self.mdb.o_tx_cfg.val();
         }
-        self.node.i_slot_cfg.next = self.slot_cfg.val();
         self.node.i_slot_data.next = self.mdb.o_tx_data.val();
         self.mdb.i_tx_slot.next = self.node.o_fwd_slot.val();
         self.aact.read_address.next = self.node.o_fwd_slot.val();

@@ -54,7 +54,7 @@
 //! **Restart (protocol §12).** A master that got power again is started
 //! with JOIN (`0x2000` bit 6) instead of bit 0, after its host loaded the
 //! configuration again: its first frame read with a good header outside
-//! failsafe is the **reload frame**, in which it writes nothing (`o_reload`);
+//! failsafe is the **reload frame**, in which it writes nothing (`o_tx_cfg` 0);
 //! and each of its own slots (LOCAL or ACT) has a value only once a good
 //! data word came by in it (taken into the data memory, which it otherwise
 //! never does for its own slots) or its host wrote it — one has-value bit
@@ -62,8 +62,8 @@
 //! (bit 0: LAST is not stored), so no memory grows; the receive side reads
 //! it in the clock a word arrives (the send side's look-up waits that
 //! clock).
-//! Until then the send side reports `o_tx_value` low and the node does not
-//! write the slot (but for an alarm in its home slot, `o_tx_home`). A
+//! Until then the send side reports the slot as one it does not write (but
+//! for an alarm in its home slot, `o_tx_cfg` 3). A
 //! master started with bit 0 has a value for every slot from the start.
 //!
 //! A host drains the queue with: read 0x2004; while entries > 0, read 0x2003
@@ -84,9 +84,8 @@
 //! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
 //! | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 //! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
-//! | `o_tx_data`, `o_tx_local`, `o_tx_act` | out | 16, 1, 1 | clock | data memory and configuration (LOCAL, ACT) of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
-//! | `o_tx_value`, `o_tx_home` | out | 1, 1 | clock | `i_tx_slot` has a value to write (always, but after JOIN see above); it is the home slot (same timing) |
-//! | `o_reload` | out | 1 | clock | started by JOIN, the reload frame not yet read to its end: write nothing |
+//! | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
+//! | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
 //! | `o_join` | out | 1 | clock | started by JOIN |
 //! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 //! | `o_running` | out | 1 | clock | the host started the ring |
@@ -195,16 +194,9 @@ pub struct Mdb {
     pub i_tx_slot: Signal<In, Bits<12>>,
     /// Data memory of `i_tx_slot`.
     pub o_tx_data: Signal<Out, Bits<16>>,
-    /// `i_tx_slot` is LOCAL.
-    pub o_tx_local: Signal<Out, Bit>,
-    /// `i_tx_slot` is ACT.
-    pub o_tx_act: Signal<Out, Bit>,
-    /// `i_tx_slot` has a value to write (protocol §12).
-    pub o_tx_value: Signal<Out, Bit>,
-    /// `i_tx_slot` is the home slot.
-    pub o_tx_home: Signal<Out, Bit>,
-    /// Started by JOIN and the reload frame not yet read: write nothing.
-    pub o_reload: Signal<Out, Bit>,
+    /// What the node writes in `i_tx_slot`: 0 nothing, 1 LOCAL, 2 ACT, 3
+    /// its home slot without a value (only an alarm).
+    pub o_tx_cfg: Signal<Out, Bits<2>>,
     /// Started by JOIN (after a restart).
     pub o_join: Signal<Out, Bit>,
     /// Stage 2 valid.
@@ -333,6 +325,8 @@ pub struct Mdb {
     perm: DFF<Bits<4>>,
     aerr_inc: DFF<Bit>,
     stat: Signal<Local, Bits<16>>,
+    /// The send side's slot has a value to write (protocol §12).
+    tx_value: Signal<Local, Bit>,
     irq_word: Signal<Local, Bits<16>>,
     s2_cfg: Signal<Local, Bits<4>>,
     s2_ast: Signal<Local, Bits<6>>,
@@ -449,11 +443,26 @@ impl Logic for Mdb {
         }
         self.tx_home.d.next = self.i_tx_slot.val() == self.i_home.val();
         self.o_tx_data.next = self.tx_data.q.val();
-        self.o_tx_local.next = self.tx_cfg.q.val().get_bit(3);
-        self.o_tx_act.next = self.tx_cfg.q.val().get_bit(1);
-        self.o_tx_value.next = !self.join.q.val() | self.tx_cfg.q.val().get_bit(0);
-        self.o_tx_home.next = self.tx_home.q.val();
-        self.o_reload.next = self.rl.q.val() != 0;
+        // What the node writes in the slot: LOCAL (configuration bit 3) or
+        // ACT (bit 1), not in the reload frame after a restart, and only
+        // with a value (protocol §12); a LOCAL home slot without one takes
+        // only an alarm (3). (A forwarder writes only while the host runs
+        // the node, `o_running`; a frame the clock base started is written
+        // to its end.)
+        self.tx_value.next = !self.join.q.val() | self.tx_cfg.q.val().get_bit(0);
+        self.o_tx_cfg.next = 0.into();
+        if self.rl.q.val() == 0 {
+            if self.tx_cfg.q.val().get_bit(3) {
+                if self.tx_value.val() {
+                    self.o_tx_cfg.next = 1.into();
+                } else if self.tx_home.q.val() {
+                    self.o_tx_cfg.next = 3.into();
+                }
+            }
+            if self.tx_cfg.q.val().get_bit(1) & self.tx_value.val() {
+                self.o_tx_cfg.next = 2.into();
+            }
+        }
         self.o_join.next = self.join.q.val();
 
         // Receive pipeline, stage 1: read the slot's configuration and

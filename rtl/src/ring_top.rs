@@ -32,8 +32,9 @@
 //! capture register of every synthesis top (`merkur_ddr_in`'s `q`) takes
 //! them: the node's logic reads them in the clock after. Everything else
 //! the top gives a node (address, slot count, CS timeout, period, sensor
-//! value, user requests) goes through a register on the node's clock too,
-//! as in silicon, where they are constants or synchronised. Besides being
+//! value, user requests, a special master's backup priority and election
+//! time, a master's Wishbone) goes through a register on the node's clock
+//! too, as in silicon, where they are constants or synchronised. Besides being
 //! the silicon's timing, this keeps every input of a node still between
 //! its own clock edges, so Verilator evaluates a node's logic at its edges
 //! only, not at every tick (issue 24: ring100 1.7× faster,
@@ -79,7 +80,7 @@
 //! | `o_rd` | out | 32 | status read data (combinational; 0 while `i_rd_en` is low) |
 //! | `i_cap_en`, `i_cap_fibre`, `i_cap_idx` | in | 1, 16, log2(4·CAP) | capture read enable and address (fibre P0.. then S0..) |
 //! | `o_cap` | out | 32 | captured entry (combinational; 0 while `i_cap_en` is low) |
-//! | `i_wb_node`, `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr`, `i_wb_dat` | in | | Wishbone of master `i_wb_node` (its own clock) |
+//! | `i_wb_node`, `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr`, `i_wb_dat` | in | | Wishbone of master `i_wb_node`, registered on that node's clock (a transfer takes one node clock more than the block's own) |
 //! | `o_wb_dat`, `o_wb_ack` | out | 16, 1 | its Wishbone answer |
 //!
 //! Configuration fields ([`cfg`]; `i_cfg_sel` = node or fibre index; global
@@ -413,16 +414,17 @@ const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated rin
 // | `i_pif`, `i_sif` | in | 12, 12 | for each of the 4 levels (3 bits each, oldest in bits 2:0), the sub-tick time of the sender's half that starts in that tick: eighths of a tick before it |
 // | `i_slots_m1`, `i_cs_timeout`, `i_period` | in | 12, 20, 20 | the ring's configuration |
 // | `i_irq` | in | 5 | the node's interrupt pulses `{fs change, reconfig, failsafe, irq2, irq1}` |
-// | `o_nclk` | out | 1 | the node's clock |
+// | `nclk` | in | 1 | the node's clock: `clk` gated by `o_enl`, made in the ring top for every node at once (no `i_` prefix: a clock, like the nodes' `clock`, not a value the build keeps per instance) |
+// | `o_enl` | out | 1 | the node's clock enable for this tick (latched while `clk` is low) |
 // | `o_hs` | out | 1 | a new half of the node's DDR output pair starts on the line this tick |
 // | `o_hfrac` | out | 3 | the sub-tick time of that half: its clock edge's, eighths of a tick before the tick |
 // | `o_first` | out | 1 | the line carries the first half (bit 0) of the node's DDR pair |
 // | `o_dead` | out | 1 | the node is dead (its output fibres dark) |
 // | `o_por` | out | 1 | the node is held in its power-on reset (a restart) |
-// | `o_pi` … `o_period` | out | | the inputs above and the node's address, user request `{fs, irq2, irq1}` and sensor value (chosen by `i_incyc`), registered on `o_nclk` |
+// | `o_pi` … `o_period` | out | | the inputs above and the node's address, user request `{fs, irq2, irq1}` and sensor value (chosen by `i_incyc`), registered on `nclk` |
 // | `o_nirq1`, `o_nirq2`, `o_nirqfs`, `o_nirqrc`, `o_nirqfsc` | out | 16 each | interrupt pulses counted while the node is alive |
 module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_incyc, i_innew, i_pi, i_si,
-    i_pio, i_sio, i_pif, i_sif, i_slots_m1, i_cs_timeout, i_period, i_irq, o_nclk, o_hs, o_hfrac, o_first, o_dead,
+    i_pio, i_sio, i_pif, i_sif, i_slots_m1, i_cs_timeout, i_period, i_irq, nclk, o_enl, o_hs, o_hfrac, o_first, o_dead,
     o_por, o_pi, o_si, o_addr, o_slots_m1,
     o_cs_timeout, o_period, o_ureq, o_sens, o_nirq1, o_nirq2, o_nirqfs, o_nirqrc, o_nirqfsc);
     input wire clk;
@@ -443,7 +445,8 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     input wire [19:0] i_cs_timeout;
     input wire [19:0] i_period;
     input wire [4:0] i_irq;
-    output wire o_nclk;
+    input wire nclk;
+    output reg o_enl = 1'b0;
     output wire o_hs;
     output reg [2:0] o_hfrac = 3'd0;
     output wire o_first;
@@ -462,11 +465,9 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     output reg [15:0] o_nirqfs = 16'd0;
     output reg [15:0] o_nirqrc = 16'd0;
     output reg [15:0] o_nirqfsc = 16'd0;
-    wire mine = i_cfg_we && i_cfg_sel == i_index;
     reg [31:0] inc = 32'h40000000;
     reg [31:0] acc = 32'd0;
     reg en = 1'b0;
-    reg enl = 1'b0;
     reg fired = 1'b0, fired2 = 1'b0, selp = 1'b0;
     assign o_hs = fired | (selp & !fired2);
     assign o_first = fired | fired2;
@@ -482,40 +483,42 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     always @(posedge clk) begin
         {en, acc} <= sum;
         if (sum[32]) frac <= sum[30] ? 3'd7 : sum[29:27];
-        if (enl) o_hfrac <= frac;
-        fired <= enl;
+        if (o_enl) o_hfrac <= frac;
+        fired <= o_enl;
         fired2 <= fired;
         selp <= fired | fired2;
-        if (mine && i_cfg_field == 8'd@INC@) inc <= i_cfg_val;
-        if (mine && i_cfg_field == 8'd@PHASE@) acc <= i_cfg_val;
-        if (mine && i_cfg_field == 8'd@KILL@) o_dead <= i_cfg_val[0];
-        if (mine && i_cfg_field == 8'd@POR@) o_por <= i_cfg_val[0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@INC@) inc <= i_cfg_val;
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@PHASE@) acc <= i_cfg_val;
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@KILL@) o_dead <= i_cfg_val[0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@POR@) o_por <= i_cfg_val[0];
     end
-    always @(negedge clk) enl <= en;
-    assign o_nclk = clk & enl;
+    // The enable, latched while the tick is low so that the gated clock has no glitch. The ring top gates `clk`
+    // with it for all its nodes in one expression (a simulator evaluates that at every change of `clk`; one
+    // expression instead of one per node was 8 % of ring100's time, docs/benchmarks.md).
+    always @(negedge clk) o_enl <= en;
     // A user request is raised at once (`now`) or when the frame with its CYC has ended on the node's input fibre.
     reg [11:0] addr = 12'd0;
     reg [7:0] req = 8'd0;
     reg [3:0] reqhold = 4'd0;
     reg [2:0] reqbits = 3'd0;
     always @(posedge clk) begin
-        if (mine && i_cfg_field == 8'd@ADDRESS@) addr <= i_cfg_val[11:0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@ADDRESS@) addr <= i_cfg_val[11:0];
         if (reqhold != 4'd0) reqhold <= reqhold - 4'd1;
         if (req[6] && (req[7] || (i_innew && i_incyc == req[5:3]))) begin
             reqbits <= req[2:0];
             reqhold <= 4'd8;
             req[6] <= 1'b0;
         end
-        if (mine && i_cfg_field == 8'd@REQUEST@) req <= i_cfg_val[7:0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@REQUEST@) req <= i_cfg_val[7:0];
     end
     wire [2:0] ureq = (reqhold != 4'd0) ? reqbits : 3'd0;
     // A sensor's four values, chosen by the CYC of the frame whose H1 its input fibre showed last.
     reg [15:0] sens_0 = 16'd0, sens_1 = 16'd0, sens_2 = 16'd0, sens_3 = 16'd0;
     always @(posedge clk) begin
-        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd0) sens_0 <= i_cfg_val[15:0];
-        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd1) sens_1 <= i_cfg_val[15:0];
-        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd2) sens_2 <= i_cfg_val[15:0];
-        if (mine && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd3) sens_3 <= i_cfg_val[15:0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd0) sens_0 <= i_cfg_val[15:0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd1) sens_1 <= i_cfg_val[15:0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd2) sens_2 <= i_cfg_val[15:0];
+        if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@SENSOR@ && i_cfg_val[17:16] == 2'd3) sens_3 <= i_cfg_val[15:0];
     end
     wire [15:0] sens = i_incyc[1:0] == 2'd0 ? sens_0 : i_incyc[1:0] == 2'd1 ? sens_1 : i_incyc[1:0] == 2'd2 ? sens_2 : sens_3;
     // A sample in the tick where the line changed shows the new level only if the sender's half started no later
@@ -524,7 +527,7 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     wire [4:0] pi_l = {i_pi, i_pio};
     wire [4:0] si_l = {i_si, i_sio};
     integer j;
-    always @(posedge o_nclk) begin
+    always @(posedge nclk) begin
         for (j = 0; j < 4; j = j + 1) begin
             o_pi[j] <= (pi_l[j + 1] != pi_l[j]) && (i_pif[3 * j +: 3] < frac) ? pi_l[j] : pi_l[j + 1];
             o_si[j] <= (si_l[j + 1] != si_l[j]) && (i_sif[3 * j +: 3] < frac) ? si_l[j] : si_l[j + 1];
@@ -637,7 +640,8 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
              \x20   wire [1:0] mode_{k};\n\
              \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
              \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
-             \x20   wire nclk_{k}, hs_{k}, first_{k}, dead_{k}{por_w};\n    wire [2:0] hfrac_{k};\n{por_u}\
+             \x20   wire nclk_{k} = nclk[{k}];
+    wire hs_{k}, first_{k}, dead_{k}{por_w};\n    wire [2:0] hfrac_{k};\n{por_u}\
              \x20   wire [3:0] pi_r_{k}, si_r_{k};\n    wire [11:0] addr_r_{k}, slots_m1_r_{k};\n    wire [19:0] cs_timeout_r_{k};\n    wire [2:0] ureq_r_{k};\n\
              \x20   wire [15:0] nirq1_{k}, nirq2_{k}, nirqfs_{k}, nirqrc_{k}, nirqfsc_{k};\n\
              \x20   wire irq1_{k}, irq2_{k}, irqfs_{k}, irqrc_{k}, irqfsc_{k};\n\
@@ -648,7 +652,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
              \x20       .i_incyc(incyc_{k}), .i_innew(innew_{k}), .i_pi({pi}), .i_si({si}),\n\
              \x20       .i_pio(old_{pi_f}), .i_sio(old_{sif}), .i_pif(fr_{pi_f}), .i_sif(fr_{sif}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_period(period),\n\
              \x20       .i_irq({{irqfsc_{k}, irqrc_{k}, irqfs_{k}, irq2_{k}, irq1_{k}}}),\n\
-             \x20       .o_nclk(nclk_{k}), .o_hs(hs_{k}), .o_hfrac(hfrac_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_por(por_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
+             \x20       .nclk(nclk_{k}), .o_enl(enl[{k}]), .o_hs(hs_{k}), .o_hfrac(hfrac_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_por(por_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
              \x20       .o_slots_m1(slots_m1_r_{k}), .o_cs_timeout(cs_timeout_r_{k}), .o_period(period_r_{k}), .o_ureq(ureq_r_{k}), .o_sens(sens_r_{k}),\n\
              \x20       .o_nirq1(nirq1_{k}), .o_nirq2(nirq2_{k}), .o_nirqfs(nirqfs_{k}), .o_nirqrc(nirqrc_{k}), .o_nirqfsc(nirqfsc_{k}));\n\
              \x20   wire [1:0] po_{k}, so_{k};\n    wire fs_{k};\n    wire [15:0] perr_{k}, ferr_{k};",
@@ -702,6 +706,9 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
                          \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{pf}) prio_{k} <= i_cfg_val[2:0];\n\
                          \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{ef}) elect_{k} <= i_cfg_val[19:0];\n\
                          \x20   end\n\
+                         \x20   // On the node's clock, as its other inputs (so that its logic is evaluated at its own edges only).\n\
+                         \x20   reg [2:0] prio_r_{k} = 3'd0;\n    reg [19:0] elect_r_{k} = 20'd0;\n\
+                         \x20   always @(posedge nclk_{k}) begin\n        prio_r_{k} <= prio_{k};\n        elect_r_{k} <= elect_{k};\n    end\n\
                          \x20   // Frames sent while alive (the epoch of the capture, and the driver's frame count).\n\
                          \x20   reg [15:0] cyc_was_{k} = 16'd0;\n    reg [15:0] frames_{k} = 16'd0;\n\
                          \x20   always @(posedge clk) begin\n        cyc_was_{k} <= cycles_{k};\n\
@@ -710,7 +717,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
                         pf = cfg::PRIO,
                         ef = cfg::ELECT
                     ),
-                    format!(".i_period(period_r_{k}), .i_prio(prio_{k}), .i_elect(elect_{k}), .i_flying(1'b{}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}), .o_base(base_{k}),", u8::from(flying)),
+                    format!(".i_period(period_r_{k}), .i_prio(prio_r_{k}), .i_elect(elect_r_{k}), .i_flying(1'b{}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}), .o_base(base_{k}),", u8::from(flying)),
                 )
             } else {
                 (
@@ -722,9 +729,14 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
                 &mut v,
                 &format!(
                     "{defs}\n    wire [15:0] aerr_{k};\n    wire [15:0] act_{k} = 16'd0;\n    wire run_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    wire alarmq_{k}; // the queue's level interrupt: the driver reads the queue over Wishbone\n    /* verilator lint_on UNUSEDSIGNAL */\n    wire [15:0] wbdat_{k};\n    wire wback_{k};\n\
-                     \x20   wire wbsel_{k} = i_wb_node == 16'd{k};\n\
+                     \x20   // The harness's Wishbone, registered on the node's clock like its other inputs (a transfer takes one\n\
+                     \x20   // node clock more; the harness drops STB once it sees ACK, before the node's next edge).\n\
+                     \x20   reg wb_cyc_{k} = 1'b0, wb_stb_{k} = 1'b0, wb_we_{k} = 1'b0;\n    reg [13:0] wb_adr_{k} = 14'd0;\n    reg [15:0] wb_dat_{k} = 16'd0;\n\
+                     \x20   always @(posedge nclk_{k}) begin\n\
+                     \x20       wb_cyc_{k} <= i_wb_cyc && i_wb_node == 16'd{k};\n        wb_stb_{k} <= i_wb_stb && i_wb_node == 16'd{k};\n\
+                     \x20       wb_we_{k} <= i_wb_we;\n        wb_adr_{k} <= i_wb_adr;\n        wb_dat_{k} <= i_wb_dat;\n    end\n\
                      \x20   {m} n{k}({common}, {extra}\n\
-                     \x20       .i_wb_cyc(i_wb_cyc & wbsel_{k}), .i_wb_stb(i_wb_stb & wbsel_{k}), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr), .i_wb_dat(i_wb_dat),\n\
+                     \x20       .i_wb_cyc(wb_cyc_{k}), .i_wb_stb(wb_stb_{k}), .i_wb_we(wb_we_{k}), .i_wb_adr(wb_adr_{k}), .i_wb_dat(wb_dat_{k}),\n\
                      \x20       .o_wb_dat(wbdat_{k}), .o_wb_ack(wback_{k}), .o_irq1(irq1_{k}), .o_irq2(irq2_{k}), .o_irq_fs(irqfs_{k}), .o_irq_rc(irqrc_{k}), .o_alarmq(alarmq_{k}), .o_irq_fsc(irqfsc_{k}),\n\
                      \x20       .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}), .o_aerr(aerr_{k}), .o_running(run_{k}));",
                     m = module_name(kind)
@@ -924,6 +936,14 @@ fn top(kinds: &[Kind], cap: usize, restarts: bool) -> String {
     }
     w(&mut v, "    /* verilator lint_on UNUSEDSIGNAL */");
     // Nodes: their surroundings (`merkur_node_env`: clock, inputs), instances.
+    // Every node's clock: the tick gated by the node's enable, all in one expression.
+    w(
+        &mut v,
+        &format!(
+            "    wire [{m}:0] enl;\n    wire [{m}:0] nclk = {{{n}{{clk}}}} & enl;",
+            m = n - 1
+        ),
+    );
     // A ring with backups (more than one clock-base node, protocol §8).
     let flying = kinds.iter().filter(|&&x| x == Kind::SpecialMaster).count() > 1;
     for (k, &kind) in kinds.iter().enumerate() {

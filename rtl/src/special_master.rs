@@ -380,7 +380,6 @@ pub struct SpecialMaster {
     fwd_cut: DFF<Bit>,
     rep_cut: DFF<Bit>,
     inpkt_was: DFF<Bit>,
-    slot_cfg: Signal<Local, Bits<2>>,
     pass_code: Signal<Local, Bit>,
 }
 
@@ -550,7 +549,6 @@ impl Default for SpecialMaster {
             g2: Default::default(),
             g3: Default::default(),
             jk_s: Default::default(),
-            slot_cfg: Default::default(),
             pass_code: Default::default(),
         }
     }
@@ -778,28 +776,38 @@ impl Logic for SpecialMaster {
             self.reason.next = 3.into();
             self.seq_tx.next = false;
         }
+        // Only where the data block lets the node write (not before its
+        // host started it, not in the reload frame).
         self.send_alarm.next = self.home.val()
+            & ((self.mdb.o_tx_cfg.val() == 1) | (self.mdb.o_tx_cfg.val() == 3))
             & (self.pend_fs.q.val()
                 | self.fl_v.q.val()
                 | self.pend_rc.q.val()
                 | self.pend_i1.q.val()
                 | self.pend_i2.q.val())
             & !self.prev_alarm.q.val();
+        // What goes in the slot: the data block decides, as for the
+        // forwarder (LOCAL, ACT, only an alarm in a home slot without a
+        // value, protocol §12); a slot it does not write keeps the store's word.
         if !self.fs_tx.q.val() {
-            if self.mdb.o_tx_local.val() {
+            if self.mdb.o_tx_cfg.val() == 1 {
                 // LOCAL.
                 self.w_data.next = self.mdb.o_tx_data.val();
                 self.w_alive.next = self.toggle.q.val();
                 self.w_alarm.next = false;
                 self.w_void.next = false;
-                if self.send_alarm.val() {
-                    self.w_data.next = (bit_cast::<16, 4>(self.reason.val()) | 0) << 12;
-                    if self.seq_tx.val() {
-                        self.w_data.next = self.w_data.val() | 0x0800;
-                    }
-                    self.w_alarm.next = true;
+            }
+            // (send_alarm only where the slot takes an alarm: 1 or 3.)
+            if self.send_alarm.val() {
+                self.w_data.next = (bit_cast::<16, 4>(self.reason.val()) | 0) << 12;
+                if self.seq_tx.val() {
+                    self.w_data.next = self.w_data.val() | 0x0800;
                 }
-            } else if self.mdb.o_tx_act.val() {
+                self.w_alive.next = self.toggle.q.val();
+                self.w_alarm.next = true;
+                self.w_void.next = false;
+            }
+            if self.mdb.o_tx_cfg.val() == 2 {
                 // ACT.
                 if !self.st_ok.val() {
                     self.w_data.next = self.mdb.o_tx_data.val();
@@ -824,7 +832,7 @@ impl Logic for SpecialMaster {
         self.aact.write_enable.next = false;
         self.aact.write_address.next = self.ftx.o_slot.val();
         self.aact.write_data.next = self.w_alive.val();
-        if self.ftx.o_take.val() & !self.fs_tx.q.val() & self.mdb.o_tx_act.val() {
+        if self.ftx.o_take.val() & !self.fs_tx.q.val() & (self.mdb.o_tx_cfg.val() == 2) {
             self.aact.write_enable.next = true;
         }
         if self.ftx.o_take.val() & self.home.val() {
@@ -1316,22 +1324,12 @@ impl Logic for SpecialMaster {
                 | self.pend_i2.q.val());
         self.fwd.i_alarm_reason.next = self.reason.val();
         self.fwd.i_alarm_seq.next = self.seq_tx.val();
-        // As in a master (crate::master): not in the reload frame after a
-        // restart, an own slot only with a value (protocol §12).
-        self.slot_cfg.next = 0.into();
-        if self.mdb.o_running.val() & !self.mdb.o_reload.val() {
-            if self.mdb.o_tx_local.val() {
-                if self.mdb.o_tx_value.val() {
-                    self.slot_cfg.next = 1.into();
-                } else if self.mdb.o_tx_home.val() {
-                    self.slot_cfg.next = 3.into();
-                }
-            }
-            if self.mdb.o_tx_act.val() & self.mdb.o_tx_value.val() {
-                self.slot_cfg.next = 2.into();
-            }
+        // As in a master (crate::master): the data block decides what goes
+        // in each slot (protocol §12), once the host started the node.
+        self.fwd.i_slot_cfg.next = 0.into();
+        if self.mdb.o_running.val() {
+            self.fwd.i_slot_cfg.next = self.mdb.o_tx_cfg.val();
         }
-        self.fwd.i_slot_cfg.next = self.slot_cfg.val();
         self.fwd.i_slot_data.next = self.mdb.o_tx_data.val();
         self.fwd.i_slot_alive.next = self.aact.read_data.val();
         // BSR repeated bit for bit in mode N; a TST's rest cut (protocol §9).
