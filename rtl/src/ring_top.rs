@@ -84,8 +84,11 @@
 //! | `o_wb_dat`, `o_wb_ack` | out | 16, 1 | its Wishbone answer |
 //!
 //! Configuration fields ([`cfg`]; `i_cfg_sel` = node or fibre index; global
-//! fields ignore it) and status fields ([`status`]) are named in this file
-//! and used by name by the driver (`testbenches/src/ring_sim.rs`). A user
+//! fields ignore it) and status fields ([`status`]; `i_rd_sel` = node or
+//! fibre index, or for the packed fields a group of them: the driver polls
+//! every node's mode and every fibre's frame state, and each read costs
+//! the simulator a whole evaluation pass) are named in this file and used
+//! by name by the driver (`testbenches/src/ring_sim.rs`). A user
 //! request is raised at once (`now`) or when the node's pacing monitor (its
 //! PI fibre; the special master's PO) sees the end of the DATA frame with
 //! the request's CYC, i.e. before the next frame; a sensor sees the value
@@ -199,6 +202,20 @@ pub mod status {
     /// Fibre: `{in frame, CYC[2:0] of the last DATA H1, 16 zero bits, last
     /// slot decoded since (FFF: none yet)}`, for the driver's fault timing.
     pub const AT: u32 = 24;
+    /// Nodes `MODES_PER_READ·sel …`: `{failsafe, mode[1:0]}` of each in 3
+    /// bits, the first node lowest (one read for many nodes: each read
+    /// costs the simulator a whole evaluation pass).
+    pub const MODES: u32 = 25;
+    /// Fibres `FRAMES_PER_READ·sel …`: the [`FRAME`] field of each in 4
+    /// bits, the first fibre lowest.
+    pub const FRAME_V: u32 = 26;
+    /// `sel` 0: the [`FRAMES`] of every clock-base node (the special
+    /// masters), summed.
+    pub const FRAMES_ALL: u32 = 27;
+    /// Nodes per [`MODES`] read.
+    pub const MODES_PER_READ: usize = 10;
+    /// Fibres per [`FRAME_V`] read.
+    pub const FRAMES_PER_READ: usize = 8;
 }
 
 /// Module name of a node kind in the ring Verilog.
@@ -856,6 +873,48 @@ fn read_muxes(kinds: &[Kind]) -> String {
                 );
             }
         }
+    }
+    // Packed fields: many nodes or fibres in one read.
+    let packed =
+        |count: usize, per: usize, field: u32, bits: usize, item: &dyn Fn(usize) -> String| {
+            let mut lines = String::new();
+            for g in 0..count.div_ceil(per) {
+                let range = g * per..((g + 1) * per).min(count);
+                let pad = 32 - bits * range.len();
+                let mut items: Vec<String> = range.rev().map(item).collect();
+                if pad > 0 {
+                    items.insert(0, format!("{pad}'d0"));
+                }
+                lines.push_str(&format!(
+                    "            {{16'd{g}, 8'd{field}}}: o_rd = {{{}}};\n",
+                    items.join(", ")
+                ));
+            }
+            lines
+        };
+    v.push_str(&packed(n, status::MODES_PER_READ, status::MODES, 3, &|k| {
+        format!("fs_{k}, mode_{k}")
+    }));
+    v.push_str(&packed(
+        nf,
+        status::FRAMES_PER_READ,
+        status::FRAME_V,
+        4,
+        &|f| format!("infr_{f}, hdr_cyc_{f}"),
+    ));
+    let bases: Vec<String> = (0..n)
+        .filter(|&k| kinds[k] == Kind::SpecialMaster)
+        .map(|k| format!("{{16'd0, frames_{k}}}"))
+        .collect();
+    if !bases.is_empty() {
+        w(
+            &mut v,
+            &format!(
+                "            {{16'd0, 8'd{}}}: o_rd = {};",
+                status::FRAMES_ALL,
+                bases.join(" + ")
+            ),
+        );
     }
     w(
         &mut v,

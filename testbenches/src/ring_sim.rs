@@ -730,10 +730,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         // the special master's, protocol §8), each the model's next cycle
         // with a frame; cycles without one (before a takeover) pass with
         // the next frame, or two periods after the last at the run's end.
-        let frames: usize = clock_bases
-            .iter()
-            .map(|&k| r.rd(k, st::FRAMES) as usize)
-            .sum();
+        // (Summed in the ring top: one read.)
+        let frames = r.rd(0, st::FRAMES_ALL) as usize;
         let quiet_end = frames >= framed.len()
             && starts
                 .last()
@@ -916,8 +914,10 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         if r.ticks % 16 == 0 {
             snaps.poll(&mut r, recs, &starts, sent);
             if !cfg.faults.is_empty() {
+                let mut modes_v = Packed::new(st::MODES, st::MODES_PER_READ, 3);
                 for k in 0..n {
-                    let m = r.rd(k, st::MODE);
+                    let mf = modes_v.get(&mut r, k);
+                    let m = mf & 3;
                     if m != modes[k] {
                         modes[k] = m;
                         mode_ticks.push((k, r.ticks, m));
@@ -929,7 +929,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
                             );
                         }
                     }
-                    if fs_ticks[k].is_none() && r.rd(k, st::FS) == 1 {
+                    if fs_ticks[k].is_none() && mf >> 2 == 1 {
                         fs_ticks[k] = Some(r.ticks);
                     }
                 }
@@ -1224,6 +1224,45 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     })
 }
 
+/// A packed status field (`st::MODES`, `st::FRAME_V`): one read gives
+/// `per` nodes' or fibres' values of `bits` bits each; each group is read
+/// at most once per use (a read is a whole evaluation of the model, and the
+/// harness polls every node and fibre).
+struct Packed {
+    field: u32,
+    per: usize,
+    bits: usize,
+    groups: Vec<Option<u64>>,
+}
+
+impl Packed {
+    fn new(field: u32, per: usize, bits: usize) -> Self {
+        Packed {
+            field,
+            per,
+            bits,
+            groups: vec![],
+        }
+    }
+
+    /// Node or fibre `i`'s value.
+    fn get(&mut self, r: &mut Ring, i: usize) -> u64 {
+        let g = i / self.per;
+        if self.groups.len() <= g {
+            self.groups.resize(g + 1, None);
+        }
+        let v = match self.groups[g] {
+            Some(v) => v,
+            None => {
+                let v = r.rd(g, self.field);
+                self.groups[g] = Some(v);
+                v
+            }
+        };
+        v >> (self.bits * (i % self.per)) & ((1 << self.bits) - 1)
+    }
+}
+
 /// Every node's error counters (perr, ferr, aerr, serr) read just after a
 /// frame ended on its INPUT (the fibre the model's mode says), per cycle: the
 /// driver compares their per-cycle increments with the model's outside the
@@ -1266,6 +1305,8 @@ impl Snapshots {
 
     fn poll(&mut self, r: &mut Ring, recs: &[CycleRecord], starts: &[u64], sent: u32) {
         let n = self.next.len();
+        // The fibres' FRAME fields, read packed and only where needed.
+        let mut frame_v = Packed::new(st::FRAME_V, st::FRAMES_PER_READ, 4);
         for k in 0..n {
             if let Some((c, at)) = self.due[k] {
                 if r.ticks >= at {
@@ -1286,10 +1327,14 @@ impl Snapshots {
                 continue;
             }
             let f = Self::input(recs, n, k, c);
-            let fr = r.rd(f, st::FRAME);
+            let fr = frame_v.get(r, f);
+            if fr >> 3 & 1 != 0 || fr & 7 != (c & 7) as u64 {
+                continue;
+            }
+            // Frame c has ended on the fibre, if its H1 came after the
+            // frame's start (read only now: a read costs a pass).
             let th1 = r.rd(f, st::TH1);
-            let fresh = th1.wrapping_sub(starts[c as usize]) & 0xffff_ffff < 1 << 31;
-            if fr >> 3 & 1 == 0 && fr & 7 == (c & 7) as u64 && fresh {
+            if th1.wrapping_sub(starts[c as usize]) & 0xffff_ffff < 1 << 31 {
                 // 8 bit times: the node has counted the last word; the next
                 // frame's first slot is at least 80 bit times away.
                 self.due[k] = Some((c, r.ticks + 8 * TICKS_PER_BIT as u64));
