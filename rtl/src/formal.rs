@@ -169,7 +169,7 @@ fn retime() -> Proof {
         duts: vec![dut("retime", block_verilog(crate::retime::Retime::default()))],
         expose: ["send0", "send1", "len", "run_q"].map(|w| ("retime", w)).to_vec(),
         props: include_str!("../formal/retime.sv"),
-        tasks: vec![task(Mode::Bmc, 100), task(Mode::Cover, 100)],
+        tasks: vec![task(Mode::Bmc, 300), task(Mode::Cover, 100)],
     }
 }
 
@@ -207,7 +207,7 @@ fn mdb() -> Proof {
         duts: vec![dut("mdb", v)],
         expose: wires.map(|w| ("mdb", w)).to_vec(),
         props: include_str!("../formal/mdb.sv"),
-        tasks: vec![task(Mode::Bmc, 16), task(Mode::Cover, 16)],
+        tasks: vec![task(Mode::Bmc, 20), task(Mode::Cover, 16)],
     }
 }
 

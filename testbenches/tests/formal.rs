@@ -59,3 +59,37 @@ fn a_wrong_table_1_row_fails_with_a_waveform() {
     // The covers do not depend on the broken assertion.
     assert_eq!(r.tasks[1].status, Status::Pass);
 }
+
+/// mdb's bounded check with the ACK deadline one clock instead of four: ABC
+/// must find the failure, and the runner must report the assertion and a
+/// counterexample waveform (from its second run under smtbmc).
+#[test]
+fn a_wrong_bounded_property_fails_with_a_waveform() {
+    let tools = Tools::for_tests().unwrap();
+    let mut p = proofs().into_iter().find(|p| p.name == "mdb").unwrap();
+    let right = "wb_ack_in_time: assert (waited <= 4);";
+    assert!(p.props.contains(right));
+    p.props = Box::leak(
+        p.props
+            .replace(right, "wb_ack_in_time: assert (waited <= 1);")
+            .into_boxed_str(),
+    );
+    p.tasks.retain(|t| t.mode == merkur_rtl::formal::Mode::Bmc);
+    assert_eq!(p.tasks.len(), 1);
+    let r = run(&p, &out_dir("broken_bmc"), &tools).unwrap();
+    eprintln!("{}", table(std::slice::from_ref(&r)));
+    let bmc = &r.tasks[0];
+    assert_eq!(bmc.status, Status::Fail, "{:?}", bmc.detail);
+    assert!(
+        bmc.detail.iter().any(|d| d.contains("wb_ack_in_time")),
+        "{:?}",
+        bmc.detail
+    );
+    let sby_log = std::fs::read_to_string(out_dir("broken_bmc").join("mdb/sby.log")).unwrap();
+    assert!(
+        sby_log.contains("engine_0 (abc bmc3) returned FAIL"),
+        "{sby_log}"
+    );
+    let vcd = std::fs::read_to_string(bmc.trace.as_ref().expect("a counterexample")).unwrap();
+    assert!(vcd.contains("$var") && vcd.contains("o_wb_ack"), "{vcd}");
+}
