@@ -6,7 +6,9 @@
 //! under `target/verilator-cache/<hash>/` (hash of the Verilog, the wrapper,
 //! the Verilator version and the flags), and loads it with `libloading`.
 //! One build serves every test and scenario that uses the same Verilog:
-//! node addresses, slot configuration and fault points are ports.
+//! node addresses, slot configuration and fault points are ports. What
+//! every build shares (Verilator's runtime objects and a precompiled
+//! `verilated.h`) is built once into `target/verilator-cache/support-<hash>/`.
 //!
 //! Ports up to 64 bits wide are supported; wider ones are refused at build.
 
@@ -182,6 +184,25 @@ fn cache_root() -> PathBuf {
 /// g++ flags of the Verilated model's objects (part of the cache key).
 const CXXFLAGS: &[&str] = &["-fPIC", "-O2", "-std=c++17", "-w"];
 
+/// The optimisation of a model's cold files (part of the cache key), put
+/// after [`CXXFLAGS`]: Verilator's `*__Slow.cpp` (construction, the initial
+/// values, the settle at time 0) and `*__Syms.cpp` (the symbol table's
+/// constructor) run once per model, never per tick (`perf` of ring100: none
+/// of their functions among the samples). At -O2 they were 27 of ring100's
+/// 97 s of g++ (Syms 15.5 s, the top's slow part 11.4 s); -O1 takes 13.6 s,
+/// -O0 4.4 s. -O0 is not taken: it left the per-tick code the same but
+/// ring100 ran 6 % slower, repeatably (the hot code's placement moves with
+/// the cold code's size); with -O1 ring100 runs as fast as with -O2
+/// (docs/benchmarks.md). The per-tick code keeps -O2.
+const COLD_OPT: &str = "-O1";
+
+/// Whether a Verilated file is cold ([`COLD_OPT`]).
+fn is_cold(src: &Path) -> bool {
+    src.file_name()
+        .and_then(|n| n.to_str())
+        .is_some_and(|n| n.ends_with("__Slow.cpp") || n.ends_with("__Syms.cpp"))
+}
+
 const VFLAGS: &[&str] = &[
     "--cc",
     "-O3",
@@ -287,6 +308,7 @@ fn find_or_build(verilog: &str, top: &str, traced: bool) -> Result<(PathBuf, Vec
         &version,
         &VFLAGS.join(" "),
         &CXXFLAGS.join(" "),
+        COLD_OPT,
         &vlt,
         trace_flag,
         shared_flag,
@@ -337,22 +359,12 @@ fn find_or_build(verilog: &str, top: &str, traced: bool) -> Result<(PathBuf, Vec
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "cpp"))
         .collect();
-    srcs.sort();
-    let support: &[&str] = if traced {
-        &[
-            "verilated.cpp",
-            "verilated_fst_c.cpp",
-            "verilated_threads.cpp",
-        ]
-    } else {
-        &["verilated.cpp", "verilated_threads.cpp"]
-    };
-    for f in support {
-        let p = inc.join(f);
-        if p.exists() {
-            srcs.push(p);
-        }
-    }
+    // The largest first, so that the two compilers finish together.
+    srcs.sort_by_key(|p| {
+        let hot = !is_cold(p);
+        let len = std::fs::metadata(p).map_or(0, |m| m.len());
+        (std::cmp::Reverse(hot), std::cmp::Reverse(len), p.clone())
+    });
     srcs.push(tmp.join("wrapper.cpp"));
     compile_and_link(&tmp, &inc, &srcs, traced)?;
     std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
@@ -422,17 +434,137 @@ fn no_inline_config(verilog: &str) -> String {
 
 /// Compiles every source to an object file, as many at a time as the machine
 /// has cores, then links `libmodel.so` in `dir`.
-fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> Result<(), String> {
-    // Verilator's own makefiles define VM_TRACE*; without them tracing is
-    // silently compiled out.
-    let trace_defs: &[&str] = if traced {
+/// `-D` flags of a build: Verilator's own makefiles define VM_TRACE*;
+/// without them tracing is silently compiled out.
+fn trace_defs(traced: bool) -> &'static [&'static str] {
+    if traced {
         &["-DVM_TRACE=1", "-DVM_TRACE_FST=1"]
     } else {
         &["-DVM_TRACE=0"]
+    }
+}
+
+/// What every model's build shares: Verilator's runtime compiled once
+/// (`verilated.cpp` alone took 3.3 s of each ring's build) and `verilated.h`
+/// precompiled (each of a ring8 model's 31 files spent about 0.4 s parsing
+/// it: 24.6 s of g++ for the model's own files, 12.9 s with the
+/// precompiled header, docs/benchmarks.md). Built once per Verilator
+/// version, flags and tracing into `<cache>/support-<hash>/`; the object
+/// code of a model is the same either way (a precompiled header only saves
+/// the parsing), so the models' cache keys do not change.
+struct Support {
+    /// The header each model file is compiled with (`-include`); its
+    /// `.gch` lies beside it.
+    pch: PathBuf,
+    /// Verilator's runtime objects, linked into every model.
+    objs: Vec<PathBuf>,
+}
+
+/// The runtime sources of a build (those of the installed Verilator).
+fn runtime_sources(traced: bool) -> &'static [&'static str] {
+    if traced {
+        &[
+            "verilated.cpp",
+            "verilated_fst_c.cpp",
+            "verilated_threads.cpp",
+        ]
+    } else {
+        &["verilated.cpp", "verilated_threads.cpp"]
+    }
+}
+
+fn support(inc: &Path, traced: bool) -> Result<Support, String> {
+    let version = verilator_version()?;
+    let mut h = Sha256::new();
+    for part in [
+        "support 1",
+        version.as_str(),
+        &CXXFLAGS.join(" "),
+        &trace_defs(traced).join(" "),
+        &inc.display().to_string(),
+    ] {
+        h.update(part.as_bytes());
+        h.update([0]);
+    }
+    let hash: String = h
+        .finalize()
+        .iter()
+        .take(12)
+        .map(|b| format!("{b:02x}"))
+        .collect();
+    let name = format!("support-{hash}");
+    let dir = cache_root().join(&name);
+    let srcs: Vec<&str> = runtime_sources(traced)
+        .iter()
+        .copied()
+        .filter(|f| inc.join(f).exists())
+        .collect();
+    let made = Support {
+        pch: dir.join("merkur_pch.h"),
+        objs: srcs
+            .iter()
+            .map(|f| dir.join(f.replace(".cpp", ".o")))
+            .collect(),
     };
+    let gate = build_gate(&name);
+    let _held = gate.lock().unwrap_or_else(|e| e.into_inner());
+    if dir.join("done").exists() {
+        return Ok(made);
+    }
+    // As a model: built aside, renamed into place.
+    static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let tmp = cache_root().join(format!("{name}.tmp{}-{n}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&tmp);
+    std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
+    let header = if traced {
+        "#include \"verilated.h\"\n#include \"verilated_fst_c.h\"\n"
+    } else {
+        "#include \"verilated.h\"\n"
+    };
+    std::fs::write(tmp.join("merkur_pch.h"), header).map_err(|e| e.to_string())?;
     let flags = |c: &mut Command| {
         c.args(CXXFLAGS)
-            .args(trace_defs)
+            .args(trace_defs(traced))
+            .arg(format!("-I{}", inc.display()))
+            .arg(format!("-I{}", inc.join("vltstd").display()))
+            .current_dir(&tmp);
+    };
+    let mut jobs: Vec<(PathBuf, PathBuf, bool)> = srcs
+        .iter()
+        .map(|f| (inc.join(f), tmp.join(f.replace(".cpp", ".o")), false))
+        .collect();
+    jobs.push((tmp.join("merkur_pch.h"), tmp.join("merkur_pch.h.gch"), true));
+    crate::jobs::run(&jobs, crate::jobs::cores(), |(src, out, header)| {
+        let mut c = Command::new("g++");
+        flags(&mut c);
+        if *header {
+            c.args(["-x", "c++-header"]);
+        }
+        c.arg("-c").arg(src).arg("-o").arg(out);
+        run(&mut c, "g++ (Verilator runtime)")
+    })?;
+    std::fs::write(tmp.join("done"), "").map_err(|e| e.to_string())?;
+    match std::fs::rename(&tmp, &dir) {
+        Ok(()) => {}
+        // Another process put it in place first: that one is as good.
+        Err(_) if dir.join("done").exists() => {
+            let _ = std::fs::remove_dir_all(&tmp);
+        }
+        Err(e) => return Err(format!("cannot move {} into place: {e}", tmp.display())),
+    }
+    Ok(made)
+}
+
+/// Compiles a model's own files (with the shared precompiled header) and
+/// links them with the shared runtime into `dir/libmodel.so`.
+fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> Result<(), String> {
+    let shared = support(inc, traced)?;
+    let flags = |c: &mut Command| {
+        c.args(CXXFLAGS)
+            .args(trace_defs(traced))
+            .arg("-include")
+            .arg(&shared.pch)
             .arg(format!("-I{}", inc.display()))
             .arg(format!("-I{}", inc.join("vltstd").display()))
             .arg("-Iobj")
@@ -445,6 +577,9 @@ fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> R
     crate::jobs::run(&pairs, crate::jobs::cores(), |(src, obj)| {
         let mut c = Command::new("g++");
         flags(&mut c);
+        if is_cold(src) {
+            c.arg(COLD_OPT);
+        }
         c.arg("-c").arg(src).arg("-o").arg(obj);
         run(&mut c, "g++ (Verilated model)")
     })?;
@@ -452,6 +587,7 @@ fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> R
         Command::new("g++")
             .args(["-shared", "-fPIC"])
             .args(&objs)
+            .args(&shared.objs)
             .args(["-o", "libmodel.so", "-lz", "-lpthread"])
             .current_dir(dir),
         "g++ (link Verilated model)",
