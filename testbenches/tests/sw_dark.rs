@@ -5,9 +5,14 @@
 //! PO not when the change keeps its source (`i_keep_po`, the special
 //! master between N and WU: its own frame is not cut, issue 19).
 
-use merkur_rtl::sw_dark::{SwDark, DARK_CLOCKS};
+use merkur_rtl::sw_dark::SwDark;
 use merkur_rtl::verilog::block_verilog;
 use merkur_testbenches::{verilator::Model, Rng};
+
+/// A node whose switchbox changes mode keeps both outputs dark for 12 bit
+/// times (docs/protocol.md §10, "Dark after a change"), at 2 core clocks per
+/// bit time (§9, "Receiver"). From the spec, not from the block's constant.
+const DARK_CLOCKS: u64 = 12 * 2;
 
 #[test]
 fn dark_after_every_change_else_transparent() {

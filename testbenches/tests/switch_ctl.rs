@@ -7,10 +7,19 @@
 //! ACKed TST long enough, a WU node at a DATA header on BSR after an ACK —
 //! in failsafe too, where the DATA header alone is enough.
 
-use merkur_rtl::slave::{REINTEGRATE_CLOCKS, SETTLE_CLOCKS};
 use merkur_rtl::switch_ctl::SwitchCtl;
 use merkur_rtl::verilog::block_verilog;
 use merkur_testbenches::verilator::Model;
+
+/// Core clocks per bit time: the core clock is twice the line rate
+/// (docs/protocol.md §9, "Receiver").
+const CLOCKS_PER_BIT: u64 = 2;
+/// After a switchbox change a node ignores its stream controllers for 50 bit
+/// times (protocol §10). From the spec, not from the block's constant.
+const SETTLE_CLOCKS: u64 = 50 * CLOCKS_PER_BIT;
+/// A WD node unwraps after 2 ACKed TST (protocol §12, "Reintegration"),
+/// that is 2 TST periods of 65 bit times (§9, "Test signal").
+const REINTEGRATE_CLOCKS: u64 = 130 * CLOCKS_PER_BIT;
 
 struct Ctl {
     m: Model,
