@@ -191,7 +191,7 @@ fn singles(base: &Config) -> Vec<(String, Fault, Vec<usize>)> {
     let mut v = vec![];
     for k in 0..n {
         v.push((
-            format!("P{k}"),
+            Fibre::P(k).to_string(),
             Fault::Break {
                 fibre: Fibre::P(k),
                 slot: None,
@@ -201,7 +201,7 @@ fn singles(base: &Config) -> Vec<(String, Fault, Vec<usize>)> {
     }
     for k in 0..n {
         v.push((
-            format!("S{k}"),
+            Fibre::S(k).to_string(),
             Fault::Break {
                 fibre: Fibre::S(k),
                 slot: None,

@@ -28,6 +28,28 @@ pub enum Fibre {
     S(usize),
 }
 
+impl Fibre {
+    /// The fibre's index in a ring of `n` nodes: `P(k)` is k, `S(k)` is
+    /// n + k — the order of the model's fibre list, the golden trace's and
+    /// the RTL ring top's fibres (the one helper for it; [`Fibre::from_index`]
+    /// is its inverse).
+    pub fn index(self, n: usize) -> usize {
+        match self {
+            Fibre::P(k) => k,
+            Fibre::S(k) => n + k,
+        }
+    }
+
+    /// The fibre of index `f` (< 2n) in a ring of `n` nodes.
+    pub fn from_index(f: usize, n: usize) -> Fibre {
+        if f < n {
+            Fibre::P(f)
+        } else {
+            Fibre::S(f - n)
+        }
+    }
+}
+
 impl fmt::Display for Fibre {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

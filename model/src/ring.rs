@@ -692,10 +692,7 @@ impl Ring {
     }
 
     fn fibre_index(&self, f: Fibre) -> usize {
-        match f {
-            Fibre::P(k) => k,
-            Fibre::S(k) => self.n() + k,
-        }
+        f.index(self.n())
     }
 
     /// Light on a fibre at the start of the cycle (static carrier view).

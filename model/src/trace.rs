@@ -108,13 +108,7 @@ pub fn render(cfg: &Config, source: &str, records: &[CycleRecord]) -> String {
         let src: Vec<String> = r.produced.iter().map(|v| format!("{v:04x}")).collect();
         let _ = writeln!(o, " src {}", src.join(" "));
         // Fibre index: P0..P(n-1), then S0..S(n-1).
-        let fibre_name = |i: usize| {
-            if i < n {
-                format!("P{i}")
-            } else {
-                format!("S{}", i - n)
-            }
-        };
+        let fibre_name = |i: usize| crate::config::Fibre::from_index(i, n).to_string();
         for (i, f) in r.fibres.iter().enumerate() {
             let _ = write!(o, " {} ", fibre_name(i));
             match f {

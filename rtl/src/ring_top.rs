@@ -772,10 +772,11 @@ fn fibre(f: usize, n: usize, capw: usize) -> String {
         v.push_str(s);
         v.push('\n');
     };
-    let (src, port, name) = if f < n {
-        (f, "po", format!("P{f}"))
+    let name = merkur_model::config::Fibre::from_index(f, n).to_string();
+    let (src, port) = if f < n {
+        (f, "po")
     } else {
-        ((f - n + 1) % n, "so", format!("S{}", f - n))
+        ((f - n + 1) % n, "so")
     };
     w(
         &mut v,

@@ -237,10 +237,7 @@ fn packet_bit(target: FlipTarget, bit: u32) -> u64 {
 }
 
 fn fibre_index(fb: Fibre, n: usize) -> usize {
-    match fb {
-        Fibre::P(k) => k,
-        Fibre::S(k) => n + k,
-    }
+    fb.index(n)
 }
 
 /// When the driver writes a fault's configuration.
@@ -384,11 +381,7 @@ fn cap_slot(e: u64, cyc: u32, ep: u32) -> Slot {
 }
 
 fn fibre_name(f: usize, n: usize) -> String {
-    if f < n {
-        format!("P{f}")
-    } else {
-        format!("S{}", f - n)
-    }
+    Fibre::from_index(f, n).to_string()
 }
 
 /// The RTL node kind of each node of `cfg`: a backup master carries the
