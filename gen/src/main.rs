@@ -186,7 +186,7 @@ enum Cmd {
         /// Design line rate in Mbit/s (core clock = 2×); default the scenario's (50).
         #[arg(long, value_name = "MBPS")]
         line_rate: Option<f64>,
-        /// Output folder (default merkur-synth/<scenario name>-<target>).
+        /// Output folder (default `merkur-synth/<scenario name>-<target>`).
         #[arg(short, long, value_name = "DIR")]
         output: Option<PathBuf>,
         /// nextpnr placement seed (the first, with --seeds).

@@ -4,7 +4,7 @@
 //! the only writer of golden data in `tb-data/`: RTL is checked against it,
 //! never the other way round. No `rust-hdl` here.
 //!
-//! - [`line`]: 4B/5B, NRZI, word format, parity, start delimiter (bit-exact).
+//! - [`line`](mod@line): 4B/5B, NRZI, word format, parity, start delimiter (bit-exact).
 //! - [`scenario`] / [`config`]: scenario files and their validation.
 //! - [`ring`]: the cycle-level ring simulation.
 //! - [`trace`]: the golden trace format.

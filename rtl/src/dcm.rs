@@ -38,7 +38,7 @@
 //! | `o_fault_a`, `o_fault_b` | out | 1 | combinational fault of this octet |
 //! | `o_bad_a`, `o_bad_b` | out | 1 | latched channel fault |
 //! | `o_in_frame` | out | 1 | the MAC is inside a frame (SD delivered, no ED yet) |
-//! | `o_stat_a`, `o_stat_b` | out | 16 | status register: errors[15:8], carrier[3], jabber[2], silent[1], bad[0] |
+//! | `o_stat_a`, `o_stat_b` | out | 16 | status register: `errors[15:8]`, `carrier[3]`, `jabber[2]`, `silent[1]`, `bad[0]` |
 //!
 //! Latency: `o_rx` one octet after the symbol on the wire; a fault is seen
 //! in the octet it happens (`o_fault_*`), latched one octet later.

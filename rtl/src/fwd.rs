@@ -49,7 +49,7 @@
 //! | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
 //! | `i_act_out` | in | 16 | clock | actuator output register |
 //! | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
-//! | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (D[11]) |
+//! | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (`D[11]`) |
 //! | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 //! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 //! | `o_slot` | out | 12 | clock | slot of the word passing |
@@ -127,7 +127,7 @@ pub struct Fwd {
     pub i_alarm_req: Signal<In, Bit>,
     /// Its reason.
     pub i_alarm_reason: Signal<In, Bits<4>>,
-    /// The alarm's SEQ bit (D[11], protocol §11).
+    /// The alarm's SEQ bit (`D[11]`, protocol §11).
     pub i_alarm_seq: Signal<In, Bit>,
     /// Master node: the slot's writer is decided by `i_slot_cfg`.
     pub i_master: Signal<In, Bit>,

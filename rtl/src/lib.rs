@@ -12,6 +12,7 @@
 //! - [`chain8`]: eight slaves in a row (test top)
 //! - [`dcm`]: IEEE 802.4 Dual Channel Manager (transmit on both, receive from the active channel, channel status)
 //! - [`dcm_station`]: one token-bus station's DCM + RMM (`merkur_dcm`)
+//! - [`boards`]: the boards' pins and clocks, the one source of the constraint files (`constraints/`)
 //! - [`cdr`]: 8×-oversampling clock and data recovery, loss of signal
 //! - [`enc4b5b`]: symbol → 4B/5B code group
 //! - [`dec5b4b`]: code group → nibble / control flags
@@ -22,6 +23,7 @@
 //! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`pkt_tx`]: packet generator (DATA frames, SEC) of the special master
+//! - [`power_on`]: a power-on reset for the ring top's restarted nodes
 //! - [`readable`]: our emission pass after rust-hdl's (registers in clocked blocks, plain names), with [`literals`] (rust-hdl's 32-bit literals sized to what they meet) and [`headers`] (each module's block and its doc)
 //! - [`retime`]: elastic output buffer, sends forwarded bits on the node's own clock
 //! - [`ring_top`]: Verilog of a whole ring for simulation (clock gates, fibres, fault points, monitors)
@@ -36,7 +38,11 @@
 //! - [`sw_dark`]: both physical outputs dark for 12 bit times after a switchbox change
 //! - [`slave`]: the slave node top (Figure 6)
 //! - [`special_master`]: the clock base: frames every period, return store, SEC
+//! - [`switch_ctl`]: a node's switchbox decisions (protocol §10, §12): wrap, failsafe, reintegration
+//! - [`synth_top`]: a node as a chip, the top level synthesis builds (synchronisers, diagnostic mux)
 //! - [`tst_tx`]: link test packets of a wrapped node
+//! - [`verilog`]: Verilog emission of single blocks (tests, lint, synthesis checks)
+//! - [`xem6010`]: board top of a master (or the special master) on the Opal Kelly XEM6010
 //! - [`ulx3s`]: board top of a slave on the Radiona ULX3S (ECP5 PLL, pins)
 //! - [`rx_word`]: word assembly, parity check, header check, slot counter
 

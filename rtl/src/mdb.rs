@@ -45,9 +45,9 @@
 //! | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode, 6 FS_HOST, 7 FS_CLEAR given and not yet used, 8 started by JOIN, 9 the reload frame not yet read |
 //! | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames); bit 4 = 1: FS_CLEAR, the host allows the ring out of failsafe (a special master; protocol §12); bit 5: FS_HOST, the ring leaves failsafe only after FS_CLEAR (a special master; written before the start, refused while running: `status[1]`); bit 6 = 1: JOIN, start after a restart (below; refused while running: `status[1]`) |
 //! | 0x2001 | R | `aerr` Alive-check failures (saturating) |
-//! | 0x2002 | R | last alarm delivered: reason [15:12], slot [11:0] |
-//! | 0x2003 | R | alarm queue, oldest entry: reason [15:12], slot [11:0] (0: the queue is empty) |
-//! | 0x2004 | R | alarm queue: entries [4:0] (0–16), CYC of the oldest entry [14:12] |
+//! | 0x2002 | R | last alarm delivered: reason `[15:12]`, slot `[11:0]` |
+//! | 0x2003 | R | alarm queue, oldest entry: reason `[15:12]`, slot `[11:0]` (0: the queue is empty) |
+//! | 0x2004 | R | alarm queue: entries `[4:0]` (0–16), CYC of the oldest entry `[14:12]` |
 //! | 0x2004 | W | bit 0 = 1: remove the oldest entry (none: ignored); bit 1 = 1: clear the overflow count |
 //! | 0x2005 | R | alarm queue overflow: alarms not kept because the queue was full (saturating) |
 //!

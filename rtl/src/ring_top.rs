@@ -83,7 +83,7 @@
 //! | `i_wb_node`, `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr`, `i_wb_dat` | in | | Wishbone of master `i_wb_node`, registered on that node's clock (a transfer takes one node clock more than the block's own) |
 //! | `o_wb_dat`, `o_wb_ack` | out | 16, 1 | its Wishbone answer |
 //!
-//! Configuration fields ([`cfg`]; `i_cfg_sel` = node or fibre index; global
+//! Configuration fields ([`cfg`](mod@cfg); `i_cfg_sel` = node or fibre index; global
 //! fields ignore it) and status fields ([`status`]; `i_rd_sel` = node or
 //! fibre index, or for the packed fields a group of them: the driver polls
 //! every node's mode and every fibre's frame state, and each read costs
@@ -107,7 +107,7 @@ pub const INC_NOMINAL: u64 = 1 << 30;
 
 /// Configuration fields of `merkur_ring` (`i_cfg_field`).
 pub mod cfg {
-    /// Node: clock increment per tick ([`INC_NOMINAL`] at 0 ppm).
+    /// Node: clock increment per tick ([`INC_NOMINAL`](super::INC_NOMINAL) at 0 ppm).
     pub const INC: u32 = 0;
     /// Node: clock accumulator start value (phase).
     pub const PHASE: u32 = 1;

@@ -31,7 +31,7 @@
 //! frame came back with a bad header, or not at all, is VOID however many
 //! cycles ago it last returned (CYC has only 3 bits). Per slot of the outgoing frame:
 //! - LOCAL: `{data memory, Alive}`, or an alarm in the home slot (§11, with
-//!   alternation and SEQ in D[11]; the alarm stays in flight until the
+//!   alternation and SEQ in `D[11]`; the alarm stays in flight until the
 //!   frame returns with it good, and is sent again otherwise);
 //! - ACT: the returned word with the data memory's value and the actuator's
 //!   Alive; a VOID is regenerated with the Alive the actuator would send;

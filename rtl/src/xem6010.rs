@@ -15,9 +15,9 @@
 //!
 //! | endpoint | kind | meaning |
 //! |---|---|---|
-//! | 0x00 | WireIn | Wishbone word address [13:0] |
+//! | 0x00 | WireIn | Wishbone word address `[13:0]` |
 //! | 0x01 | WireIn | write data |
-//! | 0x02 | WireIn | [2:0] diagnostic select (`o_diag` of [`crate::synth_top`]) |
+//! | 0x02 | WireIn | `[2:0]` diagnostic select (`o_diag` of [`crate::synth_top`]) |
 //! | 0x40 | TriggerIn | bit 0 write, bit 1 read, bit 2 clear the interrupt flags, bits 3/4/5 request IRQ1/IRQ2/FAILSAFE |
 //! | 0x20 | WireOut | read data of the last read |
 //! | 0x21 | WireOut | status: 0 busy, 2:1 mode, 3 failsafe, 4 running, 5 IRQ1 seen, 6 IRQ2 seen, 7 FAILSAFE seen, 8 failsafe change seen (entered or left, protocol §12), 9 RECONFIG seen, 10 alarm queue not empty (read it over the host port, protocol §11) |
