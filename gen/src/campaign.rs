@@ -951,30 +951,6 @@ fn returned(cfg: &Config, recs: &[CycleRecord], c: usize) -> Vec<bool> {
     }
 }
 
-/// What the live nodes hold (masters' memories, actuators' outputs) of slots
-/// whose writer lives.
-fn delivered(cfg: &Config, rec: &CycleRecord) -> Vec<u16> {
-    let dead = cfg.killed();
-    let mut v = vec![];
-    for (k, st) in rec.nodes.iter().enumerate() {
-        if dead.contains(&k) {
-            continue;
-        }
-        match cfg.nodes[k].kind {
-            Kind::Actuator => v.push(st.output),
-            Kind::Master | Kind::SpecialMaster => v.extend(
-                st.db
-                    .iter()
-                    .enumerate()
-                    .filter(|(s, _)| !dead.contains(&cfg.writer[*s]))
-                    .map(|(_, &x)| x),
-            ),
-            Kind::Sensor => {}
-        }
-    }
-    v
-}
-
 fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     let cfg = &case.cfg;
     let recs = ring::run(cfg);
@@ -1016,7 +992,7 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     let first_fault = cfg.faults.iter().map(|&(c, _)| c).min();
     let mut from = None;
     for (x, y) in recs.iter().zip(&clean) {
-        if delivered(cfg, x) == delivered(cfg, y) {
+        if ring::delivered(cfg, x) == ring::delivered(cfg, y) {
             from.get_or_insert(x.cycle);
         } else {
             from = None;
@@ -1517,7 +1493,7 @@ pub fn markdown(r: &Report) -> String {
             );
         }
     }
-    o += "\nColumns: *healed* — after a structural fault every live node is out of failsafe at the end (model); *words lost* — slot words that came back to the special master good in the fault-free ring but not in this one (the cut frame's rest and the RECONFIG alarms' home slots); *frames lost* — frames that did not come back whole to the special master where the fault-free ring's did (model / RTL monitors: a break in the last ~100 bit times of a frame also costs the next frame's head in RTL, protocol §13); *cycles to recover* — from the first fault until every live node holds what the fault-free ring's nodes hold, for good; *detection* — from the fault to the first switchbox change (RTL); *switchover* — to the last one it caused, the ring wrapped at both ends (RTL); *failsafe latency* — from the second fault until every live node is in failsafe (RTL); *accepted* — flipped words a receiver took as good.\n";
+    o += "\nColumns: *healed* — after a structural fault every live node is out of failsafe at the end (model); *words lost* — slot words that came back to the special master good in the fault-free ring but not in this one (the cut frame's rest and the RECONFIG alarms' home slots); *frames lost* — frames that did not come back whole to the special master where the fault-free ring's did (model / RTL monitors: a break in the last ~100 bit times of a frame also costs the next frame's head in RTL, protocol §13); *cycles to recover* — from the first fault until every live node holds what the fault-free ring's nodes hold, for good (`merkur_model::ring::delivered`: slots whose writer lives, and a master's ACT slots whose actuator lives); *detection* — from the fault to the first switchbox change (RTL); *switchover* — to the last one it caused, the ring wrapped at both ends (RTL); *failsafe latency* — from the second fault until every live node is in failsafe (RTL); *accepted* — flipped words a receiver took as good.\n";
     o
 }
 

@@ -5,23 +5,9 @@
 
 use merkur_model::config::{self, Config};
 use merkur_model::ring::{self, CycleRecord, EventKind};
-use merkur_model::scenario::Kind;
 
 /// The embedded scenario (also in tb-data/, where its golden trace lives).
 pub const SCENARIO: &str = include_str!("../../tb-data/demo_8_break.toml");
-
-/// Masters' memories and actuators' outputs: what the ring delivers.
-fn delivered(cfg: &Config, r: &CycleRecord) -> Vec<u16> {
-    let mut v = vec![];
-    for (k, n) in r.nodes.iter().enumerate() {
-        match cfg.nodes[k].kind {
-            Kind::Actuator => v.push(n.output),
-            Kind::Master | Kind::SpecialMaster => v.extend(&n.db),
-            Kind::Sensor => {}
-        }
-    }
-    v
-}
 
 fn reason_name(r: u8) -> String {
     use merkur_model::ring::reason::*;
@@ -56,8 +42,8 @@ pub fn run(wave: Option<&std::path::Path>) -> Result<(), String> {
     println!("(reference model; each line compares with the same ring without the fault)\n");
     let mut first_exact = None;
     for (r, g) in faulty.iter().zip(&reference) {
-        let a = delivered(&cfg, r);
-        let b = delivered(&cfg, g);
+        let a = ring::delivered(&cfg, r);
+        let b = ring::delivered(&cfg, g);
         let diff = a.iter().zip(&b).filter(|(x, y)| x != y).count();
         let modes: String = r
             .nodes

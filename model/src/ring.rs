@@ -555,6 +555,43 @@ struct SmExit {
     host_clear: bool,
 }
 
+/// What the ring delivers in cycle record `r`, per (node, slot): the live
+/// masters' data memories and the live actuators' outputs, leaving out
+/// slots written by a node killed by the end of `cfg`'s run and a master's
+/// ACT slots whose actuator was killed (their values follow the dead node,
+/// not the ring). The one measure of recovery: a faulty run has recovered
+/// from the cycle on which it delivers, with this `cfg`, what the same ring
+/// without faults delivers (the model's tests, `merkur campaign`, `merkur
+/// demo`).
+pub fn delivered(cfg: &Config, r: &CycleRecord) -> Vec<((usize, usize), u16)> {
+    let dead = cfg.killed();
+    let mut v = vec![];
+    for (k, st) in r.nodes.iter().enumerate() {
+        if dead.contains(&k) {
+            continue;
+        }
+        match cfg.nodes[k].kind {
+            Kind::Actuator => {
+                let s = cfg.nodes[k].address;
+                if !dead.contains(&cfg.writer[s]) {
+                    v.push(((k, s), st.output));
+                }
+            }
+            Kind::Master | Kind::SpecialMaster => {
+                for (s, &x) in st.db.iter().enumerate() {
+                    let act_dead = matches!(cfg.slot_kind[s],
+                        SlotKind::Act { actuator } if dead.contains(&actuator));
+                    if !dead.contains(&cfg.writer[s]) && !act_dead {
+                        v.push(((k, s), x));
+                    }
+                }
+            }
+            Kind::Sensor => {}
+        }
+    }
+    v
+}
+
 /// Everything the model observed in one cycle.
 #[derive(Debug, Clone)]
 pub struct CycleRecord {

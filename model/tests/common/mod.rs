@@ -1,9 +1,8 @@
 //! Helpers shared by the model's integration tests.
 #![allow(dead_code)]
 
-use merkur_model::config::{self, Config, SlotKind};
+use merkur_model::config::{self, Config};
 use merkur_model::ring::{self, CycleRecord};
-use merkur_model::scenario::Kind;
 use proptest::test_runner::{Config as PConfig, RngAlgorithm, TestRng, TestRunner};
 
 /// Loads a scenario from text, panicking with the error's display.
@@ -16,35 +15,9 @@ pub fn killed(cfg: &Config) -> Vec<usize> {
     cfg.killed()
 }
 
-/// What the ring delivers, per (node, slot): masters' data memories and
-/// actuators' outputs, leaving out dead nodes and slots written by them.
+/// What the ring delivers, per (node, slot): [`ring::delivered`].
 pub fn delivered(cfg: &Config, r: &CycleRecord) -> Vec<((usize, usize), u16)> {
-    let dead = killed(cfg);
-    let mut v = vec![];
-    for (k, st) in r.nodes.iter().enumerate() {
-        if dead.contains(&k) {
-            continue;
-        }
-        match cfg.nodes[k].kind {
-            Kind::Actuator => {
-                let s = cfg.nodes[k].address;
-                if !dead.contains(&cfg.writer[s]) {
-                    v.push(((k, s), st.output));
-                }
-            }
-            Kind::Master | Kind::SpecialMaster => {
-                for (s, &x) in st.db.iter().enumerate() {
-                    let w = cfg.writer[s];
-                    let act_dead = matches!(cfg.slot_kind[s], SlotKind::Act { actuator } if dead.contains(&actuator));
-                    if !dead.contains(&w) && !act_dead {
-                        v.push(((k, s), x));
-                    }
-                }
-            }
-            Kind::Sensor => {}
-        }
-    }
-    v
+    ring::delivered(cfg, r)
 }
 
 /// Runs a scenario and the same scenario without faults.
