@@ -1332,7 +1332,9 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
         }
         Ok(r)
     })?;
-    eprintln!();
+    if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+        eprintln!();
+    }
     cases.sort_by(|a, b| a.name.cmp(&b.name));
     Ok(Report {
         commands: vec![command],
@@ -1352,7 +1354,18 @@ fn ppm_list(v: &[f64]) -> String {
         .join(",")
 }
 
+/// Progress on stderr: one line redrawn in place on a terminal; in a log
+/// (not a terminal, e.g. CI) a plain line at every tenth of the cases and
+/// at the end, instead of hundreds of carriage returns.
 fn progress(done: usize, total: usize, failed: usize, secs: f64) {
+    use std::io::IsTerminal;
+    let tty = std::io::stderr().is_terminal();
+    if !tty
+        && done != total
+        && (done * 10) / total.max(1) == (done.saturating_sub(1) * 10) / total.max(1)
+    {
+        return;
+    }
     let width = 30;
     let fill = (done * width).checked_div(total).unwrap_or(width);
     let eta = if done == 0 {
@@ -1360,11 +1373,16 @@ fn progress(done: usize, total: usize, failed: usize, secs: f64) {
     } else {
         secs / done as f64 * (total - done) as f64
     };
-    eprint!(
-        "\r[{}{}] {done}/{total} cases, {failed} with mismatches, {secs:.0} s, ~{eta:.0} s left ",
+    let line = format!(
+        "[{}{}] {done}/{total} cases, {failed} with mismatches, {secs:.0} s, ~{eta:.0} s left ",
         "#".repeat(fill),
         ".".repeat(width - fill)
     );
+    if tty {
+        eprint!("\r{line}");
+    } else {
+        eprintln!("{line}");
+    }
 }
 
 /// Joins shard reports (cases by name; a case in two reports must agree).

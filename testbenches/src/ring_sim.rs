@@ -22,6 +22,7 @@ use merkur_rtl::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_JOIN, ST_RUN, ST_STOP, WB_CFG,
 use merkur_rtl::ring_top::{
     cap_slots, cfg as field, ring_verilog_with, status as st, INC_NOMINAL, TICKS_PER_BIT,
 };
+use std::io::IsTerminal;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -742,7 +743,8 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
             nsec_at.push((0..2 * n).map(|f| r.rd(f, st::NSEC)).collect());
             let c = sent;
             sent += 1;
-            if opts.progress && c % progress_every == 0 {
+            // On a terminal only: a log (CI) gets the last line alone.
+            if opts.progress && c % progress_every == 0 && std::io::stderr().is_terminal() {
                 eprint!("\rcycle {c}/{} ", cfg.cycles);
             }
             if c == last_framed {
@@ -946,7 +948,10 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         }
     }
     if opts.progress {
-        eprintln!("\rcycle {}/{} ", cfg.cycles, cfg.cycles);
+        if std::io::stderr().is_terminal() {
+            eprint!("\r");
+        }
+        eprintln!("cycle {}/{} ", cfg.cycles, cfg.cycles);
     }
     // End-of-run state, read at once (the special master has stopped; the
     // CS timeout will put every node in failsafe 2.5 periods later).
