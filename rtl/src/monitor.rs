@@ -6,7 +6,7 @@
 //! parity ok), and its packet and slot position is where a fault is placed at
 //! a given (cycle, slot). It is also the receive half of every node.
 //!
-//! Parameters: `ext` (extended-alarm words), as [`RxWord::new`].
+//! Parameters: the word format ([`WordFormat`]), as [`RxWord::new`].
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -48,7 +48,7 @@
 
 use crate::cdr::Cdr;
 use crate::rx_framer::RxFramer;
-use crate::rx_word::RxWord;
+use crate::rx_word::{RxWord, WordFormat};
 use rust_hdl::prelude::*;
 
 /// Fibre monitor / receive chain.
@@ -122,8 +122,8 @@ pub struct Monitor {
 pub const DROP_CLOCKS: u64 = 4;
 
 impl Monitor {
-    /// A monitor for basic (`ext = false`) or extended-alarm words.
-    pub fn new(ext: bool) -> Self {
+    /// A monitor for words of `format`.
+    pub fn new(format: WordFormat) -> Self {
         Self {
             clock: Default::default(),
             i_samples: Default::default(),
@@ -152,7 +152,7 @@ impl Monitor {
             o_ptype: Default::default(),
             cdr: Default::default(),
             framer: RxFramer::new(),
-            word: RxWord::new(ext),
+            word: RxWord::new(format),
             last_lvl: Default::default(),
             quiet: Default::default(),
             emit: Default::default(),

@@ -23,6 +23,7 @@
 //! ```
 
 use crate::monitor::Monitor;
+use crate::rx_word::WordFormat;
 use crate::stream_ctrl::StreamCtrl;
 use rust_hdl::prelude::*;
 
@@ -94,8 +95,8 @@ pub struct PortRx {
 }
 
 impl PortRx {
-    /// A port for basic (`ext = false`) or extended-alarm words.
-    pub fn new(ext: bool) -> Self {
+    /// A port for words of `format`.
+    pub fn new(format: WordFormat) -> Self {
         Self {
             clock: Default::default(),
             i_samples: Default::default(),
@@ -127,7 +128,7 @@ impl PortRx {
             o_run: Default::default(),
             o_tst: Default::default(),
             o_ack: Default::default(),
-            mon: Monitor::new(ext),
+            mon: Monitor::new(format),
             ctrl: Default::default(),
         }
     }

@@ -599,7 +599,9 @@ pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String
         }
     }
     out.push_str(&rename_top(
-        &block_verilog(crate::monitor::Monitor::new(false)),
+        &block_verilog(crate::monitor::Monitor::new(
+            crate::rx_word::WordFormat::Basic,
+        )),
         "merkur_monitor",
     ));
     out.push_str(

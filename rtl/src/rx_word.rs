@@ -154,10 +154,22 @@ pub struct RxWord {
     w_compl: Signal<Local, Bit>,
 }
 
+/// The word format a receiver reads (protocol §6): the parameter of
+/// [`RxWord`], [`crate::monitor::Monitor`] and [`crate::port_rx::PortRx`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WordFormat {
+    /// 25-bit words (five code groups): the basic variant.
+    Basic,
+    /// 30-bit words with a reason nibble (six code groups): the
+    /// extended-alarm variant.
+    ExtendedAlarm,
+}
+
 impl RxWord {
-    /// A word assembler for 25-bit words (`ext = false`) or 30-bit
-    /// extended-alarm words (`ext = true`).
-    pub fn new(ext: bool) -> Self {
+    /// A word assembler for 25-bit words ([`WordFormat::Basic`]) or 30-bit
+    /// extended-alarm words ([`WordFormat::ExtendedAlarm`]).
+    pub fn new(format: WordFormat) -> Self {
+        let ext = format == WordFormat::ExtendedAlarm;
         Self {
             clock: Default::default(),
             i_start: Default::default(),

@@ -56,12 +56,6 @@ use crate::switchbox::Switchbox;
 use crate::tst_tx::TstTx;
 use rust_hdl::prelude::*;
 
-/// Clocks a repaired link must show ACKed TST before a WD node unwraps (2 TST periods).
-pub const REINTEGRATE_CLOCKS: u64 = 260;
-/// Clocks after a switchbox change during which the stream controllers are
-/// not acted on (50 bit times: the receivers lock to their new lines).
-pub const SETTLE_CLOCKS: u64 = 100;
-
 /// Slave node.
 #[derive(LogicBlock)]
 pub struct Slave {
@@ -220,8 +214,8 @@ impl Slave {
             sbox: Default::default(),
             dark: Default::default(),
             swc: Default::default(),
-            rx_in: PortRx::new(false),
-            rx_bsr: PortRx::new(false),
+            rx_in: PortRx::new(crate::rx_word::WordFormat::Basic),
+            rx_bsr: PortRx::new(crate::rx_word::WordFormat::Basic),
             fwd: Fwd::new(),
             tst: Default::default(),
             rep: Default::default(),

@@ -14,7 +14,7 @@
 //!   wrap), and never for failsafe (protocol §9, §12);
 //! - wrapped: loss of signal on INPUT → failsafe; the partner's TST with
 //!   ACK heard on BSR → a WD node unwraps at the next frame start after
-//!   [`crate::slave::REINTEGRATE_CLOCKS`] of it, a WU node when a DATA
+//!   [`REINTEGRATE_CLOCKS`] of it, a WU node when a DATA
 //!   header arrives on BSR after it and no packet is arriving on INPUT (if
 //!   one is — the frame that went the long way round — when it ends, so it
 //!   is not cut into the new one); in failsafe too (issue 28: that is how a
@@ -23,7 +23,7 @@
 //!   ring's frames to it, so it is not wrapped towards it: the special
 //!   master's downstream neighbour, cut off with it, hears no TST);
 //! - stream controllers act only once the node is armed (its first good
-//!   frame) and not for [`crate::slave::SETTLE_CLOCKS`] after a change (the
+//!   frame) and not for [`SETTLE_CLOCKS`] after a change (the
 //!   receivers lock to their new lines); after unwrapping, a TST where DATA
 //!   is expected is not a failure for half a CS timeout (`o_grace_over`);
 //! - restart and rejoin (§12): an unarmed node in mode N wraps up (WU) on a
@@ -64,8 +64,13 @@
 //! o_mode    ==N===X==WU====
 //! ```
 
-use crate::slave::{REINTEGRATE_CLOCKS, SETTLE_CLOCKS};
 use rust_hdl::prelude::*;
+
+/// Clocks a repaired link must show ACKed TST before a WD node unwraps (2 TST periods).
+pub const REINTEGRATE_CLOCKS: u64 = 260;
+/// Clocks after a switchbox change during which the stream controllers are
+/// not acted on (50 bit times: the receivers lock to their new lines).
+pub const SETTLE_CLOCKS: u64 = 100;
 
 /// Switchbox decision logic.
 #[derive(LogicBlock)]

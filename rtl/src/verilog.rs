@@ -171,9 +171,20 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ("cdr", block_verilog(cdr::Cdr::default())),
         ("nrzi_tx", block_verilog(nrzi_tx::NrziTx::default())),
         ("rx_framer", block_verilog(rx_framer::RxFramer::new())),
-        ("rx_word", block_verilog(rx_word::RxWord::new(false))),
-        ("rx_word_ext", block_verilog(rx_word::RxWord::new(true))),
-        ("monitor", block_verilog(monitor::Monitor::new(false))),
+        (
+            "rx_word",
+            block_verilog(rx_word::RxWord::new(crate::rx_word::WordFormat::Basic)),
+        ),
+        (
+            "rx_word_ext",
+            block_verilog(rx_word::RxWord::new(
+                crate::rx_word::WordFormat::ExtendedAlarm,
+            )),
+        ),
+        (
+            "monitor",
+            block_verilog(monitor::Monitor::new(crate::rx_word::WordFormat::Basic)),
+        ),
         ("switchbox", block_verilog(switchbox::Switchbox::default())),
         ("sw_dark", block_verilog(sw_dark::SwDark::default())),
         (
@@ -184,7 +195,10 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             "stream_ctrl",
             block_verilog(stream_ctrl::StreamCtrl::default()),
         ),
-        ("port_rx", block_verilog(port_rx::PortRx::new(false))),
+        (
+            "port_rx",
+            block_verilog(port_rx::PortRx::new(crate::rx_word::WordFormat::Basic)),
+        ),
         ("retime", block_verilog(retime::Retime::default())),
         ("fwd", block_verilog(fwd::Fwd::new())),
         ("tst_tx", block_verilog(tst_tx::TstTx::default())),

@@ -93,7 +93,7 @@ fn rust_hdl_sim(s: &[u64]) -> f64 {
         }
         sim.done(x)
     });
-    let mut uut = Monitor::new(false);
+    let mut uut = Monitor::new(merkur_rtl::rx_word::WordFormat::Basic);
     uut.connect_all();
     let t = Instant::now();
     sim.run(Box::new(uut), (n as u64 + 4) * 10)
@@ -106,7 +106,7 @@ fn main() {
         .nth(1)
         .and_then(|a| a.parse().ok())
         .unwrap_or(2_000_000);
-    let v = block_verilog(Monitor::new(false));
+    let v = block_verilog(Monitor::new(merkur_rtl::rx_word::WordFormat::Basic));
     let s = samples(clocks);
     let vl = verilator(&v, &s);
     let ic = icarus(&v, &s[..clocks.min(200_000)]).unwrap_or_else(|e| {

@@ -55,8 +55,14 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
     let pairs = sample_words(&line_samples(&line, ppm, 2.1, 0.5, &mut rng));
 
     let mut f = Model::build(&block_verilog(Fwd::new())).unwrap();
-    let mut mi = Model::build(&block_verilog(Monitor::new(false))).unwrap();
-    let mut mo = Model::build(&block_verilog(Monitor::new(false))).unwrap();
+    let mut mi = Model::build(&block_verilog(Monitor::new(
+        merkur_rtl::rx_word::WordFormat::Basic,
+    )))
+    .unwrap();
+    let mut mo = Model::build(&block_verilog(Monitor::new(
+        merkur_rtl::rx_word::WordFormat::Basic,
+    )))
+    .unwrap();
     let p = |m: &Model, s: &str| m.port(s);
     for m in [&mut mi, &mut mo] {
         let (a, b) = (p(m, "i_slots_m1"), p(m, "i_address"));

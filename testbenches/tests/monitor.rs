@@ -122,7 +122,10 @@ fn run_scenario(name: &str, delta_ppm: f64) {
     }
     let phase = rng.below(800) as f64 / 100.0;
     let samples = line_samples(&line, delta_ppm, phase, 0.6, &mut rng);
-    let mut m = Model::build(&block_verilog(Monitor::new(false))).unwrap();
+    let mut m = Model::build(&block_verilog(Monitor::new(
+        merkur_rtl::rx_word::WordFormat::Basic,
+    )))
+    .unwrap();
     let p = |m: &Model, n: &str| m.port(n);
     let marked = p(&m, "o_marked");
     let (clk, smp, wv, kind, data, alive, alarm, ok, void, hbad, start) = (

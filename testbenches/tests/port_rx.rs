@@ -57,7 +57,10 @@ struct Probe {
 
 impl Probe {
     fn new(tst_fail: bool) -> Probe {
-        let mut m = Model::build(&block_verilog(PortRx::new(false))).unwrap();
+        let mut m = Model::build(&block_verilog(PortRx::new(
+            merkur_rtl::rx_word::WordFormat::Basic,
+        )))
+        .unwrap();
         m.set(m.port("i_slots_m1"), SLOTS as u64 - 1);
         m.set(m.port("i_tst_fail"), tst_fail as u64);
         let (clk, smp, flush, cf, tst, ack) = (

@@ -11,7 +11,10 @@ use merkur_model::line::{
     Word, CODE_S,
 };
 use merkur_model::ring::Header;
-use merkur_rtl::{rx_word::RxWord, verilog::block_verilog};
+use merkur_rtl::{
+    rx_word::{RxWord, WordFormat},
+    verilog::block_verilog,
+};
 use merkur_testbenches::{verilator::Model, Rng};
 
 const SLOTS: usize = 12;
@@ -29,7 +32,12 @@ fn check(ext: bool) {
     let seed = Rng::seed(0x3077 + ext as u64);
     let mut rng = Rng::new(seed);
     let wbits = if ext { 30 } else { 25 };
-    let mut m = Model::build(&block_verilog(RxWord::new(ext))).unwrap();
+    let format = if ext {
+        WordFormat::ExtendedAlarm
+    } else {
+        WordFormat::Basic
+    };
+    let mut m = Model::build(&block_verilog(RxWord::new(format))).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
     let (clk, st, gv, gr) = (
         p(&m, "clock"),

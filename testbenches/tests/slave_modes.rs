@@ -102,8 +102,14 @@ fn wrap_reintegrate_and_failsafe() {
     let n = pi.len().min(si.len());
 
     let mut s = Model::build(&block_verilog(Slave::new())).unwrap();
-    let mut mpo = Model::build(&block_verilog(Monitor::new(false))).unwrap();
-    let mut mso = Model::build(&block_verilog(Monitor::new(false))).unwrap();
+    let mut mpo = Model::build(&block_verilog(Monitor::new(
+        merkur_rtl::rx_word::WordFormat::Basic,
+    )))
+    .unwrap();
+    let mut mso = Model::build(&block_verilog(Monitor::new(
+        merkur_rtl::rx_word::WordFormat::Basic,
+    )))
+    .unwrap();
     let p = |m: &Model, x: &str| m.port(x);
     for (name, v) in [
         ("i_address", ADDRESS),

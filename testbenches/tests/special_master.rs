@@ -96,7 +96,10 @@ fn the_secondary_relay_passes_frames_only() {
     ));
 
     let mut m = Model::build(&block_verilog(SpecialMaster::default())).unwrap();
-    let mut mon = Model::build(&block_verilog(Monitor::new(false))).unwrap();
+    let mut mon = Model::build(&block_verilog(Monitor::new(
+        merkur_rtl::rx_word::WordFormat::Basic,
+    )))
+    .unwrap();
     for (name, v) in [
         ("i_address", 0),
         ("i_slots_m1", SLOTS as u64 - 1),

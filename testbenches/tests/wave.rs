@@ -44,7 +44,10 @@ fn merkur_wave_writes_an_fst() {
     // two clocks.
     const CLOCKS: u64 = 2000;
     {
-        let mut m = Model::build(&block_verilog(Monitor::new(false))).unwrap();
+        let mut m = Model::build(&block_verilog(Monitor::new(
+            merkur_rtl::rx_word::WordFormat::Basic,
+        )))
+        .unwrap();
         let (clk, s) = (m.port("clock"), m.port("i_samples"));
         for t in 0..CLOCKS {
             m.set(s, if (t / 2) % 2 == 0 { 0b1111 } else { 0 });
