@@ -432,8 +432,6 @@ fn no_inline_config(verilog: &str) -> String {
     v
 }
 
-/// Compiles every source to an object file, as many at a time as the machine
-/// has cores, then links `libmodel.so` in `dir`.
 /// `-D` flags of a build: Verilator's own makefiles define VM_TRACE*;
 /// without them tracing is silently compiled out.
 fn trace_defs(traced: bool) -> &'static [&'static str] {
@@ -451,7 +449,7 @@ fn trace_defs(traced: bool) -> &'static [&'static str] {
 /// precompiled header, docs/benchmarks.md). Built once per Verilator
 /// version, flags and tracing into `<cache>/support-<hash>/`; the object
 /// code of a model is the same either way (a precompiled header only saves
-/// the parsing), so the models' cache keys do not change.
+/// the parsing), so it is not part of a model's cache key.
 struct Support {
     /// The header each model file is compiled with (`-include`); its
     /// `.gch` lies beside it.
@@ -556,8 +554,9 @@ fn support(inc: &Path, traced: bool) -> Result<Support, String> {
     Ok(made)
 }
 
-/// Compiles a model's own files (with the shared precompiled header) and
-/// links them with the shared runtime into `dir/libmodel.so`.
+/// Compiles a model's own files (with the shared precompiled header), as
+/// many at a time as the machine has cores, and links them with the shared
+/// runtime into `dir/libmodel.so`.
 fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> Result<(), String> {
     let shared = support(inc, traced)?;
     let flags = |c: &mut Command| {
