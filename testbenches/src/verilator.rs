@@ -301,8 +301,7 @@ fn find_or_build(verilog: &str, top: &str, traced: bool) -> Result<(PathBuf, Vec
     } else {
         ""
     };
-    let mut h = Sha256::new();
-    for part in [
+    let hash = cache_key(&[
         verilog,
         &wrapper,
         &version,
@@ -312,16 +311,7 @@ fn find_or_build(verilog: &str, top: &str, traced: bool) -> Result<(PathBuf, Vec
         &vlt,
         trace_flag,
         shared_flag,
-    ] {
-        h.update(part.as_bytes());
-        h.update([0]);
-    }
-    let hash: String = h
-        .finalize()
-        .iter()
-        .take(12)
-        .map(|b| format!("{b:02x}"))
-        .collect();
+    ]);
     let dir = cache_root().join(&hash);
     let lib = dir.join("libmodel.so");
     // Tests run in parallel threads: the first to need a model builds it,
@@ -331,13 +321,7 @@ fn find_or_build(verilog: &str, top: &str, traced: bool) -> Result<(PathBuf, Vec
     if lib.exists() {
         return Ok((lib, ports));
     }
-    // Build in a private temporary folder, then rename into place, so a
-    // concurrent or interrupted build never leaves a half-built cache entry.
-    static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-    let n = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let tmp = cache_root().join(format!("{hash}.tmp{}-{n}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&tmp);
-    std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
+    let tmp = build_dir(&hash)?;
     std::fs::write(tmp.join("top.v"), verilog).map_err(|e| e.to_string())?;
     std::fs::write(tmp.join("wrapper.cpp"), &wrapper).map_err(|e| e.to_string())?;
     std::fs::write(tmp.join("build.vlt"), &vlt).map_err(|e| e.to_string())?;
@@ -432,6 +416,41 @@ fn no_inline_config(verilog: &str) -> String {
     v
 }
 
+/// The cache key of `parts` (each hashed with a separator): 24 hex digits.
+fn cache_key(parts: &[&str]) -> String {
+    let mut h = Sha256::new();
+    for part in parts {
+        h.update(part.as_bytes());
+        h.update([0]);
+    }
+    h.finalize()
+        .iter()
+        .take(12)
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+/// A private, empty temporary folder in the cache for building `name`: a
+/// build happens there and is then renamed into place, so a concurrent or
+/// interrupted build never leaves a half-built cache entry.
+fn build_dir(name: &str) -> Result<PathBuf, String> {
+    static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let tmp = cache_root().join(format!("{name}.tmp{}-{n}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&tmp);
+    std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
+    Ok(tmp)
+}
+
+/// The g++ flags every object of a build shares (the model's and the
+/// runtime's): [`CXXFLAGS`], the trace defines and Verilator's includes.
+fn cxx_flags<'a>(c: &'a mut Command, inc: &Path, traced: bool) -> &'a mut Command {
+    c.args(CXXFLAGS)
+        .args(trace_defs(traced))
+        .arg(format!("-I{}", inc.display()))
+        .arg(format!("-I{}", inc.join("vltstd").display()))
+}
+
 /// `-D` flags of a build: Verilator's own makefiles define VM_TRACE*;
 /// without them tracing is silently compiled out.
 fn trace_defs(traced: bool) -> &'static [&'static str] {
@@ -473,23 +492,13 @@ fn runtime_sources(traced: bool) -> &'static [&'static str] {
 
 fn support(inc: &Path, traced: bool) -> Result<Support, String> {
     let version = verilator_version()?;
-    let mut h = Sha256::new();
-    for part in [
+    let hash = cache_key(&[
         "support 1",
-        version.as_str(),
+        &version,
         &CXXFLAGS.join(" "),
         &trace_defs(traced).join(" "),
         &inc.display().to_string(),
-    ] {
-        h.update(part.as_bytes());
-        h.update([0]);
-    }
-    let hash: String = h
-        .finalize()
-        .iter()
-        .take(12)
-        .map(|b| format!("{b:02x}"))
-        .collect();
+    ]);
     let name = format!("support-{hash}");
     let dir = cache_root().join(&name);
     let srcs: Vec<&str> = runtime_sources(traced)
@@ -509,12 +518,7 @@ fn support(inc: &Path, traced: bool) -> Result<Support, String> {
     if dir.join("done").exists() {
         return Ok(made);
     }
-    // As a model: built aside, renamed into place.
-    static BUILDS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-    let n = BUILDS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let tmp = cache_root().join(format!("{name}.tmp{}-{n}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&tmp);
-    std::fs::create_dir_all(&tmp).map_err(|e| format!("cannot create {}: {e}", tmp.display()))?;
+    let tmp = build_dir(&name)?;
     let header = if traced {
         "#include \"verilated.h\"\n#include \"verilated_fst_c.h\"\n"
     } else {
@@ -522,11 +526,7 @@ fn support(inc: &Path, traced: bool) -> Result<Support, String> {
     };
     std::fs::write(tmp.join("merkur_pch.h"), header).map_err(|e| e.to_string())?;
     let flags = |c: &mut Command| {
-        c.args(CXXFLAGS)
-            .args(trace_defs(traced))
-            .arg(format!("-I{}", inc.display()))
-            .arg(format!("-I{}", inc.join("vltstd").display()))
-            .current_dir(&tmp);
+        cxx_flags(c, inc, traced).current_dir(&tmp);
     };
     let mut jobs: Vec<(PathBuf, PathBuf, bool)> = srcs
         .iter()
@@ -560,12 +560,9 @@ fn support(inc: &Path, traced: bool) -> Result<Support, String> {
 fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> Result<(), String> {
     let shared = support(inc, traced)?;
     let flags = |c: &mut Command| {
-        c.args(CXXFLAGS)
-            .args(trace_defs(traced))
+        cxx_flags(c, inc, traced)
             .arg("-include")
             .arg(&shared.pch)
-            .arg(format!("-I{}", inc.display()))
-            .arg(format!("-I{}", inc.join("vltstd").display()))
             .arg("-Iobj")
             .current_dir(dir);
     };
