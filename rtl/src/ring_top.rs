@@ -94,6 +94,7 @@
 //! the request's CYC, i.e. before the next frame; a sensor sees the value
 //! of the frame whose H1 its PI fibre showed last (its slot comes after).
 
+use crate::rx_word::WordFormat;
 use crate::verilog::{block_verilog, mem_depth, rename_top, size_memories};
 use merkur_model::scenario::Kind;
 
@@ -599,9 +600,7 @@ pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String
         }
     }
     out.push_str(&rename_top(
-        &block_verilog(crate::monitor::Monitor::new(
-            crate::rx_word::WordFormat::Basic,
-        )),
+        &block_verilog(crate::monitor::Monitor::new(WordFormat::Basic)),
         "merkur_monitor",
     ));
     out.push_str(

@@ -50,6 +50,7 @@
 use crate::fwd::Fwd;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
+use crate::rx_word::WordFormat;
 use crate::sw_dark::SwDark;
 use crate::switch_ctl::SwitchPipe;
 use crate::switchbox::Switchbox;
@@ -214,8 +215,8 @@ impl Slave {
             sbox: Default::default(),
             dark: Default::default(),
             swc: Default::default(),
-            rx_in: PortRx::new(crate::rx_word::WordFormat::Basic),
-            rx_bsr: PortRx::new(crate::rx_word::WordFormat::Basic),
+            rx_in: PortRx::new(WordFormat::Basic),
+            rx_bsr: PortRx::new(WordFormat::Basic),
             fwd: Fwd::new(),
             tst: Default::default(),
             rep: Default::default(),

@@ -115,6 +115,7 @@ use crate::mdb::Mdb;
 use crate::pkt_tx::PktTx;
 use crate::port_rx::PortRx;
 use crate::retime::Retime;
+use crate::rx_word::WordFormat;
 use crate::sw_dark::SwDark;
 use crate::switch_ctl::SwitchPipe;
 use crate::switchbox::Switchbox;
@@ -424,8 +425,8 @@ impl Default for SpecialMaster {
             i_prio: Default::default(),
             i_elect: Default::default(),
             i_flying: Default::default(),
-            rx_in: PortRx::new(crate::rx_word::WordFormat::Basic),
-            rx_bsr: PortRx::new(crate::rx_word::WordFormat::Basic),
+            rx_in: PortRx::new(WordFormat::Basic),
+            rx_bsr: PortRx::new(WordFormat::Basic),
             ftx: Default::default(),
             stx: Default::default(),
             rep: Default::default(),

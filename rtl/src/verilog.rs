@@ -1,5 +1,6 @@
 //! Verilog emission of single blocks (for tests, lint and synthesis checks).
 
+use crate::rx_word::WordFormat;
 use rust_hdl::prelude::*;
 
 /// The Verilog of a block as a top module named `top`, after rust-hdl's
@@ -173,17 +174,15 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ("rx_framer", block_verilog(rx_framer::RxFramer::new())),
         (
             "rx_word",
-            block_verilog(rx_word::RxWord::new(crate::rx_word::WordFormat::Basic)),
+            block_verilog(rx_word::RxWord::new(WordFormat::Basic)),
         ),
         (
             "rx_word_ext",
-            block_verilog(rx_word::RxWord::new(
-                crate::rx_word::WordFormat::ExtendedAlarm,
-            )),
+            block_verilog(rx_word::RxWord::new(WordFormat::ExtendedAlarm)),
         ),
         (
             "monitor",
-            block_verilog(monitor::Monitor::new(crate::rx_word::WordFormat::Basic)),
+            block_verilog(monitor::Monitor::new(WordFormat::Basic)),
         ),
         ("switchbox", block_verilog(switchbox::Switchbox::default())),
         ("sw_dark", block_verilog(sw_dark::SwDark::default())),
@@ -197,7 +196,7 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ),
         (
             "port_rx",
-            block_verilog(port_rx::PortRx::new(crate::rx_word::WordFormat::Basic)),
+            block_verilog(port_rx::PortRx::new(WordFormat::Basic)),
         ),
         ("retime", block_verilog(retime::Retime::default())),
         ("fwd", block_verilog(fwd::Fwd::new())),

@@ -7,6 +7,7 @@
 //! counter), driven with the line samples of idles and frames.
 
 use merkur_model::line::{nrzi_encode, push_group, CODE_I, CODE_J, CODE_K, DATA_CODES};
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::verilator::Model;
 use rust_hdl::prelude::*;
@@ -93,7 +94,7 @@ fn rust_hdl_sim(s: &[u64]) -> f64 {
         }
         sim.done(x)
     });
-    let mut uut = Monitor::new(merkur_rtl::rx_word::WordFormat::Basic);
+    let mut uut = Monitor::new(WordFormat::Basic);
     uut.connect_all();
     let t = Instant::now();
     sim.run(Box::new(uut), (n as u64 + 4) * 10)
@@ -106,7 +107,7 @@ fn main() {
         .nth(1)
         .and_then(|a| a.parse().ok())
         .unwrap_or(2_000_000);
-    let v = block_verilog(Monitor::new(merkur_rtl::rx_word::WordFormat::Basic));
+    let v = block_verilog(Monitor::new(WordFormat::Basic));
     let s = samples(clocks);
     let vl = verilator(&v, &s);
     let ic = icarus(&v, &s[..clocks.min(200_000)]).unwrap_or_else(|e| {

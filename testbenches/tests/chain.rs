@@ -11,6 +11,7 @@ use merkur_model::config;
 use merkur_model::line::{nrzi_encode, push_group, CODE_I};
 use merkur_model::ring::{self, sensor_value, Carry, HeaderRx};
 use merkur_model::scenario::Kind;
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::{chain8::Chain8, monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, seen, PacketReader, Seen};
 use merkur_testbenches::{
@@ -53,10 +54,7 @@ fn eight_slaves_carry_the_models_frames() {
         let idle_pairs = sample_words(&line_samples(&idle_line, -ppm, 2.3, 0.5, &mut rng));
 
         let mut c8 = Model::build(&block_verilog(Chain8::default())).unwrap();
-        let mut mo = Model::build(&block_verilog(Monitor::new(
-            merkur_rtl::rx_word::WordFormat::Basic,
-        )))
-        .unwrap();
+        let mut mo = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
         let p = |m: &Model, s: &str| m.port(s);
         c8.set(p(&c8, "i_slots_m1"), cfg.slots as u64 - 1);
         c8.set(p(&c8, "i_cs_timeout"), 4 * 2 * cfg.period as u64);

@@ -10,6 +10,7 @@ use merkur_model::config::{self, Config};
 use merkur_model::line::{nrzi_encode, push_group, CODE_I};
 use merkur_model::ring::{self, sensor_value, Carry, CycleRecord, EventKind, HeaderRx, Slot};
 use merkur_model::scenario::Kind;
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::{fwd::Fwd, monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, seen, PacketReader, Seen};
 use merkur_testbenches::{
@@ -55,14 +56,8 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
     let pairs = sample_words(&line_samples(&line, ppm, 2.1, 0.5, &mut rng));
 
     let mut f = Model::build(&block_verilog(Fwd::new())).unwrap();
-    let mut mi = Model::build(&block_verilog(Monitor::new(
-        merkur_rtl::rx_word::WordFormat::Basic,
-    )))
-    .unwrap();
-    let mut mo = Model::build(&block_verilog(Monitor::new(
-        merkur_rtl::rx_word::WordFormat::Basic,
-    )))
-    .unwrap();
+    let mut mi = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
+    let mut mo = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
     let p = |m: &Model, s: &str| m.port(s);
     for m in [&mut mi, &mut mo] {
         let (a, b) = (p(m, "i_slots_m1"), p(m, "i_address"));

@@ -12,6 +12,7 @@ use merkur_model::line::{
     mark_code_bits, nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K, CODE_S,
 };
 use merkur_model::ring::{self, Carry, HeaderRx, Slot};
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::stim::Seen;
 use merkur_testbenches::{line_samples, repo_root, sample_words, verilator::Model, Rng};
@@ -122,10 +123,7 @@ fn run_scenario(name: &str, delta_ppm: f64) {
     }
     let phase = rng.below(800) as f64 / 100.0;
     let samples = line_samples(&line, delta_ppm, phase, 0.6, &mut rng);
-    let mut m = Model::build(&block_verilog(Monitor::new(
-        merkur_rtl::rx_word::WordFormat::Basic,
-    )))
-    .unwrap();
+    let mut m = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
     let marked = p(&m, "o_marked");
     let (clk, smp, wv, kind, data, alive, alarm, ok, void, hbad, start) = (

@@ -8,6 +8,7 @@
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::Header;
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::stream_ctrl::{BAD_WORDS, TST_HOLD_CLOCKS};
 use merkur_rtl::{port_rx::PortRx, verilog::block_verilog};
 use merkur_testbenches::stim::tst_code;
@@ -57,10 +58,7 @@ struct Probe {
 
 impl Probe {
     fn new(tst_fail: bool) -> Probe {
-        let mut m = Model::build(&block_verilog(PortRx::new(
-            merkur_rtl::rx_word::WordFormat::Basic,
-        )))
-        .unwrap();
+        let mut m = Model::build(&block_verilog(PortRx::new(WordFormat::Basic))).unwrap();
         m.set(m.port("i_slots_m1"), SLOTS as u64 - 1);
         m.set(m.port("i_tst_fail"), tst_fail as u64);
         let (clk, smp, flush, cf, tst, ack) = (

@@ -8,6 +8,7 @@
 
 use merkur_model::line::{nrzi_encode, push_group, Word, CODE_I};
 use merkur_model::ring::{Frame, Header, HeaderRx, Mode, Slot};
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::{monitor::Monitor, slave::Slave, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, tst_code, PacketReader, Seen};
 use merkur_testbenches::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};
@@ -102,14 +103,8 @@ fn wrap_reintegrate_and_failsafe() {
     let n = pi.len().min(si.len());
 
     let mut s = Model::build(&block_verilog(Slave::new())).unwrap();
-    let mut mpo = Model::build(&block_verilog(Monitor::new(
-        merkur_rtl::rx_word::WordFormat::Basic,
-    )))
-    .unwrap();
-    let mut mso = Model::build(&block_verilog(Monitor::new(
-        merkur_rtl::rx_word::WordFormat::Basic,
-    )))
-    .unwrap();
+    let mut mpo = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
+    let mut mso = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
     let p = |m: &Model, x: &str| m.port(x);
     for (name, v) in [
         ("i_address", ADDRESS),

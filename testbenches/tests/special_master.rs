@@ -9,6 +9,7 @@
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::{monitor::Monitor, special_master::SpecialMaster, verilog::block_verilog};
 use merkur_testbenches::stim::{frame_code, seen, tst_code, PacketReader, Seen};
 use merkur_testbenches::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};
@@ -96,10 +97,7 @@ fn the_secondary_relay_passes_frames_only() {
     ));
 
     let mut m = Model::build(&block_verilog(SpecialMaster::default())).unwrap();
-    let mut mon = Model::build(&block_verilog(Monitor::new(
-        merkur_rtl::rx_word::WordFormat::Basic,
-    )))
-    .unwrap();
+    let mut mon = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
     for (name, v) in [
         ("i_address", 0),
         ("i_slots_m1", SLOTS as u64 - 1),

@@ -5,6 +5,7 @@
 //! the block's, and the stimulus is in it, value change by value change.
 
 use fst_reader::{FstFilter, FstHierarchyEntry, FstReader, FstSignalValue};
+use merkur_rtl::rx_word::WordFormat;
 use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
 use merkur_testbenches::verilator::Model;
 use std::collections::HashMap;
@@ -44,10 +45,7 @@ fn merkur_wave_writes_an_fst() {
     // two clocks.
     const CLOCKS: u64 = 2000;
     {
-        let mut m = Model::build(&block_verilog(Monitor::new(
-            merkur_rtl::rx_word::WordFormat::Basic,
-        )))
-        .unwrap();
+        let mut m = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
         let (clk, s) = (m.port("clock"), m.port("i_samples"));
         for t in 0..CLOCKS {
             m.set(s, if (t / 2) % 2 == 0 { 0b1111 } else { 0 });
