@@ -29,33 +29,39 @@ fn every_proof_holds() {
     assert_eq!(results.len(), ps.len());
 }
 
+/// Proof `name` with its property text `right` replaced by `wrong` (which
+/// must be there: a mutation that misses leaves a test that cannot fail).
+fn broken(name: &str, right: &str, wrong: &str) -> Proof {
+    let mut p = proofs().into_iter().find(|p| p.name == name).unwrap();
+    assert!(
+        p.props.contains(right),
+        "{name}: {right:?} not in its properties"
+    );
+    p.props = Box::leak(p.props.replace(right, wrong).into_boxed_str());
+    p
+}
+
+/// The one task's failure names `label` and leaves a waveform with `signal`.
+fn fails_with_waveform(t: &merkur_testbenches::formal::TaskResult, label: &str, signal: &str) {
+    assert_eq!(t.status, Status::Fail, "{:?}", t.detail);
+    assert!(t.detail.iter().any(|d| d.contains(label)), "{:?}", t.detail);
+    let vcd = std::fs::read_to_string(t.trace.as_ref().expect("a counterexample")).unwrap();
+    assert!(vcd.contains("$var") && vcd.contains(signal), "{vcd}");
+}
+
 /// Table 1 with the WU row's BSR wrong (SI instead of PI): the proof must
 /// fail on that assertion and leave the counterexample as a VCD waveform.
 #[test]
 fn a_wrong_table_1_row_fails_with_a_waveform() {
     let tools = Tools::for_tests().unwrap();
-    let mut p = proofs()
-        .into_iter()
-        .find(|p| p.name == "switchbox")
-        .unwrap();
-    let right = "row_wu_bsr: assert (o_bsr == i_pi);";
-    assert!(p.props.contains(right));
-    p.props = Box::leak(
-        p.props
-            .replace(right, "row_wu_bsr: assert (o_bsr == i_si);")
-            .into_boxed_str(),
+    let p = broken(
+        "switchbox",
+        "row_wu_bsr: assert (o_bsr == i_pi);",
+        "row_wu_bsr: assert (o_bsr == i_si);",
     );
     let r = run(&p, &out_dir("broken"), &tools).unwrap();
     eprintln!("{}", table(std::slice::from_ref(&r)));
-    let prove = &r.tasks[0];
-    assert_eq!(prove.status, Status::Fail, "{:?}", prove.detail);
-    assert!(
-        prove.detail.iter().any(|d| d.contains("row_wu_bsr")),
-        "{:?}",
-        prove.detail
-    );
-    let vcd = std::fs::read_to_string(prove.trace.as_ref().expect("a counterexample")).unwrap();
-    assert!(vcd.contains("$var") && vcd.contains("i_mode"), "{vcd}");
+    fails_with_waveform(&r.tasks[0], "row_wu_bsr", "i_mode");
     // The covers do not depend on the broken assertion.
     assert_eq!(r.tasks[1].status, Status::Pass);
 }
@@ -66,30 +72,19 @@ fn a_wrong_table_1_row_fails_with_a_waveform() {
 #[test]
 fn a_wrong_bounded_property_fails_with_a_waveform() {
     let tools = Tools::for_tests().unwrap();
-    let mut p = proofs().into_iter().find(|p| p.name == "mdb").unwrap();
-    let right = "wb_ack_in_time: assert (waited <= 4);";
-    assert!(p.props.contains(right));
-    p.props = Box::leak(
-        p.props
-            .replace(right, "wb_ack_in_time: assert (waited <= 1);")
-            .into_boxed_str(),
+    let mut p = broken(
+        "mdb",
+        "wb_ack_in_time: assert (waited <= 4);",
+        "wb_ack_in_time: assert (waited <= 1);",
     );
     p.tasks.retain(|t| t.mode == merkur_rtl::formal::Mode::Bmc);
     assert_eq!(p.tasks.len(), 1);
     let r = run(&p, &out_dir("broken_bmc"), &tools).unwrap();
     eprintln!("{}", table(std::slice::from_ref(&r)));
-    let bmc = &r.tasks[0];
-    assert_eq!(bmc.status, Status::Fail, "{:?}", bmc.detail);
-    assert!(
-        bmc.detail.iter().any(|d| d.contains("wb_ack_in_time")),
-        "{:?}",
-        bmc.detail
-    );
+    fails_with_waveform(&r.tasks[0], "wb_ack_in_time", "o_wb_ack");
     let sby_log = std::fs::read_to_string(out_dir("broken_bmc").join("mdb/sby.log")).unwrap();
     assert!(
         sby_log.contains("engine_0 (abc bmc3) returned FAIL"),
         "{sby_log}"
     );
-    let vcd = std::fs::read_to_string(bmc.trace.as_ref().expect("a counterexample")).unwrap();
-    assert!(vcd.contains("$var") && vcd.contains("o_wb_ack"), "{vcd}");
 }
