@@ -1,5 +1,5 @@
-//! Collects, for the headers of the emitted Verilog (`src/headers.rs`),
-//! every rust-hdl block of `src/`: its type name, its source file, the
+//! Collects, for the headers of the emitted Verilog (`src/emit/headers.rs`),
+//! every rust-hdl block of `src/` and its folders: its type name, its source file, the
 //! file's module doc (purpose, port table, latency), the struct's own doc
 //! line, and its fields (name and type), from which a child module's block
 //! type is found. Writes `$OUT_DIR/blocks.rs`.
@@ -66,18 +66,29 @@ fn blocks_of(file: &str, text: &str) -> Vec<Block> {
     out
 }
 
+/// Every `.rs` file under `dir`, folders included (`src/line/cdr.rs`).
+fn rust_files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
+    for e in std::fs::read_dir(dir).expect("rtl/src folder") {
+        let p = e.expect("dir entry").path();
+        if p.is_dir() {
+            rust_files(&p, out);
+        } else if p.extension().is_some_and(|e| e == "rs") {
+            out.push(p);
+        }
+    }
+}
+
 fn main() {
     println!("cargo:rerun-if-changed=src");
-    let mut files: Vec<_> = std::fs::read_dir("src")
-        .expect("rtl/src")
-        .map(|e| e.expect("dir entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
-        .collect();
+    let mut files = vec![];
+    rust_files(Path::new("src"), &mut files);
     files.sort();
     let mut blocks = vec![];
     for p in &files {
         let text = std::fs::read_to_string(p).expect("source file");
-        let file = format!("rtl/src/{}", p.file_name().expect("name").to_string_lossy());
+        let rel = p.strip_prefix("src").expect("under src");
+        let rel: Vec<_> = rel.iter().map(|c| c.to_string_lossy()).collect();
+        let file = format!("rtl/src/{}", rel.join("/"));
         blocks.extend(blocks_of(&file, &text));
     }
     let mut s = String::from(

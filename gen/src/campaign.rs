@@ -21,7 +21,7 @@
 use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::ring::{self, splitmix, table1, Carry, CycleRecord, EventKind, Mode, Port, Slot};
 use merkur_model::scenario::Kind;
-use merkur_rtl::ring_top::TICKS_PER_BIT;
+use merkur_rtl::harness::ring_top::TICKS_PER_BIT;
 use merkur_testbenches::ring_sim::{self, Options};
 use merkur_testbenches::Rng;
 use serde::{Deserialize, Serialize};

@@ -6,8 +6,8 @@ use crate::write_atomic;
 use merkur_model::rmm;
 use merkur_model::tbconfig::{self, TbConfig};
 use merkur_model::tokenbus::{self, TbRun};
-use merkur_rtl::dcm_station::dcm_verilog;
-use merkur_rtl::verilog::WAIVERS;
+use merkur_rtl::emit::verilog::WAIVERS;
+use merkur_rtl::tokenbus::dcm_station::dcm_verilog;
 use merkur_testbenches::dcm_sim::{self, Options};
 use std::path::Path;
 

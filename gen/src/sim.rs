@@ -3,7 +3,7 @@
 
 use crate::{read_scenario, write_atomic};
 use merkur_model::ring;
-use merkur_rtl::verilog::WAIVERS;
+use merkur_rtl::emit::verilog::WAIVERS;
 use merkur_testbenches::ring_sim::{self, Options};
 use std::path::Path;
 
@@ -98,7 +98,7 @@ pub fn sim(
     println!(
         "simulated {} ticks ({} bit times) in {:.2} s (build {:.1} s)",
         rep.ticks,
-        rep.ticks / u64::from(merkur_rtl::ring_top::TICKS_PER_BIT),
+        rep.ticks / u64::from(merkur_rtl::harness::ring_top::TICKS_PER_BIT),
         rep.wall.as_secs_f64(),
         rep.build.as_secs_f64()
     );

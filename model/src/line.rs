@@ -306,7 +306,7 @@ pub fn mark_code_bits(code: &[u8]) -> Vec<u8> {
 /// more than two 0s in a row: the receivers keep their bit lock, nobody
 /// mutes) and never 10 times in a row (no three idle groups: no receiver
 /// ends the packet), and on the first and the last bit. The RTL harness
-/// (`merkur_rtl::ring_top`) makes the same sequence.
+/// (`merkur_rtl::harness::ring_top`) makes the same sequence.
 pub fn garbage(pattern: u8, len: usize) -> Vec<u8> {
     let mut s: u16 = (pattern as u16) << 8 | 0xA5;
     let (mut zeros, mut ones) = (0, 0);

@@ -1,5 +1,5 @@
 // Formal properties of mdb, a master's database and host port (protocol
-// §7, the port table of rtl/src/mdb.rs). Bounded model check from
+// §7, the port table of rtl/src/node/mdb.rs). Bounded model check from
 // power-up (the memories' contents are state that k-induction cannot
 // pin down without a model of every word); memories 256 deep.
 //

@@ -3,7 +3,7 @@
 //! Each proof is a SystemVerilog wrapper in `rtl/formal/<name>.sv`: it
 //! instantiates the block's emitted Verilog (the same text that is
 //! simulated and synthesized, its top module renamed to the block's name by
-//! [`crate::verilog::rename_top`]) and states the block's properties as
+//! [`crate::emit::verilog::rename_top`]) and states the block's properties as
 //! immediate assertions (`assert`), input constraints (`assume`) and reach
 //! checks (`cover`) in plain `always` blocks, with the protocol section
 //! each one comes from. Expected values are written from docs/protocol.md,
@@ -21,7 +21,7 @@
 //! `merkur prove` and `cargo test` (testbenches/tests/formal.rs) run every
 //! proof. docs/verification.md lists the properties in words.
 
-use crate::verilog::{block_verilog, rename_top};
+use crate::emit::verilog::{block_verilog, rename_top};
 
 /// What a task of a proof does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -113,8 +113,14 @@ fn codec() -> Proof {
         what: "4B/5B: the code table, decode(encode(x)) = x, no J K inside data, \
                a toggle every 4 bit times",
         duts: vec![
-            dut("enc4b5b", block_verilog(crate::enc4b5b::Enc4b5b::default())),
-            dut("dec5b4b", block_verilog(crate::dec5b4b::Dec5b4b::default())),
+            dut(
+                "enc4b5b",
+                block_verilog(crate::line::enc4b5b::Enc4b5b::default()),
+            ),
+            dut(
+                "dec5b4b",
+                block_verilog(crate::line::dec5b4b::Dec5b4b::default()),
+            ),
         ],
         expose: vec![],
         props: include_str!("../formal/codec.sv"),
@@ -126,7 +132,7 @@ fn cdr() -> Proof {
     Proof {
         name: "cdr",
         what: "loss of signal: raised after 32 bit times without an edge, never earlier",
-        duts: vec![dut("cdr", block_verilog(crate::cdr::Cdr::default()))],
+        duts: vec![dut("cdr", block_verilog(crate::line::cdr::Cdr::default()))],
         expose: vec![("cdr", "quiet_q"), ("cdr", "last_q")],
         props: include_str!("../formal/cdr.sv"),
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 70)],
@@ -134,7 +140,7 @@ fn cdr() -> Proof {
 }
 
 fn stream_ctrl() -> Proof {
-    let v = block_verilog(crate::stream_ctrl::StreamCtrl::default());
+    let v = block_verilog(crate::node::stream_ctrl::StreamCtrl::default());
     Proof {
         name: "stream_ctrl",
         what: "channel failure: 8 bad words raise a run, 7 never; TST held 130 bit times",
@@ -152,7 +158,7 @@ fn sw_dark() -> Proof {
         what: "dark time: both outputs hold their level 12 bit times after a change",
         duts: vec![dut(
             "sw_dark",
-            block_verilog(crate::sw_dark::SwDark::default()),
+            block_verilog(crate::node::sw_dark::SwDark::default()),
         )],
         expose: ["dark_q", "dark_po_q", "lvl_po_q", "lvl_so_q"]
             .map(|w| ("sw_dark", w))
@@ -166,7 +172,7 @@ fn retime() -> Proof {
     Proof {
         name: "retime",
         what: "elastic buffer: no slip for a sender 20,000 ppm off, one-half-clock corrections 8 bits apart",
-        duts: vec![dut("retime", block_verilog(crate::retime::Retime::default()))],
+        duts: vec![dut("retime", block_verilog(crate::line::retime::Retime::default()))],
         expose: ["send0", "send1", "len", "run_q"].map(|w| ("retime", w)).to_vec(),
         props: include_str!("../formal/retime.sv"),
         tasks: vec![task(Mode::Bmc, 300), task(Mode::Cover, 100)],
@@ -179,7 +185,7 @@ fn rmm_fcm() -> Proof {
         what: "802.4 fault correction machine: five states, exactly §21's transitions",
         duts: vec![dut(
             "rmm_fcm",
-            block_verilog(crate::rmm_fcm::RmmFcm::default()),
+            block_verilog(crate::tokenbus::rmm_fcm::RmmFcm::default()),
         )],
         expose: vec![("rmm_fcm", "pend_q"), ("rmm_fcm", "pend_ch_q")],
         props: include_str!("../formal/rmm_fcm.sv"),
@@ -188,7 +194,8 @@ fn rmm_fcm() -> Proof {
 }
 
 fn mdb() -> Proof {
-    let v = crate::verilog::size_memories(&block_verilog(crate::mdb::Mdb::default()), 256);
+    let v =
+        crate::emit::verilog::size_memories(&block_verilog(crate::node::mdb::Mdb::default()), 256);
     let wires = [
         "db__write_enable",
         "db__write_address",
@@ -214,8 +221,8 @@ fn mdb() -> Proof {
 fn special_master() -> Proof {
     // Memories 256 deep (a ring of up to 256 slots): the properties do not
     // involve them, and the proof stays small.
-    let v = crate::verilog::size_memories(
-        &block_verilog(crate::special_master::SpecialMaster::default()),
+    let v = crate::emit::verilog::size_memories(
+        &block_verilog(crate::node::special_master::SpecialMaster::default()),
         256,
     );
     let wires = [
@@ -248,7 +255,7 @@ fn nrzi_tx() -> Proof {
             "serializer: a group every 5 bit times, MSB first, the line toggles exactly on 1 bits",
         duts: vec![dut(
             "nrzi_tx",
-            block_verilog(crate::nrzi_tx::NrziTx::default()),
+            block_verilog(crate::line::nrzi_tx::NrziTx::default()),
         )],
         expose: vec![("nrzi_tx", "count_q"), ("nrzi_tx", "shift_q")],
         props: include_str!("../formal/nrzi_tx.sv"),
@@ -268,12 +275,12 @@ fn switchbox() -> Proof {
 }
 
 fn sbox() -> (&'static str, String) {
-    let v = block_verilog(crate::switchbox::Switchbox::default());
+    let v = block_verilog(crate::node::switchbox::Switchbox::default());
     dut("switchbox", v)
 }
 
 fn switch_ctl() -> Proof {
-    let v = block_verilog(crate::switch_ctl::SwitchCtl::default());
+    let v = block_verilog(crate::node::switch_ctl::SwitchCtl::default());
     let regs = [
         "settle_q",
         "ack_time_q",

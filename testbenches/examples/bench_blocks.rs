@@ -7,8 +7,8 @@
 //! counter), driven with the line samples of idles and frames.
 
 use merkur_model::line::{nrzi_encode, push_group, CODE_I, CODE_J, CODE_K, DATA_CODES};
-use merkur_rtl::rx_word::WordFormat;
-use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
+use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor};
 use merkur_testbenches::verilator::Model;
 use rust_hdl::prelude::*;
 use std::time::Instant;

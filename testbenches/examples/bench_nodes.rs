@@ -8,7 +8,7 @@
 //! other input is static.
 
 use merkur_model::line::{nrzi_encode, push_group, CODE_I, CODE_J, CODE_K, DATA_CODES};
-use merkur_rtl::{chain8::Chain8, slave::Slave, verilog::block_verilog};
+use merkur_rtl::{emit::verilog::block_verilog, harness::chain8::Chain8, node::slave::Slave};
 use merkur_testbenches::verilator::Model;
 use rust_hdl::prelude::*;
 use std::time::Instant;

@@ -60,7 +60,7 @@ fn main() {
         }
         let (wall, rep) = best.unwrap();
         let s = wall.as_secs_f64();
-        let bits = rep.ticks as f64 / f64::from(merkur_rtl::ring_top::TICKS_PER_BIT);
+        let bits = rep.ticks as f64 / f64::from(merkur_rtl::harness::ring_top::TICKS_PER_BIT);
         let sim_us = bits / cfg.line_rate_mbps;
         // Simulated cycles: the bit times run over the period the special
         // master measured.

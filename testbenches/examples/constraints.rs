@@ -1,10 +1,10 @@
 //! Writes every board's constraints file into `constraints/` from
-//! rtl/src/boards.rs: `cargo run -p merkur-testbenches --example constraints`.
+//! rtl/src/top/boards.rs: `cargo run -p merkur-testbenches --example constraints`.
 fn main() {
     let dir = merkur_testbenches::repo_root().join("constraints");
-    for b in merkur_rtl::boards::all() {
+    for b in merkur_rtl::top::boards::all() {
         let path = dir.join(b.file);
-        if let Err(e) = std::fs::write(&path, merkur_rtl::boards::constraints_file(&b)) {
+        if let Err(e) = std::fs::write(&path, merkur_rtl::top::boards::constraints_file(&b)) {
             eprintln!("error: cannot write {}: {e}", path.display());
             std::process::exit(1);
         }

@@ -1,7 +1,7 @@
 //! Prints the Verilog of one block: `cargo run -p merkur-testbenches --example emit -- nrzi_tx`.
 fn main() {
     let which = std::env::args().nth(1).unwrap_or_default();
-    let blocks = merkur_rtl::verilog::all_blocks();
+    let blocks = merkur_rtl::emit::verilog::all_blocks();
     match blocks.iter().find(|(n, _)| *n == which) {
         Some((_, v)) => print!("{v}"),
         None => {

@@ -1,5 +1,5 @@
 //! Token-bus scenarios through the RTL: every station's DCM + RMM
-//! (`merkur_dcm`, rtl/src/dcm_station.rs) is its own Verilated instance,
+//! (`merkur_dcm`, rtl/src/tokenbus/dcm_station.rs) is its own Verilated instance,
 //! driven by the model's token-bus MACs and channels
 //! ([`merkur_model::tokenbus::run_with`]) in closed loop, and every output
 //! of every station in every octet is compared with the reference RMM's
@@ -9,7 +9,7 @@ use crate::verilator::Model;
 use merkur_model::rmm::{RmmConfig, RmmIn, RmmOut};
 use merkur_model::tbconfig::TbConfig;
 use merkur_model::tokenbus::{self, StationHw, TbRun};
-use merkur_rtl::dcm_station::dcm_verilog;
+use merkur_rtl::tokenbus::dcm_station::dcm_verilog;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 

@@ -10,7 +10,7 @@
 //!
 //! The tests in `tests/` check every RTL block against the reference model.
 
-pub use merkur_rtl::cdr::{SAMPLES_PER_BIT, SAMPLES_PER_CLOCK};
+pub use merkur_rtl::line::cdr::{SAMPLES_PER_BIT, SAMPLES_PER_CLOCK};
 use std::path::PathBuf;
 
 /// One pinned tool from `scripts/tools.lock`.

@@ -1,4 +1,4 @@
-//! Runs a scenario's whole ring as Verilog in Verilator ([`merkur_rtl::ring_top`])
+//! Runs a scenario's whole ring as Verilog in Verilator ([`merkur_rtl::harness::ring_top`])
 //! and compares it with the reference model's cycle records (the same records
 //! the golden trace in `tb-data/` is written from): every word every fibre
 //! carried in every cycle, the headers, and at the end every node's state
@@ -18,10 +18,10 @@ use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::line::{Lead, Word};
 use merkur_model::ring::{self, table1, Carry, CycleRecord, EventKind, HeaderRx, Mode, Port, Slot};
 use merkur_model::scenario::{IrqLine, Kind};
-use merkur_rtl::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_JOIN, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
-use merkur_rtl::ring_top::{
+use merkur_rtl::harness::ring_top::{
     cap_slots, cfg as field, ring_verilog_with, status as st, INC_NOMINAL, TICKS_PER_BIT,
 };
+use merkur_rtl::node::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_JOIN, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
 use std::io::IsTerminal;
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -175,7 +175,7 @@ pub fn unsupported(cfg: &Config) -> Option<String> {
 }
 
 /// The harness arms a flip in the idle gap before its packet and finds the
-/// packet by its J K ([`merkur_rtl::ring_top`]): the fibre must carry one
+/// packet by its J K ([`merkur_rtl::harness::ring_top`]): the fibre must carry one
 /// packet in the cycle, after an idle gap the driver can see.
 pub fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Option<String> {
     let (fibre, target, bit) = match f {
@@ -487,7 +487,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
     r.cfg(
         0,
         field::CS_TIMEOUT,
-        merkur_rtl::synth_top::ring_cs_timeout_clocks(period, cfg.cs_timeout_cycles()),
+        merkur_rtl::top::synth_top::ring_cs_timeout_clocks(period, cfg.cs_timeout_cycles()),
     );
     r.cfg(0, field::PERIOD, period);
     for (k, p) in cfg.backups() {
@@ -495,7 +495,7 @@ pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report,
         r.cfg(
             k,
             field::ELECT,
-            merkur_rtl::synth_top::elect_bits(period, p),
+            merkur_rtl::top::synth_top::elect_bits(period, p),
         );
     }
     for (k, nd) in cfg.nodes.iter().enumerate() {

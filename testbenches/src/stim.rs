@@ -110,7 +110,7 @@ pub fn seen(s: &Slot) -> Seen {
     }
 }
 
-/// Collects packets from a Verilated [`merkur_rtl::monitor::Monitor`]:
+/// Collects packets from a Verilated [`merkur_rtl::line::monitor::Monitor`]:
 /// header words (0xdead when bad) and slots.
 pub struct PacketReader {
     start: usize,

@@ -391,7 +391,7 @@ fn no_inline_config(verilog: &str) -> String {
                 .chars()
                 .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
                 .collect();
-            // `merkur_x__y` are the node's own submodules (rtl/src/readable.rs
+            // `merkur_x__y` are the node's own submodules (rtl/src/emit/readable.rs
             // names a child block `parent__child`): leave them inlined.
             if name.contains("__") {
                 continue;

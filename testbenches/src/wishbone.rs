@@ -1,5 +1,5 @@
 //! Wishbone B4 classic transfers from a testbench (the host port of
-//! [`merkur_rtl::mdb`], alone or through the ring top).
+//! [`merkur_rtl::node::mdb`], alone or through the ring top).
 
 use crate::verilator::Model;
 

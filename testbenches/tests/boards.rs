@@ -1,13 +1,13 @@
-//! Board constraints (rtl/src/boards.rs, the one source of pin truth): the
+//! Board constraints (rtl/src/top/boards.rs, the one source of pin truth): the
 //! committed files in `constraints/` are exactly what the generator writes,
 //! no ball is used twice, and every port bit of the board's top is
 //! constrained (and nothing else is).
 
 use merkur_model::scenario::Kind;
-use merkur_rtl::boards::{self, Board};
-use merkur_rtl::synth_top::{node_top, NodeStatic};
-use merkur_rtl::ulx3s::ulx3s_verilog;
-use merkur_rtl::xem6010::xem6010_verilog;
+use merkur_rtl::top::boards::{self, Board};
+use merkur_rtl::top::synth_top::{node_top, NodeStatic};
+use merkur_rtl::top::ulx3s::ulx3s_verilog;
+use merkur_rtl::top::xem6010::xem6010_verilog;
 use merkur_testbenches::repo_root;
 use std::collections::BTreeSet;
 
@@ -19,7 +19,7 @@ fn committed_constraints_match_the_generator() {
             std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert!(
             committed == boards::constraints_file(&b),
-            "{} drifted from rtl/src/boards.rs; regenerate it: \
+            "{} drifted from rtl/src/top/boards.rs; regenerate it: \
              cargo run -p merkur-testbenches --example constraints",
             path.display()
         );

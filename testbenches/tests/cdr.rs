@@ -8,8 +8,8 @@
 
 use merkur_model::line::{nrzi_encode, push_group, CODE_K, CODE_S, DATA_CODES};
 use merkur_rtl::{
-    cdr::{Cdr, LOS_SAMPLES, MUTE_SAMPLES},
-    verilog::block_verilog,
+    emit::verilog::block_verilog,
+    line::cdr::{Cdr, LOS_SAMPLES, MUTE_SAMPLES},
 };
 use merkur_testbenches::{line_samples, sample_words, verilator::Model, Rng, SAMPLES_PER_BIT};
 

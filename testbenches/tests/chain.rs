@@ -1,4 +1,4 @@
-//! Eight slave nodes in a row (rtl/src/chain8.rs) in Verilator carry the
+//! Eight slave nodes in a row (rtl/src/harness/chain8.rs) in Verilator carry the
 //! model's frames bit-exactly: the line the model says leaves the special
 //! master (fibre P0 of tb-data/chain9.toml, with its injected errors) enters
 //! the chain at a clock offset with jitter; what leaves the last slave must be
@@ -11,8 +11,8 @@ use merkur_model::config;
 use merkur_model::line::{nrzi_encode, push_group, CODE_I};
 use merkur_model::ring::{self, sensor_value, Carry, HeaderRx};
 use merkur_model::scenario::Kind;
-use merkur_rtl::rx_word::WordFormat;
-use merkur_rtl::{chain8::Chain8, monitor::Monitor, verilog::block_verilog};
+use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::{emit::verilog::block_verilog, harness::chain8::Chain8, line::monitor::Monitor};
 use merkur_testbenches::stim::{frame_code, seen, PacketReader, Seen};
 use merkur_testbenches::{
     line_samples, pair_to_samples, repo_root, sample_words, verilator::Model, Rng,

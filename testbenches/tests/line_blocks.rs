@@ -3,7 +3,10 @@
 use merkur_model::line::{
     decode_group, nrzi_encode, push_group, Symbol, CODE_I, CODE_J, CODE_K, CODE_S, DATA_CODES,
 };
-use merkur_rtl::{dec5b4b::Dec5b4b, enc4b5b::Enc4b5b, nrzi_tx::NrziTx, verilog::block_verilog};
+use merkur_rtl::{
+    emit::verilog::block_verilog, line::dec5b4b::Dec5b4b, line::enc4b5b::Enc4b5b,
+    line::nrzi_tx::NrziTx,
+};
 use merkur_testbenches::{verilator::Model, Rng};
 
 #[test]

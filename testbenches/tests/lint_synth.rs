@@ -3,7 +3,7 @@
 //! Cell counts are printed (sizes are recorded in docs/benchmarks.md, not
 //! asserted here).
 
-use merkur_rtl::verilog::{all_blocks, WAIVERS};
+use merkur_rtl::emit::verilog::{all_blocks, WAIVERS};
 use merkur_testbenches::jobs;
 use merkur_testbenches::verilator::lint;
 use std::process::Command;
@@ -84,7 +84,7 @@ fn every_block_synthesizes_for_ice40() {
 
 /// The ring top `merkur verilog` writes (here for tb-data/ring8.toml: all
 /// four node kinds), without and with the nodes' power-on resets (a ring
-/// that restarts nodes, rtl/src/power_on.rs): lint-clean and accepted by
+/// that restarts nodes, rtl/src/harness/power_on.rs): lint-clean and accepted by
 /// Yosys (elaboration, process and design checks; it is a simulation
 /// harness, not a bitstream).
 #[test]
@@ -98,7 +98,7 @@ fn the_ring_top_is_lint_clean_and_checked_by_yosys() {
     let cfg = merkur_model::config::load(name, &text).unwrap();
     let kinds: Vec<_> = cfg.nodes.iter().map(|n| n.kind).collect();
     for restarts in [false, true] {
-        let v = merkur_rtl::ring_top::ring_verilog_with(&kinds, cfg.slots, restarts);
+        let v = merkur_rtl::harness::ring_top::ring_verilog_with(&kinds, cfg.slots, restarts);
         assert_eq!(
             v.contains("i_por"),
             restarts,

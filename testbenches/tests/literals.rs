@@ -1,4 +1,4 @@
-//! The literal sizing of our emission pass (`merkur_rtl::literals`) changes
+//! The literal sizing of our emission pass (`merkur_rtl::emit::literals`) changes
 //! no bit: Yosys proves a block's Verilog with rust-hdl's 32-bit literals
 //! and with the sized ones the same design (`equiv_make`, `equiv_simple
 //! -seq`, `equiv_induct`: every matched signal equal in every reachable
@@ -6,8 +6,8 @@
 //! Checked: the slave, the master, the special master and the 802.4 Dual
 //! Channel Manager (about 35 s together on two cores).
 
-use merkur_rtl::readable::{readable, registers_and_names};
-use merkur_rtl::verilog::{size_memories, zero_memories};
+use merkur_rtl::emit::readable::{readable, registers_and_names};
+use merkur_rtl::emit::verilog::{size_memories, zero_memories};
 use merkur_testbenches::formal::Tools;
 use rust_hdl::core::prelude::*;
 use std::path::PathBuf;
@@ -88,7 +88,7 @@ fn check<U: Block>(name: &str, uut: U, depth: Option<usize>) {
 
 #[test]
 fn a_wrong_literal_is_found() {
-    let (gold, gate) = both(merkur_rtl::sw_dark::SwDark::default(), None);
+    let (gold, gate) = both(merkur_rtl::node::sw_dark::SwDark::default(), None);
     equivalent("sw_dark", &gold, &gate).unwrap();
     let wrong = gate.replacen("dark_q - 5'h1", "dark_q - 5'h2", 1);
     assert_ne!(wrong, gate, "the sized decrement is in the text");
@@ -97,24 +97,28 @@ fn a_wrong_literal_is_found() {
 
 #[test]
 fn the_slave_is_unchanged() {
-    check("slave", merkur_rtl::slave::Slave::new(), None);
+    check("slave", merkur_rtl::node::slave::Slave::new(), None);
 }
 
 #[test]
 fn the_dual_channel_manager_is_unchanged() {
-    check("dcm", merkur_rtl::dcm::Dcm::default(), None);
+    check("dcm", merkur_rtl::tokenbus::dcm::Dcm::default(), None);
 }
 
 #[test]
 fn the_master_is_unchanged() {
-    check("master", merkur_rtl::master::Master::default(), Some(16));
+    check(
+        "master",
+        merkur_rtl::node::master::Master::default(),
+        Some(16),
+    );
 }
 
 #[test]
 fn the_special_master_is_unchanged() {
     check(
         "special_master",
-        merkur_rtl::special_master::SpecialMaster::default(),
+        merkur_rtl::node::special_master::SpecialMaster::default(),
         Some(16),
     );
 }

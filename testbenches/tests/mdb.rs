@@ -1,4 +1,4 @@
-//! The master's database alone (`merkur_rtl::mdb`): its alarm queue
+//! The master's database alone (`merkur_rtl::node::mdb`): its alarm queue
 //! (protocol §11) against a naive queue kept here from the stimulus —
 //! seeded random received words (headers with their CYC, some of them in
 //! failsafe; alarm words with random SEQ, so that about half are repeats
@@ -8,10 +8,10 @@
 //! (The memories, the Alive check and the host port's refusals are checked
 //! in every ring run, `ring.rs`, and in the formal proofs, `formal.rs`.)
 
-use merkur_rtl::mdb::{
+use merkur_rtl::emit::verilog::block_verilog;
+use merkur_rtl::node::mdb::{
     Mdb, ALQ_CLEAR_OVF, ALQ_POP, ST_RUN, WB_ALQ_CTL, WB_ALQ_HEAD, WB_ALQ_OVF, WB_STATUS,
 };
-use merkur_rtl::verilog::block_verilog;
 use merkur_testbenches::wishbone::Wishbone;
 use merkur_testbenches::{verilator::Model, Rng};
 use std::collections::VecDeque;
@@ -289,9 +289,9 @@ fn a_joined_master_reads_a_reload_frame_and_writes_an_own_slot_only_with_a_value
         b.m.set(m1, SLOTS as u64 - 1);
         // LAST is not stored (protocol §7): it reads 1 for slot S − 1 only.
         for (s, cfg) in [(3u16, 9u16), (9, 8), (7, 2)] {
-            b.wb(merkur_rtl::mdb::WB_CFG + s, Some(cfg));
+            b.wb(merkur_rtl::node::mdb::WB_CFG + s, Some(cfg));
         }
-        let cfg_of = |b: &mut Bench, s: u16| b.wb(merkur_rtl::mdb::WB_CFG + s, None);
+        let cfg_of = |b: &mut Bench, s: u16| b.wb(merkur_rtl::node::mdb::WB_CFG + s, None);
         assert_eq!(
             cfg_of(&mut b, 3),
             8,
@@ -304,7 +304,7 @@ fn a_joined_master_reads_a_reload_frame_and_writes_an_own_slot_only_with_a_value
         );
         let join = rng.below(3) != 0;
         let start = if join {
-            merkur_rtl::mdb::ST_JOIN
+            merkur_rtl::node::mdb::ST_JOIN
         } else {
             ST_RUN
         };

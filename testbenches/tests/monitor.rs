@@ -12,8 +12,8 @@ use merkur_model::line::{
     mark_code_bits, nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K, CODE_S,
 };
 use merkur_model::ring::{self, Carry, HeaderRx, Slot};
-use merkur_rtl::rx_word::WordFormat;
-use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
+use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor};
 use merkur_testbenches::stim::Seen;
 use merkur_testbenches::{line_samples, repo_root, sample_words, verilator::Model, Rng};
 

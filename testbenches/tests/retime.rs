@@ -9,10 +9,10 @@
 
 use merkur_model::line::{nrzi_decode, nrzi_encode, push_group, DATA_CODES};
 use merkur_rtl::{
-    cdr::{Cdr, LOS_SAMPLES, MUTE_SAMPLES},
-    fwd::DEAD_CLOCKS,
-    retime::Retime,
-    verilog::block_verilog,
+    emit::verilog::block_verilog,
+    line::cdr::{Cdr, LOS_SAMPLES, MUTE_SAMPLES},
+    line::retime::Retime,
+    node::fwd::DEAD_CLOCKS,
 };
 use merkur_testbenches::{
     line_samples, sample_words, timed_samples, verilator::Model, Rng, SAMPLES_PER_BIT,

@@ -6,10 +6,10 @@
 
 use merkur_model::config::{self, cfg_bits};
 use merkur_model::ring::{self, Slot};
-use merkur_rtl::master::Master;
-use merkur_rtl::mdb::{ST_JOIN, ST_RUN, WB_CFG, WB_STATUS};
-use merkur_rtl::ring_top::TICKS_PER_BIT;
-use merkur_rtl::verilog::block_verilog;
+use merkur_rtl::emit::verilog::block_verilog;
+use merkur_rtl::harness::ring_top::TICKS_PER_BIT;
+use merkur_rtl::node::master::Master;
+use merkur_rtl::node::mdb::{ST_JOIN, ST_RUN, WB_CFG, WB_STATUS};
 use merkur_testbenches::ring_sim::{run, Options, Report};
 use merkur_testbenches::wishbone::Wishbone;
 use merkur_testbenches::{repo_root, verilator::Model, Rng};

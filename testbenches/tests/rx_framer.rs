@@ -8,7 +8,7 @@ use merkur_model::line::{
     find_jk, nrzi_decode, nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K,
     CODE_S,
 };
-use merkur_rtl::{rx_framer::RxFramer, verilog::block_verilog};
+use merkur_rtl::{emit::verilog::block_verilog, line::rx_framer::RxFramer};
 use merkur_testbenches::{verilator::Model, Rng};
 
 struct Frame {

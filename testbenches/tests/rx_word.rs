@@ -12,8 +12,8 @@ use merkur_model::line::{
 };
 use merkur_model::ring::Header;
 use merkur_rtl::{
-    rx_word::{RxWord, WordFormat},
-    verilog::block_verilog,
+    emit::verilog::block_verilog,
+    line::rx_word::{RxWord, WordFormat},
 };
 use merkur_testbenches::{verilator::Model, Rng};
 

@@ -9,8 +9,10 @@
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
-use merkur_rtl::rx_word::WordFormat;
-use merkur_rtl::{monitor::Monitor, special_master::SpecialMaster, verilog::block_verilog};
+use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::{
+    emit::verilog::block_verilog, line::monitor::Monitor, node::special_master::SpecialMaster,
+};
 use merkur_testbenches::stim::{frame_code, seen, tst_code, PacketReader, Seen};
 use merkur_testbenches::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};
 

@@ -5,8 +5,8 @@
 //! PO not when the change keeps its source (`i_keep_po`, the special
 //! master between N and WU: its own frame is not cut, issue 19).
 
-use merkur_rtl::sw_dark::SwDark;
-use merkur_rtl::verilog::block_verilog;
+use merkur_rtl::emit::verilog::block_verilog;
+use merkur_rtl::node::sw_dark::SwDark;
 use merkur_testbenches::{verilator::Model, Rng};
 
 /// A node whose switchbox changes mode keeps both outputs dark for 12 bit

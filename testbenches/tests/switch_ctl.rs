@@ -7,8 +7,8 @@
 //! ACKed TST long enough, a WU node at a DATA header on BSR after an ACK —
 //! in failsafe too, where the DATA header alone is enough.
 
-use merkur_rtl::switch_ctl::SwitchCtl;
-use merkur_rtl::verilog::block_verilog;
+use merkur_rtl::emit::verilog::block_verilog;
+use merkur_rtl::node::switch_ctl::SwitchCtl;
 use merkur_testbenches::verilator::Model;
 
 /// Core clocks per bit time: the core clock is twice the line rate

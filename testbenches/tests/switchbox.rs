@@ -2,8 +2,8 @@
 //! `ring::table1` (every mode, every value of every input).
 
 use merkur_model::ring::{table1, Mode, Port};
-use merkur_rtl::switchbox::{Switchbox, MODE_N, MODE_WD, MODE_WU};
-use merkur_rtl::verilog::block_verilog;
+use merkur_rtl::emit::verilog::block_verilog;
+use merkur_rtl::node::switchbox::{Switchbox, MODE_N, MODE_WD, MODE_WU};
 use merkur_testbenches::verilator::Model;
 
 #[test]

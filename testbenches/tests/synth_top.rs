@@ -1,14 +1,14 @@
-//! The synthesis tops (rtl/src/synth_top.rs, rtl/src/xem6010.rs): the DDR
+//! The synthesis tops (rtl/src/top/synth_top.rs, rtl/src/top/xem6010.rs): the DDR
 //! capture and output stages deliver samples and pairs in the order the
 //! node's ports assume (Icarus, seeded random lines); the XEM6010 bridge
 //! reads and writes a real master's memories over Wishbone (Icarus); every
 //! top is `verilator --lint-only -Wall` clean.
 
 use merkur_model::scenario::Kind;
-use merkur_rtl::synth_top::{node_top, NodeStatic, DDR_IO};
-use merkur_rtl::ulx3s::{ulx3s_verilog, PLL_BLACKBOX};
-use merkur_rtl::verilog::WAIVERS;
-use merkur_rtl::xem6010::{
+use merkur_rtl::emit::verilog::WAIVERS;
+use merkur_rtl::top::synth_top::{node_top, NodeStatic, DDR_IO};
+use merkur_rtl::top::ulx3s::{ulx3s_verilog, PLL_BLACKBOX};
+use merkur_rtl::top::xem6010::{
     xem6010_core_verilog, xem6010_verilog, OK_BLACKBOXES, XILINX_BLACKBOXES,
 };
 use merkur_testbenches::Rng;

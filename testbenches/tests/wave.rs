@@ -5,8 +5,8 @@
 //! the block's, and the stimulus is in it, value change by value change.
 
 use fst_reader::{FstFilter, FstHierarchyEntry, FstReader, FstSignalValue};
-use merkur_rtl::rx_word::WordFormat;
-use merkur_rtl::{monitor::Monitor, verilog::block_verilog};
+use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor};
 use merkur_testbenches::verilator::Model;
 use std::collections::HashMap;
 
@@ -60,7 +60,7 @@ fn merkur_wave_writes_an_fst() {
     let mut names: Vec<&String> = sigs.keys().collect();
     names.sort();
     // The block's ports under the model's top scope (`top`, the block
-    // `top` in it), and its child blocks (rtl/src/monitor.rs: clock
+    // `top` in it), and its child blocks (rtl/src/line/monitor.rs: clock
     // recovery `cdr`, `framer`, word decoder `word` and its 5B/4B decoder
     // `dec`) by instance and port, with their widths.
     for (name, width) in [

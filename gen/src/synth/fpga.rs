@@ -11,8 +11,8 @@
 //! docs/synthesis.md compares them on the same nodes.
 
 use super::{write, BlockRam, NodeResult};
-use merkur_rtl::synth_top::{node_top, NodeStatic};
-use merkur_rtl::{boards, ulx3s};
+use merkur_rtl::top::synth_top::{node_top, NodeStatic};
+use merkur_rtl::top::{boards, ulx3s};
 use serde::Serialize;
 use std::path::Path;
 use std::process::Command;

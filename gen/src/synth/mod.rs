@@ -17,11 +17,11 @@
 use fpga::{read_json, run_tool, sum_cells, yosys_cells};
 use merkur_model::config::Config;
 use merkur_model::scenario::Kind;
-use merkur_rtl::boards;
-use merkur_rtl::ring_top::node_verilog;
-use merkur_rtl::synth_top::{self, node_top, NodeStatic};
-use merkur_rtl::verilog;
-use merkur_rtl::xem6010;
+use merkur_rtl::emit::verilog;
+use merkur_rtl::harness::ring_top::node_verilog;
+use merkur_rtl::top::boards;
+use merkur_rtl::top::synth_top::{self, node_top, NodeStatic};
+use merkur_rtl::top::xem6010;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::process::Command;

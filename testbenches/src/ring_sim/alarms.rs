@@ -7,8 +7,8 @@
 use super::{Mismatch, Ring};
 use merkur_model::config::Config;
 use merkur_model::ring::{reason, CycleRecord, EventKind, Mode};
-use merkur_rtl::mdb::{ALQ_DEPTH, ALQ_POP, WB_ALQ_CTL, WB_ALQ_HEAD, WB_ALQ_OVF};
-use merkur_rtl::ring_top::status as st;
+use merkur_rtl::harness::ring_top::status as st;
+use merkur_rtl::node::mdb::{ALQ_DEPTH, ALQ_POP, WB_ALQ_CTL, WB_ALQ_HEAD, WB_ALQ_OVF};
 
 /// One entry of a master's alarm queue.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,0 +1,434 @@
+//! # rx_word — word assembler, parity check, slot counter (protocol §4, §5, §7)
+//!
+//! Purpose: the receive half of the paper's slot shift register. It collects
+//! the code groups of a packet (from [`crate::line::rx_framer`]) into words,
+//! decodes them (4B/5B), checks both odd parities, counts words into header
+//! words and slots, checks the header (type, slot count), compares the slot
+//! number with the node's address (DIP switches → `i_address`) and tells the
+//! framer when the packet ends: after its last word, or at the third idle
+//! group in a row (a packet cut short upstream: the word in progress and the
+//! rest are not received; one line-bit error touches at most two groups, so
+//! it costs a word, never the packet).
+//!
+//! Parameters (refused at build when invalid): `ext` — extended-alarm words
+//! of 6 groups instead of 5 (protocol §6).
+//!
+//! | port | dir | width | clock domain | meaning |
+//! |---|---|---|---|---|
+//! | `clock` | in | 1 | — | core clock |
+//! | `i_start` | in | 1 | clock | packet start (J K found) |
+//! | `i_gvalid` | in | 1 | clock | `i_group` is valid |
+//! | `i_group` | in | 5 | clock | code group |
+//! | `i_idle` | in | 1 | clock | `i_group` is the idle group 11111 (from [`crate::line::rx_framer`]'s register) |
+//! | `i_slots_m1` | in | 12 | static | configured slot count − 1 |
+//! | `i_address` | in | 12 | static | node address (home slot) |
+//! | `o_end` | out | 1 | clock | packet over (to the framer's `i_end`) |
+//! | `o_wvalid` | out | 1 | clock | a word is complete |
+//! | `o_kind` | out | 2 | clock | 0 H0, 1 H1, 2 slot |
+//! | `o_slot` | out | 12 | clock | slot number (when `o_kind` = 2) |
+//! | `o_data` | out | 16 | clock | data bits |
+//! | `o_alive`, `o_alarm` | out | 1 | clock | flag bits |
+//! | `o_reason` | out | 4 | clock | reason nibble (ext only, else 0) |
+//! | `o_ok` | out | 1 | clock | all groups data, both parities odd |
+//! | `o_compl` | out | 1 | clock | its 16 data bits are the complement of the previous word's (a TST's H1 = NOT H0, protocol §9; meaningful for a good word whose predecessor in the packet was good) |
+//! | `o_void` | out | 1 | clock | all groups S (VOID word) |
+//! | `o_marked` | out | 1 | clock | bad, its last group T: a forwarder marked it (damaged on an earlier fibre, protocol §4) |
+//! | `o_own` | out | 1 | clock | slot word of `i_address` |
+//! | `o_hdr_bad` | out | 1 | clock | DATA header rejected; packet dropped |
+//! | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST) |
+//!
+//! Latency: outputs are registered, one clock after the word's last group;
+//! the word's fields (`o_kind` … `o_ptype`) are the decoder's own registers,
+//! not copies: they hold from `o_wvalid` until the next group arrives (on a
+//! line at least 5 bit times later), and a consumer takes them before that
+//! (issue 21: no second copy of a word in the slave);
+//! `o_end` and `o_hdr_bad` one clock later (the header is checked on the
+//! registered word).
+//!
+//! ```text
+//! i_start   _/‾\__________________________________________________
+//! i_gvalid  _____/‾\_/‾\_/‾\_/‾\_/‾\___ ... _/‾\_/‾\ ... _/‾\_______
+//!                 H0 (5 groups)              H1        last slot
+//! o_wvalid  _______________________/‾\_______/‾\______ ... __/‾\____
+//! o_kind                            0         1               2
+//! o_end     _____________________________________________ ... /‾\____
+//! ```
+
+use crate::line::dec5b4b::Dec5b4b;
+use rust_hdl::prelude::*;
+use std::collections::BTreeMap;
+
+/// Word assembler and checker.
+#[derive(LogicBlock)]
+pub struct RxWord {
+    /// Core clock.
+    pub clock: Signal<In, Clock>,
+    /// Packet start.
+    pub i_start: Signal<In, Bit>,
+    /// Group valid.
+    pub i_gvalid: Signal<In, Bit>,
+    /// Code group.
+    pub i_group: Signal<In, Bits<5>>,
+    /// The group is an idle.
+    pub i_idle: Signal<In, Bit>,
+    /// Slot count − 1.
+    pub i_slots_m1: Signal<In, Bits<12>>,
+    /// Node address.
+    pub i_address: Signal<In, Bits<12>>,
+    /// End of packet.
+    pub o_end: Signal<Out, Bit>,
+    /// Word complete.
+    pub o_wvalid: Signal<Out, Bit>,
+    /// 0 H0, 1 H1, 2 slot.
+    pub o_kind: Signal<Out, Bits<2>>,
+    /// Slot number.
+    pub o_slot: Signal<Out, Bits<12>>,
+    /// Data.
+    pub o_data: Signal<Out, Bits<16>>,
+    /// Alive bit.
+    pub o_alive: Signal<Out, Bit>,
+    /// Alarm bit.
+    pub o_alarm: Signal<Out, Bit>,
+    /// Reason nibble (ext).
+    pub o_reason: Signal<Out, Bits<4>>,
+    /// Word good.
+    pub o_ok: Signal<Out, Bit>,
+    /// Data bits = NOT the previous word's.
+    pub o_compl: Signal<Out, Bit>,
+    /// VOID word.
+    pub o_void: Signal<Out, Bit>,
+    /// Marked word (last group T).
+    pub o_marked: Signal<Out, Bit>,
+    /// Own slot.
+    pub o_own: Signal<Out, Bit>,
+    /// Header rejected.
+    pub o_hdr_bad: Signal<Out, Bit>,
+    /// Packet type of the current packet.
+    pub o_ptype: Signal<Out, Bits<2>>,
+    dec: Dec5b4b,
+    // The nibble moved to bits 15:12 (a wiring table: rust-hdl has no
+    // lint-clean zero-extending concatenation).
+    nib_top: ROM<Bits<16>, 4>,
+    lo_top: ROM<Bits<16>, 2>,
+    hi_top: ROM<Bits<16>, 2>,
+    last_group: Constant<Bits<3>>,
+    // Word being assembled.
+    gcount: DFF<Bits<3>>,
+    idles: DFF<Bits<2>>,
+    data: DFF<Bits<16>>,
+    reason: DFF<Bits<4>>,
+    alarm0: DFF<Bit>,
+    alive0: DFF<Bit>,
+    par_a: DFF<Bit>,
+    par_b: DFF<Bit>,
+    all_data: DFF<Bit>,
+    all_s: DFF<Bit>,
+    // Packet state.
+    active: DFF<Bit>,
+    wcount: DFF<Bits<2>>,
+    slot: DFF<Bits<12>>,
+    ptype: DFF<Bits<2>>,
+    // Registered outputs.
+    // A word was published in the clock before: check its header.
+    check: DFF<Bit>,
+    end_r: DFF<Bit>,
+    wvalid_r: DFF<Bit>,
+    kind_r: DFF<Bits<2>>,
+    adv: DFF<Bit>,
+    reason_r: DFF<Bits<4>>,
+    ok_r: DFF<Bit>,
+    compl: DFF<Bit>,
+    compl_r: DFF<Bit>,
+    void_r: DFF<Bit>,
+    marked_r: DFF<Bit>,
+    own_r: DFF<Bit>,
+    hdr_bad_r: DFF<Bit>,
+    // Combinational helpers.
+    nib: Signal<Local, Bits<4>>,
+    w_data: Signal<Local, Bits<16>>,
+    w_pa: Signal<Local, Bit>,
+    w_pb: Signal<Local, Bit>,
+    w_all_data: Signal<Local, Bit>,
+    w_all_s: Signal<Local, Bit>,
+    w_ok: Signal<Local, Bit>,
+    w_compl: Signal<Local, Bit>,
+}
+
+/// The word format a receiver reads (protocol §6): the parameter of
+/// [`RxWord`], [`crate::line::monitor::Monitor`] and [`crate::node::port_rx::PortRx`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WordFormat {
+    /// 25-bit words (five code groups): the basic variant.
+    Basic,
+    /// 30-bit words with a reason nibble (six code groups): the
+    /// extended-alarm variant.
+    ExtendedAlarm,
+}
+
+impl RxWord {
+    /// A word assembler for 25-bit words ([`WordFormat::Basic`]) or 30-bit
+    /// extended-alarm words ([`WordFormat::ExtendedAlarm`]).
+    pub fn new(format: WordFormat) -> Self {
+        let ext = format == WordFormat::ExtendedAlarm;
+        Self {
+            clock: Default::default(),
+            i_start: Default::default(),
+            i_gvalid: Default::default(),
+            i_group: Default::default(),
+            i_idle: Default::default(),
+            i_slots_m1: Default::default(),
+            i_address: Default::default(),
+            o_end: Default::default(),
+            o_wvalid: Default::default(),
+            o_kind: Default::default(),
+            o_slot: Default::default(),
+            o_data: Default::default(),
+            o_alive: Default::default(),
+            o_alarm: Default::default(),
+            o_reason: Default::default(),
+            o_ok: Default::default(),
+            o_compl: Default::default(),
+            o_void: Default::default(),
+            o_marked: Default::default(),
+            o_own: Default::default(),
+            o_hdr_bad: Default::default(),
+            o_ptype: Default::default(),
+            dec: Default::default(),
+            nib_top: ROM::new(
+                (0..16u64)
+                    .map(|n| (n.to_bits(), (n << 12).to_bits()))
+                    .collect::<BTreeMap<Bits<4>, Bits<16>>>(),
+            ),
+            lo_top: ROM::new(
+                (0..4u64)
+                    .map(|n| (n.to_bits(), (n << 14).to_bits()))
+                    .collect::<BTreeMap<Bits<2>, Bits<16>>>(),
+            ),
+            hi_top: ROM::new(
+                (0..4u64)
+                    .map(|n| (n.to_bits(), (n << 14).to_bits()))
+                    .collect::<BTreeMap<Bits<2>, Bits<16>>>(),
+            ),
+            last_group: Constant::new(if ext { 5u64 } else { 4u64 }.to_bits()),
+            gcount: Default::default(),
+            idles: Default::default(),
+            data: Default::default(),
+            reason: Default::default(),
+            alarm0: Default::default(),
+            alive0: Default::default(),
+            par_a: Default::default(),
+            par_b: Default::default(),
+            all_data: Default::default(),
+            all_s: Default::default(),
+            active: Default::default(),
+            wcount: Default::default(),
+            slot: Default::default(),
+            ptype: Default::default(),
+            check: Default::default(),
+            end_r: Default::default(),
+            wvalid_r: Default::default(),
+            kind_r: Default::default(),
+            adv: Default::default(),
+            reason_r: Default::default(),
+            ok_r: Default::default(),
+            compl: Default::default(),
+            compl_r: Default::default(),
+            void_r: Default::default(),
+            marked_r: Default::default(),
+            own_r: Default::default(),
+            hdr_bad_r: Default::default(),
+            nib: Default::default(),
+            w_data: Default::default(),
+            w_pa: Default::default(),
+            w_pb: Default::default(),
+            w_all_data: Default::default(),
+            w_all_s: Default::default(),
+            w_ok: Default::default(),
+            w_compl: Default::default(),
+        }
+    }
+}
+
+impl Logic for RxWord {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, gcount, data, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
+            active, wcount, slot, ptype, check, end_r, wvalid_r, kind_r, adv, reason_r, ok_r,
+            compl, compl_r, void_r, marked_r, own_r, hdr_bad_r, idles
+        );
+        self.dec.i_code.next = self.i_group.val();
+        self.nib.next = self.dec.o_nibble.val();
+        self.nib_top.address.next = self.dec.o_nibble.val();
+        // The word including this group (protocol §4): N0 = {ALARM, ALIVE,
+        // D1, D0}, [ext: REASON], D[5:2], D[9:6], D[13:10], last = {PA, D15,
+        // D14, PB}. Data bits are shifted in from the top.
+        self.lo_top.address.next = self.dec.o_nibble.val().get_bits::<2>(0);
+        self.hi_top.address.next = self.dec.o_nibble.val().get_bits::<2>(1);
+        self.w_data.next = (self.data.q.val() >> 4) | self.nib_top.data.val();
+        if self.gcount.q.val() == 0 {
+            self.w_data.next = (self.data.q.val() >> 2) | self.lo_top.data.val();
+        }
+        if self.gcount.q.val() == self.last_group.val() {
+            self.w_data.next = (self.data.q.val() >> 2) | self.hi_top.data.val();
+        }
+        if (self.gcount.q.val() == 1) & (self.last_group.val() == 5) {
+            self.w_data.next = self.data.q.val();
+        }
+        self.w_pa.next = self.par_a.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
+        self.w_pb.next = self.par_b.q.val()
+            ^ self.nib.val().get_bit(2)
+            ^ self.nib.val().get_bit(1)
+            ^ self.nib.val().get_bit(0);
+        self.w_all_data.next = self.all_data.q.val() & self.dec.o_data.val();
+        self.w_all_s.next = self.all_s.q.val() & self.dec.o_s.val();
+        self.w_ok.next = self.w_all_data.val() & self.w_pa.val() & self.w_pb.val();
+        // The bits a group shifts out of the bottom of `data` are the
+        // previous word's at the places this group's bits take: comparing
+        // them group by group tells whether this word's data is the
+        // complement of the previous one's, without a copy of that word.
+        self.w_compl.next =
+            self.compl.q.val() & (self.nib.val() == !self.data.q.val().get_bits::<4>(0));
+        if self.gcount.q.val() == 0 {
+            self.w_compl.next =
+                self.nib.val().get_bits::<2>(0) == !self.data.q.val().get_bits::<2>(0);
+        }
+        if self.gcount.q.val() == self.last_group.val() {
+            self.w_compl.next = self.compl.q.val()
+                & (self.nib.val().get_bits::<2>(1) == !self.data.q.val().get_bits::<2>(0));
+        }
+        if (self.gcount.q.val() == 1) & (self.last_group.val() == 5) {
+            self.w_compl.next = self.compl.q.val();
+        }
+
+        self.end_r.d.next = false;
+        self.wvalid_r.d.next = false;
+        self.hdr_bad_r.d.next = false;
+        self.check.d.next = false;
+        if self.i_start.val() {
+            self.active.d.next = true;
+            self.gcount.d.next = 0.into();
+            self.wcount.d.next = 0.into();
+            self.slot.d.next = 0.into();
+            self.adv.d.next = false;
+            self.ptype.d.next = 0.into();
+            self.par_a.d.next = false;
+            self.par_b.d.next = false;
+            self.all_data.d.next = true;
+            self.all_s.d.next = true;
+            self.idles.d.next = 0.into();
+        } else if self.i_gvalid.val()
+            & self.active.q.val()
+            & self.i_idle.val()
+            & (self.idles.q.val() == 2)
+        {
+            // The third idle group in a row: the packet was cut short (a
+            // break upstream); the word in progress and the rest are not
+            // received. (One line-bit error touches at most two groups.)
+            self.end_r.d.next = true;
+            self.active.d.next = false;
+            self.idles.d.next = 0.into();
+        } else if self.i_gvalid.val() & self.active.q.val() {
+            self.idles.d.next = 0.into();
+            if self.i_idle.val() {
+                self.idles.d.next = self.idles.q.val() + 1;
+            }
+            self.data.d.next = self.w_data.val();
+            if self.gcount.q.val() == 0 {
+                self.alarm0.d.next = self.nib.val().get_bit(3);
+                self.alive0.d.next = self.nib.val().get_bit(2);
+                // The slot number moves on as the next slot word begins,
+                // so the one just published stays on `o_slot` until then.
+                if self.adv.q.val() {
+                    self.slot.d.next = self.slot.q.val() + 1;
+                    self.adv.d.next = false;
+                }
+            }
+            if self.gcount.q.val() == 1 {
+                self.reason.d.next = self.nib.val();
+            }
+            self.par_a.d.next = self.w_pa.val();
+            self.par_b.d.next = self.w_pb.val();
+            self.all_data.d.next = self.w_all_data.val();
+            self.all_s.d.next = self.w_all_s.val();
+            self.compl.d.next = self.w_compl.val();
+            self.gcount.d.next = self.gcount.q.val() + 1;
+            if self.gcount.q.val() == self.last_group.val() {
+                // Word complete: publish it and start the next one.
+                self.gcount.d.next = 0.into();
+                self.par_a.d.next = false;
+                self.par_b.d.next = false;
+                self.all_data.d.next = true;
+                self.all_s.d.next = true;
+                self.wvalid_r.d.next = true;
+                self.kind_r.d.next = self.wcount.q.val();
+                self.reason_r.d.next = 0.into();
+                if self.last_group.val() == 5 {
+                    self.reason_r.d.next = self.reason.q.val();
+                }
+                self.ok_r.d.next = self.w_ok.val();
+                self.compl_r.d.next = self.w_compl.val();
+                self.void_r.d.next = self.w_all_s.val();
+                // The forwarder's mark, T (merkur_model::line::CODE_T).
+                self.marked_r.d.next = self.i_group.val() == 0b01101;
+                self.own_r.d.next =
+                    (self.wcount.q.val() == 2) & (self.slot.q.val() == self.i_address.val());
+                self.check.d.next = true;
+                if self.wcount.q.val() == 0 {
+                    // H0: its type; checked the next clock.
+                    self.wcount.d.next = 1.into();
+                    self.ptype.d.next = self.w_data.val().get_bits::<2>(14);
+                } else if self.wcount.q.val() == 1 {
+                    self.wcount.d.next = 2.into();
+                } else {
+                    self.adv.d.next = true;
+                }
+            }
+        }
+        // The word published in the clock before, checked (issue 20: a
+        // word's decode and what its header decides are a clock apart; the
+        // next group is at least 5 clocks away).
+        if self.check.q.val() {
+            if self.kind_r.q.val() == 0 {
+                // H0: type and slot count.
+                if !self.ok_r.q.val()
+                    | self.alarm0.q.val()
+                    | ((self.data.q.val().get_bits::<2>(14) == 0)
+                        & (self.data.q.val().get_bits::<12>(0) != self.i_slots_m1.val()))
+                {
+                    self.hdr_bad_r.d.next = true;
+                    self.end_r.d.next = true;
+                    self.active.d.next = false;
+                }
+            } else if self.kind_r.q.val() == 1 {
+                // H1; SEC and TST packets end here.
+                if !self.ok_r.q.val() | self.alarm0.q.val() {
+                    self.hdr_bad_r.d.next = self.ptype.q.val() == 0;
+                    self.end_r.d.next = true;
+                    self.active.d.next = false;
+                } else if self.ptype.q.val() != 0 {
+                    self.end_r.d.next = true;
+                    self.active.d.next = false;
+                }
+            } else if self.slot.q.val() == self.i_slots_m1.val() {
+                self.end_r.d.next = true;
+                self.active.d.next = false;
+            }
+        }
+        self.o_end.next = self.end_r.q.val();
+        self.o_wvalid.next = self.wvalid_r.q.val();
+        self.o_kind.next = self.kind_r.q.val();
+        self.o_slot.next = self.slot.q.val();
+        self.o_data.next = self.data.q.val();
+        self.o_alive.next = self.alive0.q.val();
+        self.o_alarm.next = self.alarm0.q.val();
+        self.o_reason.next = self.reason_r.q.val();
+        self.o_ok.next = self.ok_r.q.val();
+        self.o_compl.next = self.compl_r.q.val();
+        self.o_void.next = self.void_r.q.val();
+        self.o_marked.next = self.marked_r.q.val();
+        self.o_own.next = self.own_r.q.val();
+        self.o_hdr_bad.next = self.hdr_bad_r.q.val();
+        self.o_ptype.next = self.ptype.q.val();
+    }
+}
