@@ -14,7 +14,7 @@
 //!
 //! The RMM behind each station is any [`StationHw`]: the reference model
 //! ([`crate::rmm::Rmm`]) for golden traces, the Verilated RTL in the
-//! testbenches. The MAC simplifies 802.4 as docs/protocol.md §17 lists.
+//! simulation library (`merkur-sim`). The MAC simplifies 802.4 as docs/protocol.md §17 lists.
 
 use crate::rmm::{self, ev, sym, Rmm, RmmConfig, RmmIn, RmmOut};
 use crate::tbconfig::{ChanFault, TbConfig, TbEvent};

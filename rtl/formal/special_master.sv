@@ -19,7 +19,7 @@
 // a frame has come back) is not covered here: a bounded search to a
 // returned frame (about 130 clocks of the whole special master) runs the
 // solver out of memory (Boolector in WebAssembly: 4 GiB). Its trigger is
-// shown in simulation instead: testbenches/tests/special_master.rs,
+// shown in simulation instead: sim/tests/special_master.rs,
 // `the_cs_timeout_fires_on_time` (failsafe CS + 3 clocks after the last
 // returned header word).
 module special_master_props (

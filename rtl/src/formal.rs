@@ -17,8 +17,8 @@
 //! with Yosys' `expose` ([`Proof::expose`]), the block itself is not changed.
 //!
 //! The runner (SymbiYosys with the Boolector solver, both installed by
-//! `scripts/install-tools.sh --synth`) is `merkur_testbenches::formal`;
-//! `merkur prove` and `cargo test` (testbenches/tests/formal.rs) run every
+//! `scripts/install-tools.sh --synth`) is `merkur_sim::formal`;
+//! `merkur prove` and `cargo test` (sim/tests/formal.rs) run every
 //! proof. docs/verification.md lists the properties in words.
 
 use crate::emit::verilog::{block_verilog, rename_top};

@@ -140,7 +140,7 @@ pub fn readable(v: &str) -> String {
 
 /// [`readable`] without the literal sizing of [`crate::emit::literals`]: the
 /// registers, connections, names and headings only. The equivalence test
-/// proves the two texts the same design (testbenches/tests/literals.rs).
+/// proves the two texts the same design (sim/tests/literals.rs).
 pub fn registers_and_names(v: &str) -> String {
     let mods = modules(v);
     let dffs: HashMap<&str, Dff> = mods

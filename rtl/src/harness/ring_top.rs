@@ -88,7 +88,7 @@
 //! fibre index, or for the packed fields a group of them: the driver polls
 //! every node's mode and every fibre's frame state, and each read costs
 //! the simulator a whole evaluation pass) are named in this file and used
-//! by name by the driver (`testbenches/src/ring_sim.rs`). A user
+//! by name by the driver (`sim/src/ring_sim.rs`). A user
 //! request is raised at once (`now`) or when the node's pacing monitor (its
 //! PI fibre; the special master's PO) sees the end of the DATA frame with
 //! the request's CYC, i.e. before the next frame; a sensor sees the value

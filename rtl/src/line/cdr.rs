@@ -13,7 +13,7 @@
 //! it measures 8k − 3 … 8k + 4 samples: the sender's retimer
 //! ([`crate::line::retime`]) moves an edge by at most 2 samples (one output half
 //! clock), which leaves a sample of margin. Tested
-//! (`testbenches/tests/cdr.rs`): 10^6 bits at ±2000 ppm relative offset with
+//! (`sim/tests/cdr.rs`): 10^6 bits at ±2000 ppm relative offset with
 //! every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
 //! fail. At most one bit is recovered per clock.
 //!
@@ -22,7 +22,7 @@
 //! of zeros. Legal streams toggle at least every 4 bit times, but one
 //! line-bit error inverts two adjacent code bits and can leave up to 6 zero
 //! code bits inside a packet (an edge interval of 7 bit times; tested,
-//! `testbenches/tests/cdr.rs`): that must cost a word, not mute the receiver
+//! `sim/tests/cdr.rs`): that must cost a word, not mute the receiver
 //! for the rest of the frame (protocol §5). An interval of up to 8 bit
 //! times is read whole. Loss of signal: no transition for [`LOS_SAMPLES`] =
 //! 256 samples (32 bit times) raises `o_los` until the next transition.

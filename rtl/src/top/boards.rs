@@ -3,7 +3,7 @@
 //! Purpose: the pin assignment of every board merkur supports, from which
 //! the committed files in `constraints/` are generated (`merkur synth`
 //! writes the same text beside each build; the test
-//! `testbenches/tests/boards.rs` fails when a committed file drifts from
+//! `sim/tests/boards.rs` fails when a committed file drifts from
 //! [`constraints_file`], when a ball is used twice, or when a port of the
 //! board's top is left unconstrained).
 //!

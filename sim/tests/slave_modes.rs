@@ -1,0 +1,241 @@
+//! One slave node's fault handling in Verilator (protocol §9–§12): its PI
+//! goes dark → it wraps to WU (Table 1 row 2), takes the frame from SI,
+//! sends TST on SO and a RECONFIG(WU) alarm in its slot; the partner's TST
+//! with ACK and then a DATA frame on PI → it reintegrates (mode N,
+//! RECONFIG(N)); with the ring known wrapped (RWC in the headers) a dark PI
+//! is a second fault → failsafe, FS set in the headers it forwards and its
+//! slot no longer written.
+
+use merkur_model::line::{nrzi_encode, push_group, Word, CODE_I};
+use merkur_model::ring::{Frame, Header, HeaderRx, Mode, Slot};
+use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor, node::slave::Slave};
+use merkur_sim::stim::{frame_code, tst_code, PacketReader, Seen};
+use merkur_sim::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};
+
+const SLOTS: usize = 4;
+const ADDRESS: u64 = 2;
+const PERIOD: usize = 300;
+
+/// What one port carries during one cycle period.
+#[derive(Clone, Copy)]
+enum Seg {
+    Frame { rwc: bool },
+    Idle,
+    Dark,
+    Tst { ack: bool },
+}
+
+fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
+    let start = code.len();
+    match seg {
+        Seg::Frame { rwc } => {
+            let f = Frame {
+                hdr: HeaderRx::Ok(Header {
+                    rwc,
+                    cyc: cycle & 7,
+                    hop: 1,
+                    ..Header::default()
+                }),
+                hdr_bad: (false, false),
+                hdr_marked: false,
+                words: (0..SLOTS)
+                    .map(|s| {
+                        Slot::Data(Word {
+                            data: 0x1000 * s as u16 + cycle as u16,
+                            alive: cycle % 2 == 1,
+                            ..Word::default()
+                        })
+                    })
+                    .collect(),
+            };
+            frame_code(code, &f, SLOTS, rng);
+        }
+        Seg::Tst { ack } => {
+            while code.len() < start + PERIOD - 65 {
+                tst_code(code, ack, 3);
+            }
+        }
+        Seg::Idle | Seg::Dark => {}
+    }
+    let fill = if matches!(seg, Seg::Dark) { 0 } else { 1 };
+    while code.len() < start + PERIOD {
+        code.push(fill);
+    }
+}
+
+#[test]
+fn wrap_reintegrate_and_failsafe() {
+    let seed = Rng::seed(0x5a7e);
+    let mut rng = Rng::new(seed);
+    use Seg::*;
+    // (PI, SI) per cycle period.
+    let mut plan: Vec<(Seg, Seg)> = vec![];
+    plan.extend(std::iter::repeat((Frame { rwc: false }, Idle)).take(5)); // 0..4 healthy
+    plan.extend(std::iter::repeat((Dark, Frame { rwc: false })).take(5)); // 5..9 PI broken: frames come back on SI
+    plan.extend(std::iter::repeat((Tst { ack: true }, Frame { rwc: false })).take(2)); // 10,11 repaired: partner's TST
+    plan.extend(std::iter::repeat((Frame { rwc: false }, Idle)).take(5)); // 12..16 unwrapped
+    plan.extend(std::iter::repeat((Frame { rwc: true }, Idle)).take(3)); // 17..19 ring wrapped elsewhere
+    plan.extend(std::iter::repeat((Dark, Frame { rwc: true })).take(3)); // 20..22 second fault
+    let (mut pi_code, mut si_code) = (vec![], vec![]);
+    (0..8).for_each(|_| {
+        push_group(&mut pi_code, CODE_I);
+        push_group(&mut si_code, CODE_I);
+    });
+    for (c, (pi, si)) in plan.iter().enumerate() {
+        segment(&mut pi_code, *pi, c as u8, &mut rng);
+        segment(&mut si_code, *si, c as u8, &mut rng);
+    }
+    let pi = sample_words(&line_samples(
+        &nrzi_encode(&pi_code, &mut 0),
+        400.0,
+        1.3,
+        0.4,
+        &mut rng,
+    ));
+    let si = sample_words(&line_samples(
+        &nrzi_encode(&si_code, &mut 0),
+        -300.0,
+        0.6,
+        0.4,
+        &mut rng,
+    ));
+    let n = pi.len().min(si.len());
+
+    let mut s = Model::build(&block_verilog(Slave::new())).unwrap();
+    let mut mpo = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
+    let mut mso = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
+    let p = |m: &Model, x: &str| m.port(x);
+    for (name, v) in [
+        ("i_address", ADDRESS),
+        ("i_slots_m1", SLOTS as u64 - 1),
+        ("i_cs_timeout", 4 * PERIOD as u64 * 2),
+        ("i_sensor_data", 0xabcd),
+    ] {
+        let i = p(&s, name);
+        s.set(i, v);
+    }
+    for m in [&mut mpo, &mut mso] {
+        let i = p(m, "i_slots_m1");
+        m.set(i, SLOTS as u64 - 1);
+    }
+    let (clk, ipi, isi, opo, oso, omode, ofs) = (
+        p(&s, "clock"),
+        p(&s, "i_pi"),
+        p(&s, "i_si"),
+        p(&s, "o_po"),
+        p(&s, "o_so"),
+        p(&s, "o_mode"),
+        p(&s, "o_failsafe"),
+    );
+    let (pclk, psmp, sclk, ssmp) = (
+        p(&mpo, "clock"),
+        p(&mpo, "i_samples"),
+        p(&mso, "clock"),
+        p(&mso, "i_samples"),
+    );
+    let mut rpo = PacketReader::new(&mpo);
+    let mut rso = PacketReader::new(&mso);
+    let mut modes = vec![];
+    let mut fs_at = None;
+    for t in 0..n {
+        s.set(ipi, pi[t]);
+        s.set(isi, si[t]);
+        s.tick(clk);
+        let mode = s.get(omode);
+        if modes.last().map(|&(m, _)| m) != Some(mode) {
+            modes.push((mode, t / 2));
+        }
+        if fs_at.is_none() && s.get(ofs) == 1 {
+            fs_at = Some(t / 2);
+        }
+        mpo.set(psmp, pair_to_samples(s.get(opo)));
+        mpo.tick(pclk);
+        rpo.sample(&mpo);
+        mso.set(ssmp, pair_to_samples(s.get(oso)));
+        mso.tick(sclk);
+        rso.sample(&mso);
+    }
+    let ctx = format!("seed {seed} (MERKUR_SEED)");
+    let bit = |cycle: usize| 40 + cycle * PERIOD;
+    // Mode sequence: N, WU (when PI went dark), N (after the repair), WU
+    // again (second fault, with failsafe).
+    let seq: Vec<u64> = modes.iter().map(|&(m, _)| m).collect();
+    let (n, wu) = (Mode::N.code() as u64, Mode::Wu.code() as u64);
+    assert_eq!(seq, vec![n, wu, n, wu], "{ctx}: mode sequence {modes:?}");
+    let wrap_at = modes[1].1;
+    assert!(
+        wrap_at > bit(5) && wrap_at < bit(5) + 40,
+        "{ctx}: wrapped {} bit times after PI went dark",
+        wrap_at as i64 - bit(5) as i64
+    );
+    let unwrap_at = modes[2].1;
+    assert!(
+        unwrap_at >= bit(12) && unwrap_at < bit(12) + 80,
+        "{ctx}: reintegrated at bit {unwrap_at}, first DATA on PI at {}",
+        bit(12)
+    );
+    let fs = fs_at.expect("failsafe after the second fault");
+    assert!(
+        fs > bit(20) && fs < bit(20) + 40,
+        "{ctx}: failsafe at bit {fs}"
+    );
+
+    // SO: TST packets (type 10) while wrapped, ACK once PI carries the partner's TST.
+    let tst: Vec<(u16, u16)> = rso
+        .packets
+        .iter()
+        .filter(|p| p.0.len() == 2 && p.0[0] >> 14 == 2)
+        .map(|p| (p.0[0], p.0[1]))
+        .collect();
+    assert!(tst.len() > 15, "{ctx}: TST packets on SO ({})", tst.len());
+    let bad: Vec<_> = tst
+        .iter()
+        .filter(|&&(h0, h1)| !(h1 == !h0 && h0 & 0xfff == ADDRESS as u16))
+        .collect();
+    assert!(bad.len() <= 1, "{ctx}: TST format: {bad:x?}");
+    assert!(
+        tst.iter().any(|&(h0, _)| h0 & 0x1000 == 0) && tst.iter().any(|&(h0, _)| h0 & 0x1000 != 0),
+        "{ctx}: ACK 0 then 1"
+    );
+
+    // PO: the slave's own slot (2) carries RECONFIG(WU) = 0x5000 (SEQ 0)
+    // after the wrap, RECONFIG(N) = 0x4800 (SEQ 1, the next alarm) after
+    // the reintegration, and otherwise its sensor value; after failsafe, FS
+    // in H0 and the slot left as it came. (Nothing goes round this bench,
+    // so no alarm is read back: each is repeated, with its SEQ, every other
+    // frame until the next replaces it, protocol §11.)
+    let own: Vec<&Seen> = rpo
+        .packets
+        .iter()
+        .filter(|p| p.1.len() == SLOTS)
+        .map(|p| &p.1[2])
+        .collect();
+    let pos = |w: u16| {
+        own.iter()
+            .position(|s| matches!(s, Seen::Word(d, _, true) if *d == w))
+    };
+    let wu = pos(0x5000).unwrap_or_else(|| panic!("{ctx}: RECONFIG(WU) alarm on PO: {own:?}"));
+    let n_ = pos(0x4800).unwrap_or_else(|| panic!("{ctx}: RECONFIG(N) alarm on PO: {own:?}"));
+    assert!(
+        pos(0x4000).is_none() && pos(0x5800).is_none(),
+        "{ctx}: SEQ: {own:?}"
+    );
+    assert!(wu < n_, "{ctx}: WU alarm before N alarm");
+    assert!(
+        matches!(own[wu + 1], Seen::Word(0xabcd, _, false)),
+        "{ctx}: alternation: data after the alarm"
+    );
+    let fs_frames: Vec<_> = rpo
+        .packets
+        .iter()
+        .filter(|p| p.0.first().is_some_and(|h0| h0 & 0x2000 != 0))
+        .collect();
+    assert!(!fs_frames.is_empty(), "{ctx}: FS set in forwarded headers");
+    for f in &fs_frames {
+        assert!(
+            !matches!(f.1.get(2), Some(Seen::Word(0xabcd, _, _))),
+            "{ctx}: failsafe node still writes its slot"
+        );
+    }
+}
