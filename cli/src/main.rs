@@ -203,7 +203,7 @@ enum Cmd {
         /// ECP5 speed grade: 6, 7 or 8 (default 8; 6 with --board ulx3s, the board's parts).
         #[arg(long, value_name = "GRADE")]
         speed: Option<u8>,
-        /// Board whose pins (constraints/) a slave gets: ice40-hx8k-breakout (the default on
+        /// Board whose pins (gen/constraints/) a slave gets: ice40-hx8k-breakout (the default on
         /// ice40-hx8k) or ulx3s (ecp5-85, ecp5-45: the board top with its PLL). Masters are
         /// placed freely.
         #[arg(long, value_name = "BOARD")]

@@ -463,7 +463,7 @@ fn synth_makes_a_ring_of_bitstreams() {
     // The pins are the committed board file's.
     assert_eq!(
         std::fs::read_to_string(out.join("node1-slave/ice40-hx8k-breakout.pcf")).unwrap(),
-        std::fs::read_to_string(root().join("constraints/ice40-hx8k-breakout.pcf")).unwrap()
+        std::fs::read_to_string(root().join("gen/constraints/ice40-hx8k-breakout.pcf")).unwrap()
     );
 
     let _ = std::fs::remove_dir_all(&dir);

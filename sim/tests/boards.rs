@@ -14,13 +14,13 @@ use std::collections::BTreeSet;
 #[test]
 fn committed_constraints_match_the_generator() {
     for b in boards::all() {
-        let path = repo_root().join("constraints").join(b.file);
+        let path = repo_root().join("gen/constraints").join(b.file);
         let committed =
             std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert!(
             committed == boards::constraints_file(&b),
             "{} drifted from rtl/src/top/boards.rs; regenerate it: \
-             cargo run -p merkur-sim --example constraints",
+             cargo run -p merkur-sim --example gen",
             path.display()
         );
     }

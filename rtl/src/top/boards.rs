@@ -1,7 +1,7 @@
 //! # boards — the one source of pin truth
 //!
 //! Purpose: the pin assignment of every board merkur supports, from which
-//! the committed files in `constraints/` are generated (`merkur synth`
+//! the committed files in `gen/constraints/` are generated (`merkur synth`
 //! writes the same text beside each build; the test
 //! `sim/tests/boards.rs` fails when a committed file drifts from
 //! [`constraints_file`], when a ball is used twice, or when a port of the
@@ -9,9 +9,9 @@
 //!
 //! | board | file | top | device |
 //! |---|---|---|---|
-//! | `ice40-hx8k-breakout` | `constraints/ice40-hx8k-breakout.pcf` | `merkur_top` of a slave ([`crate::top::synth_top`]) | iCE40-HX8K-CT256 |
-//! | `xem6010` | `constraints/xem6010.ucf` | `merkur_xem6010` ([`crate::top::xem6010`]) | XC6SLX45-2FGG484 |
-//! | `ulx3s` | `constraints/ulx3s.lpf` | `merkur_ulx3s` of a slave ([`crate::top::ulx3s`]) | LFE5U-85F (or -45F, -25F) CABGA381 |
+//! | `ice40-hx8k-breakout` | `gen/constraints/ice40-hx8k-breakout.pcf` | `merkur_top` of a slave ([`crate::top::synth_top`]) | iCE40-HX8K-CT256 |
+//! | `xem6010` | `gen/constraints/xem6010.ucf` | `merkur_xem6010` ([`crate::top::xem6010`]) | XC6SLX45-2FGG484 |
+//! | `ulx3s` | `gen/constraints/ulx3s.lpf` | `merkur_ulx3s` of a slave ([`crate::top::ulx3s`]) | LFE5U-85F (or -45F, -25F) CABGA381 |
 //!
 //! The iCE40 breakout has no clock the node can run on (its oscillator is
 //! 12 MHz and the node needs 2× the line rate and a 90° copy): `clk` and
@@ -36,7 +36,7 @@ pub struct Pin {
 pub struct Board {
     /// Name (`--board` / the constraints file's stem).
     pub name: &'static str,
-    /// Constraints file in `constraints/`.
+    /// Constraints file in `gen/constraints/`.
     pub file: &'static str,
     /// Top module the pins belong to.
     pub top: &'static str,

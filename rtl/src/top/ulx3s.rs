@@ -7,7 +7,7 @@
 //! sensor inputs and the diagnostic outputs on the two GPIO headers, the
 //! user requests on buttons, the diagnostic select on the DIP switch and
 //! the state on the LEDs. Pins: [`crate::top::boards::ulx3s`] (one source,
-//! `constraints/ulx3s.lpf`).
+//! `gen/constraints/ulx3s.lpf`).
 //!
 //! The PLL module `merkur_pll` is not here: `merkur synth --board ulx3s`
 //! has Project Trellis' `ecppll` compute it for the run's clock (any line

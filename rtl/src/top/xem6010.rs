@@ -202,7 +202,7 @@ endmodule
 
 /// The board top proper (FrontPanel endpoints, DCM, core).
 const TOP: &str = r#"
-// merkur_xem6010: the board top (pins: constraints/xem6010.ucf).
+// merkur_xem6010: the board top (pins: gen/constraints/xem6010.ucf).
 module merkur_xem6010(hi_in, hi_out, hi_inout, hi_aa, hi_muxsel, sys_clk, led, pi, si, po, so);
     input wire [7:0] hi_in;
     output wire [1:0] hi_out;

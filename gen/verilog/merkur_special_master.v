@@ -1,0 +1,9267 @@
+// merkur_special_master.v — the MERKUR special master (the ring's clock base; also a backup clock base)
+//
+// Generated Verilog; do not edit. Generator: merkur-rtl 0.1.0 (rust-hdl 0.46.0),
+// from rtl/src/node/special_master.rs. `cargo run -p merkur-sim --example gen` rewrites this file and
+// sim/tests/gen.rs fails when it drifts from the generator.
+//
+// Top module: merkur_special_master. Build parameters: memories for rings of up to 256 slots (`merkur verilog` sizes them to a ring of up to 4096).
+// Every other setting is a port (the port table is in the header of module merkur_special_master
+// below). Clock: `clock`, twice the line rate (100 MHz for 50 Mbit/s); the fibre
+// inputs take 4 samples per clock (quadrature DDR capture), the outputs give a DDR
+// pair (docs/protocol.md §9; `merkur_ddr_in`/`merkur_ddr_out` in rtl/src/top/synth_top.rs).
+// Lint: verilator --lint-only -Wall waivers.vlt merkur_special_master.v --top-module merkur_special_master
+
+// --------------------------------------------------------------------------
+// SpecialMaster: Special master. (rtl/src/node/special_master.rs)
+//
+// # special_master — the ring's clock base, and a backup that can become it (protocol §5, §8)
+//
+// Purpose: the one master per ring that starts every cycle, and the
+// flying special master's backups (protocol §8): with `i_prio` = 0 the
+// node is the clock base from power-up (everything below); with `i_prio`
+// = p ≥ 1 it is a **backup**: a master like [`crate::node::master`] (its
+// forwarder [`Fwd`] in master mode on OUTPUT, BSR repeated on BSS in mode
+// N, alarms through the forwarder and read back at INPUT, failsafe left at
+// a CLR header) whose clock base waits for its election. Its election
+// timer counts bit times since the last packet started on INPUT (J K, or
+// [`START_BITS`] code bits that show a DATA frame's start with one line-bit
+// error); when it reaches
+// `i_elect` ((1.5 + p) periods) while the node is armed, not in failsafe
+// and did not know the ring wrapped at its last good header, the node
+// becomes the clock base for good (`o_base`): [`TAKEOVER_LEAD_BITS`] of
+// idles on OUTPUT, then a frame every period with CYC continuing the count
+// (the last good header's + 1 + p), an empty return store, and what a
+// clock base learns from returning frames started afresh. A backup's
+// clock-base logic is this block's; the forwarder is unused (and removed
+// by synthesis) where `i_prio` is tied to 0.
+//
+// As the clock base: every
+// `i_period` bit times of its own clock it sends a DATA frame on PO (J K,
+// H0 = `{00, FS, RWC, S−1}`, H1 = `{RWP, CYC, HOP = 0}`, S slot words) and a
+// SEC packet on SO (H0 = `{01, 00, CYC[11:0]}`, H1 = NOT H0). The frame that
+// returns on PI fills the **return store**, a slot-indexed memory (S words
+// with the cycle they returned in), from which the next frame is built
+// (protocol §8: the paper's FIFO; it cannot overflow, and a slot that did
+// not return last cycle is sent as VOID). An entry is sent once: it is
+// marked not valid in the clock after its word is taken, so a slot whose
+// frame came back with a bad header, or not at all, is VOID however many
+// cycles ago it last returned (CYC has only 3 bits). Per slot of the outgoing frame:
+// - LOCAL: `{data memory, Alive}`, or an alarm in the home slot (§11, with
+//   alternation and SEQ in `D[11]`; the alarm stays in flight until the
+//   frame returns with it good, and is sent again otherwise);
+// - ACT: the returned word with the data memory's value and the actuator's
+//   Alive; a VOID is regenerated with the Alive the actuator would send;
+//   an alarm passes;
+// - otherwise the returned word; an alarm that returns after the SM already
+//   retransmitted an alarm in that slot is not sent again (VOID).
+//
+// Like every master it has the real-time database [`Mdb`] (data memory,
+// configuration, Alive check, interrupts, Wishbone host port): frames start
+// once the host has loaded the configuration and set the start bit.
+//
+// Secondary relay: a DATA frame arriving on SI (the ring is wrapped) is
+// passed on to SO like in every node in mode N, held back [`RELAY_BITS`]
+// bits until its H1 shows it is DATA; every other packet is dropped there
+// (the SM's own SEC coming back, the remains of a TST that a node in mode
+// N cut, a fragment), so nothing but frames circulates on the secondary
+// ring, a closed loop through the pass-throughs; a SEC is sent at the
+// cycle's start only when the last returned frame had RWC = 0 (protocol
+// §8).
+//
+// Failsafe (protocol §12): it enters failsafe like every node (FS in a
+// returned header without CLR, a second structural fault, its CS timeout:
+// 3.5 periods without a returned packet other than a TST, a FAILSAFE
+// alarm), and it alone brings the ring out: it keeps `hop_ref`, the HOP of
+// the last good header back with FS = 0 outside failsafe; in failsafe,
+// after 2 frames back in a row with HOP ≥ `hop_ref` (every node reached
+// again: the ring is no longer split) — and its host's FS_CLEAR where
+// FS_HOST is set or a FAILSAFE request came back — it leaves failsafe at a
+// period tick and sends CLR frames (H0's ALIVE bit) until one comes back
+// with FS = 0; if the 4th does not, it enters failsafe again.
+//
+// Switchbox: like every node ([`crate::node::slave`]; protocol §10) it wraps
+// when its INPUT or BSR fails (frames then leave on OUTPUT and return on
+// INPUT of its row of Table 1, headers carry RWC, no SEC is sent, BSS
+// carries TST), reintegrates ([`UNWRAP_LEAD_BITS`] before a period tick
+// when it is the WD end), and sends RECONFIG alarms in its home slot; after
+// every change its outputs are dark for 12 bit times ([`crate::node::sw_dark`]) —
+// but for PO between N and WU, where PO carries its own frame generator
+// before and after, so a wrap never cuts the frame it is sending (issue
+// 19) — and a packet the relay was holding from the old BSR line is
+// dropped.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
+// | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
+// | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
+// | `i_address` | in | 12 | static | home slot |
+// | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
+// | `i_period` | in | 20 | static | cycle period P in bit times (protocol §8) |
+// | `i_cs_timeout` | in | 20 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods; 2.5 + the highest backup priority in a ring with backups, §8) |
+// | `i_prio` | in | 3 | static | 0: the clock base from power-up; 1–7: a backup of this priority |
+// | `i_elect` | in | 20 | static | a backup's election time in bit times ((1.5 + `i_prio`) periods) |
+// | `i_flying` | in | 1 | static | the ring has backups: a priority-0 node that its host starts with JOIN after a restart ([`Mdb`], protocol §12) rejoins as a master and never starts a clock base (0: a ring without backups, whose special master's restart restarts the ring: its host starts it with bit 0; synthesis removes the forwarder) |
+// | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
+// | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
+// | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word; each also goes into the alarm queue, `mdb`) |
+// | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
+// | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD) |
+// | `o_failsafe` | out | 1 | clock | failsafe (left by the special master itself, protocol §12) |
+// | `o_irq_fsc` | out | 1 | clock | failsafe entered or left (one clock) |
+// | `o_perr`, `o_ferr`, `o_aerr`, `o_serr` | out | 16 | clock | error counters (`serr`: SEC packets that did not return) |
+// | `o_hop` | out | 12 | clock | HOP of the last returned frame (N − 1 in a healthy ring) |
+// | `o_cycles` | out | 16 | clock | frames sent |
+// | `o_running` | out | 1 | clock | the host started the ring |
+// | `o_base` | out | 1 | clock | the node is the clock base (priority 0, or elected) |
+//
+// Latency: a frame's J starts 1–5 bit times after its period tick; a
+// returned word is in the store ≈ 3.5 bit times after its last line bit.
+//
+// ```text
+// period     |<------------------------- P bit times ------------------------>|
+// PO         | J K | H0 | H1 | slot 0 | ... | slot S-1 |~~~~~~ idle ~~~~~~~~~~~| J K ...
+// SO         | J K | H0 | H1 |~~~~~~~~~~~~~~~~~~~~~ idle ~~~~~~~~~~~~~~~~~~~~~| J K ...
+// PI (back)        ...L later...  | J K | H0 | H1 | slot 0 | ... -> return store
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_period,i_cs_timeout,i_prio,i_elect,i_flying,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_irq1,i_irq2,i_fs_req,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_mode,o_failsafe,o_irq_fsc,o_perr,o_ferr,o_aerr,o_serr,o_hop,o_cycles,o_running,o_base);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] i_pi;
+    input wire  [3:0] i_si;
+    output reg  [1:0] o_po;
+    output reg  [1:0] o_so;
+    input wire  [11:0] i_address;
+    input wire  [11:0] i_slots_m1;
+    input wire  [19:0] i_period;
+    input wire  [19:0] i_cs_timeout;
+    input wire  [2:0] i_prio;
+    input wire  [19:0] i_elect;
+    input wire  i_flying;
+    input wire  i_wb_cyc;
+    input wire  i_wb_stb;
+    input wire  i_wb_we;
+    input wire  [13:0] i_wb_adr;
+    input wire  [15:0] i_wb_dat;
+    output reg  [15:0] o_wb_dat;
+    output reg  o_wb_ack;
+    input wire  i_irq1;
+    input wire  i_irq2;
+    input wire  i_fs_req;
+    output reg  o_irq1;
+    output reg  o_irq2;
+    output reg  o_irq_fs;
+    output reg  o_irq_rc;
+    output reg  o_alarmq;
+    output reg  [1:0] o_mode;
+    output reg  o_failsafe;
+    output reg  o_irq_fsc;
+    output reg  [15:0] o_perr;
+    output reg  [15:0] o_ferr;
+    output reg  [15:0] o_aerr;
+    output reg  [15:0] o_serr;
+    output reg  [11:0] o_hop;
+    output reg  [15:0] o_cycles;
+    output reg  o_running;
+    output reg  o_base;
+
+    // Constant declarations
+    localparam  relay_len = 7'b111110;
+    localparam  unwrap_lead = 20'h10;
+    localparam  one = 20'h1;
+    localparam  jk_bits = 10'b1100010001;
+    localparam  takeover_lead = 20'h30;
+
+    // Registers and child block ports
+    reg  [3:0] rx_in__i_samples;
+    reg  rx_in__i_tst_fail;
+    reg  rx_in__i_flush;
+    wire  rx_in__o_start;
+    wire  rx_in__o_inpkt;
+    wire  rx_in__o_wvalid;
+    wire  [1:0] rx_in__o_kind;
+    wire  [11:0] rx_in__o_slot;
+    wire  [15:0] rx_in__o_data;
+    wire  rx_in__o_alive;
+    wire  rx_in__o_alarm;
+    wire  [3:0] rx_in__o_reason;
+    wire  rx_in__o_ok;
+    wire  rx_in__o_void;
+    wire  rx_in__o_marked;
+    wire  rx_in__o_own;
+    wire  rx_in__o_hdr_bad;
+    wire  [1:0] rx_in__o_ptype;
+    wire  rx_in__o_los;
+    wire  rx_in__o_bvalid;
+    wire  rx_in__o_level;
+    wire  [1:0] rx_in__o_phase;
+    wire  rx_in__o_cf;
+    wire  rx_in__o_hard;
+    wire  rx_in__o_run;
+    wire  rx_in__o_tst;
+    wire  rx_in__o_ack;
+    reg  [3:0] rx_bsr__i_samples;
+    reg  rx_bsr__i_tst_fail;
+    reg  rx_bsr__i_flush;
+    wire  rx_bsr__o_start;
+    wire  rx_bsr__o_inpkt;
+    wire  rx_bsr__o_wvalid;
+    wire  [1:0] rx_bsr__o_kind;
+    wire  [11:0] rx_bsr__o_slot;
+    wire  [15:0] rx_bsr__o_data;
+    wire  rx_bsr__o_alive;
+    wire  rx_bsr__o_alarm;
+    wire  [3:0] rx_bsr__o_reason;
+    wire  rx_bsr__o_ok;
+    wire  rx_bsr__o_void;
+    wire  rx_bsr__o_marked;
+    wire  rx_bsr__o_own;
+    wire  rx_bsr__o_hdr_bad;
+    wire  [1:0] rx_bsr__o_ptype;
+    wire  rx_bsr__o_los;
+    wire  rx_bsr__o_bvalid;
+    wire  rx_bsr__o_level;
+    wire  [1:0] rx_bsr__o_phase;
+    wire  rx_bsr__o_cf;
+    wire  rx_bsr__o_hard;
+    wire  rx_bsr__o_run;
+    wire  rx_bsr__o_tst;
+    wire  rx_bsr__o_ack;
+    reg  ftx__i_start;
+    reg  ftx__i_slots;
+    reg  [15:0] ftx__i_h0;
+    reg  [15:0] ftx__i_h1;
+    reg  ftx__i_h0_alive;
+    reg  [15:0] ftx__i_word_data;
+    reg  ftx__i_word_alive;
+    reg  ftx__i_word_alarm;
+    reg  ftx__i_word_void;
+    wire  [11:0] ftx__o_slot;
+    wire  ftx__o_take;
+    wire  ftx__o_busy;
+    wire  [1:0] ftx__o_line;
+    reg  stx__i_start;
+    reg  stx__i_slots;
+    reg  [15:0] stx__i_h0;
+    reg  [15:0] stx__i_h1;
+    reg  stx__i_h0_alive;
+    reg  [15:0] stx__i_word_data;
+    reg  stx__i_word_alive;
+    reg  stx__i_word_alarm;
+    reg  stx__i_word_void;
+    wire  [11:0] stx__o_slot;
+    wire  stx__o_take;
+    wire  stx__o_busy;
+    wire  [1:0] stx__o_line;
+    reg  rep__i_valid;
+    reg  rep__i_code;
+    reg  [1:0] rep__i_phase;
+    wire  [1:0] rep__o_line;
+    wire  rep__o_slip;
+    reg  [1:0] sbox__i_mode;
+    reg  [1:0] sbox__i_output;
+    reg  [1:0] sbox__i_bss;
+    wire  [3:0] sbox__o_input;
+    wire  [3:0] sbox__o_bsr;
+    wire  [1:0] sbox__o_po;
+    wire  [1:0] sbox__o_so;
+    reg  dark__i_change;
+    reg  dark__i_keep_po;
+    reg  [1:0] dark__i_po;
+    reg  [1:0] dark__i_so;
+    wire  [1:0] dark__o_po;
+    wire  [1:0] dark__o_so;
+    reg  tst__i_ack;
+    reg  tst__i_restart;
+    wire  [1:0] tst__o_line;
+    reg  swc__i_armed;
+    reg  swc__i_hard_in;
+    reg  swc__i_hard_bsr;
+    reg  swc__i_run_in;
+    reg  swc__i_run_bsr;
+    reg  swc__i_los_in;
+    reg  swc__i_los_bsr;
+    reg  swc__i_rw;
+    reg  swc__i_fs;
+    reg  swc__i_tst_ack;
+    reg  swc__i_frame_start;
+    reg  swc__i_bsr_data;
+    reg  swc__i_in_pkt;
+    reg  swc__i_tst_in;
+    reg  swc__i_tst_bsr;
+    wire  [1:0] swc__o_mode;
+    wire  swc__o_change;
+    wire  swc__o_relink;
+    wire  swc__o_tst_start;
+    wire  swc__o_fs_set;
+    wire  swc__o_grace_over;
+    reg  pend_rc_d;
+    reg  pend_rc_q;
+    reg  ret_rwp_d;
+    reg  ret_rwp_q;
+    reg  sw_flush_d;
+    reg  sw_flush_q;
+    reg  [75:0] rdl_d;
+    reg  [75:0] rdl_q;
+    reg  [6:0] rcd_d;
+    reg  [6:0] rcd_q;
+    reg  rcd_run_d;
+    reg  rcd_run_q;
+    reg  rdata_d;
+    reg  rdata_q;
+    reg  relay_d;
+    reg  relay_q;
+    reg  rlast_d;
+    reg  rlast_q;
+    wire  [15:0] mdb__o_wb_dat;
+    wire  mdb__o_wb_ack;
+    reg  mdb__i_fs;
+    reg  [1:0] mdb__i_mode;
+    reg  mdb__i_wvalid;
+    reg  [1:0] mdb__i_kind;
+    reg  [11:0] mdb__i_slot;
+    reg  [15:0] mdb__i_data;
+    reg  mdb__i_alive;
+    reg  mdb__i_alarm;
+    reg  mdb__i_ok;
+    reg  mdb__i_hdr_bad;
+    reg  [11:0] mdb__i_tx_slot;
+    wire  [15:0] mdb__o_tx_data;
+    wire  [1:0] mdb__o_tx_cfg;
+    wire  mdb__o_join;
+    wire  mdb__o_s2;
+    wire  [11:0] mdb__o_s2_slot;
+    wire  mdb__o_s2_act;
+    wire  mdb__o_s2_ok;
+    wire  mdb__o_s2_alive;
+    wire  mdb__o_s2_alarm;
+    wire  [15:0] mdb__o_s2_data;
+    wire  mdb__o_running;
+    wire  mdb__o_irq1;
+    wire  mdb__o_irq2;
+    wire  mdb__o_irq_fs;
+    wire  mdb__o_irq_rc;
+    wire  mdb__o_alarmq;
+    wire  mdb__o_irq_fsc;
+    wire  mdb__o_fs_host;
+    wire  mdb__o_fs_clear;
+    reg  mdb__i_fs_cleared;
+    wire  [15:0] mdb__o_aerr;
+    reg  [11:0] store__read_address;
+    wire  [21:0] store__read_data;
+    reg  [11:0] store__write_address;
+    reg  [21:0] store__write_data;
+    reg  store__write_enable;
+    reg  st_used_d;
+    reg  st_used_q;
+    reg  [11:0] st_used_slot_d;
+    reg  [11:0] st_used_slot_q;
+    reg  [11:0] sent_alarm__read_address;
+    wire  sent_alarm__read_data;
+    reg  [11:0] sent_alarm__write_address;
+    reg  sent_alarm__write_data;
+    reg  sent_alarm__write_enable;
+    reg  [11:0] aact__read_address;
+    wire  aact__read_data;
+    reg  [11:0] aact__write_address;
+    reg  aact__write_data;
+    reg  aact__write_enable;
+    reg  [21:0] st_r_d;
+    reg  [21:0] st_r_q;
+    reg  aact_r_d;
+    reg  aact_r_q;
+    reg  half_d;
+    reg  half_q;
+    reg  [19:0] bcnt_d;
+    reg  [19:0] bcnt_q;
+    reg  [11:0] cyc_d;
+    reg  [11:0] cyc_q;
+    reg  [15:0] cycles_d;
+    reg  [15:0] cycles_q;
+    reg  toggle_d;
+    reg  toggle_q;
+    reg  fbusy_d;
+    reg  fbusy_q;
+    reg  failsafe_d;
+    reg  failsafe_q;
+    reg  fs_tx_d;
+    reg  fs_tx_q;
+    reg  ret_rwc_d;
+    reg  ret_rwc_q;
+    reg  [2:0] ret_cyc_d;
+    reg  [2:0] ret_cyc_q;
+    reg  [11:0] hop_d;
+    reg  [11:0] hop_q;
+    reg  armed_d;
+    reg  armed_q;
+    reg  [11:0] ferr_owed_d;
+    reg  [11:0] ferr_owed_q;
+    reg  [11:0] last_num_d;
+    reg  [11:0] last_num_q;
+    reg  [19:0] quiet_d;
+    reg  [19:0] quiet_q;
+    reg  sec_sent_d;
+    reg  sec_sent_q;
+    reg  [11:0] hop_ref_d;
+    reg  [11:0] hop_ref_q;
+    reg  [1:0] whole_d;
+    reg  [1:0] whole_q;
+    reg  [2:0] clr_sent_d;
+    reg  [2:0] clr_sent_q;
+    reg  ret_fs_d;
+    reg  ret_fs_q;
+    reg  ret_clr_d;
+    reg  ret_clr_q;
+    reg  ret_seen_d;
+    reg  ret_seen_q;
+    reg  fs_request_d;
+    reg  fs_request_q;
+    reg  host_clear_d;
+    reg  host_clear_q;
+    reg  sec_ok_d;
+    reg  sec_ok_q;
+    reg  [15:0] sec_word_d;
+    reg  [15:0] sec_word_q;
+    reg  [15:0] serr_d;
+    reg  [15:0] serr_q;
+    reg  [15:0] perr_d;
+    reg  [15:0] perr_q;
+    reg  [15:0] ferr_d;
+    reg  [15:0] ferr_q;
+    reg  pend_fs_d;
+    reg  pend_fs_q;
+    reg  pend_i1_d;
+    reg  pend_i1_q;
+    reg  pend_i2_d;
+    reg  pend_i2_q;
+    reg  prev_alarm_d;
+    reg  prev_alarm_q;
+    reg  fl_v_d;
+    reg  fl_v_q;
+    reg  [3:0] fl_r_d;
+    reg  [3:0] fl_r_q;
+    reg  nxt_d;
+    reg  nxt_q;
+    reg  await_rb_d;
+    reg  await_rb_q;
+    reg  fwd__i_bvalid;
+    reg  fwd__i_level;
+    reg  [1:0] fwd__i_phase;
+    reg  fwd__i_hdr_bad;
+    reg  fwd__i_mute;
+    reg  fwd__i_actuator;
+    reg  [15:0] fwd__i_sensor_data;
+    reg  [15:0] fwd__i_act_out;
+    reg  fwd__i_fs;
+    reg  fwd__i_wrapped;
+    reg  fwd__i_alarm_req;
+    reg  [3:0] fwd__i_alarm_reason;
+    reg  fwd__i_alarm_seq;
+    reg  fwd__i_master;
+    reg  [1:0] fwd__i_slot_cfg;
+    reg  [15:0] fwd__i_slot_data;
+    reg  fwd__i_slot_alive;
+    wire  [11:0] fwd__o_slot;
+    wire  fwd__o_regen;
+    wire  fwd__o_alarm_sent;
+    wire  [3:0] fwd__o_sent_reason;
+    wire  fwd__o_prev_alarm;
+    wire  fwd__o_pkt_done;
+    wire  fwd__o_toggle;
+    wire  [1:0] fwd__o_line;
+    reg  [11:0] txs__i_ftx;
+    reg  [11:0] txs__i_fwd;
+    reg  txs__i_cb;
+    reg  txs__i_join;
+    wire  [11:0] txs__o_slot;
+    reg  fs_cleared_d;
+    reg  fs_cleared_q;
+    reg  cb_d;
+    reg  cb_q;
+    reg  join_r_d;
+    reg  join_r_q;
+    reg  [19:0] et_d;
+    reg  [19:0] et_q;
+    reg  in_last_d;
+    reg  in_last_q;
+    reg  [38:0] in_code_d;
+    reg  [38:0] in_code_q;
+    reg  [19:0] since_jk_d;
+    reg  [19:0] since_jk_q;
+    reg  [2:0] dcyc_d;
+    reg  [2:0] dcyc_q;
+    reg  dcyc_v_d;
+    reg  dcyc_v_q;
+    reg  [11:0] scyc_d;
+    reg  [11:0] scyc_q;
+    reg  scyc_v_d;
+    reg  scyc_v_q;
+    reg  [4:0] g0__i_code;
+    wire  [3:0] g0__o_nibble;
+    wire  g0__o_data;
+    wire  g0__o_j;
+    wire  g0__o_k;
+    wire  g0__o_i;
+    wire  g0__o_s;
+    reg  [4:0] g1__i_code;
+    wire  [3:0] g1__o_nibble;
+    wire  g1__o_data;
+    wire  g1__o_j;
+    wire  g1__o_k;
+    wire  g1__o_i;
+    wire  g1__o_s;
+    reg  [4:0] g2__i_code;
+    wire  [3:0] g2__o_nibble;
+    wire  g2__o_data;
+    wire  g2__o_j;
+    wire  g2__o_k;
+    wire  g2__o_i;
+    wire  g2__o_s;
+    reg  [4:0] g3__i_code;
+    wire  [3:0] g3__o_nibble;
+    wire  g3__o_data;
+    wire  g3__o_j;
+    wire  g3__o_k;
+    wire  g3__o_i;
+    wire  g3__o_s;
+    reg  rw_hdr_d;
+    reg  rw_hdr_q;
+    reg  [2:0] last_cyc3_d;
+    reg  [2:0] last_cyc3_q;
+    reg  fwd_cut_d;
+    reg  fwd_cut_q;
+    reg  rep_cut_d;
+    reg  rep_cut_q;
+    reg  inpkt_was_d;
+    reg  inpkt_was_q;
+
+    // Local signals
+    reg  wrapped;
+    reg  rw;
+    reg  [1:0] bss_pair;
+    reg  unwrap_at;
+    reg  [2:0] cyc_back;
+    reg  [11:0] ret_num;
+    reg  [11:0] cyc_gap;
+    reg  [16:0] ferr_sum;
+    reg  leave;
+    reg  clr_fail;
+    reg  seq_tx;
+    reg  tick;
+    reg  [21:0] st;
+    reg  st_ok;
+    reg  [2:0] prev_cyc;
+    reg  [3:0] reason;
+    reg  send_alarm;
+    reg  [15:0] w_data;
+    reg  w_alive;
+    reg  w_alarm;
+    reg  w_void;
+    reg  home;
+    reg  [15:0] h0;
+    reg  [15:0] h1;
+    reg  [15:0] sec_h0;
+    reg  [21:0] st_word;
+    reg  base;
+    reg  [9:0] jk_x;
+    reg  [9:0] jk_z;
+    reg  [9:0] jk_z1;
+    reg  jk_ok;
+    reg  jk_bad;
+    reg  jk_s;
+    reg  [2:0] cyc_gap3;
+    reg  [2:0] cyc_take;
+    reg  pass_code;
+
+    // Child blocks
+    merkur_special_master__rx_in rx_in(
+        .clock(clock),
+        .i_samples(rx_in__i_samples),
+        .i_slots_m1(i_slots_m1),
+        .i_address(i_address),
+        .i_tst_fail(rx_in__i_tst_fail),
+        .i_flush(rx_in__i_flush),
+        .o_start(rx_in__o_start),
+        .o_inpkt(rx_in__o_inpkt),
+        .o_wvalid(rx_in__o_wvalid),
+        .o_kind(rx_in__o_kind),
+        .o_slot(rx_in__o_slot),
+        .o_data(rx_in__o_data),
+        .o_alive(rx_in__o_alive),
+        .o_alarm(rx_in__o_alarm),
+        .o_reason(rx_in__o_reason),
+        .o_ok(rx_in__o_ok),
+        .o_void(rx_in__o_void),
+        .o_marked(rx_in__o_marked),
+        .o_own(rx_in__o_own),
+        .o_hdr_bad(rx_in__o_hdr_bad),
+        .o_ptype(rx_in__o_ptype),
+        .o_los(rx_in__o_los),
+        .o_bvalid(rx_in__o_bvalid),
+        .o_level(rx_in__o_level),
+        .o_phase(rx_in__o_phase),
+        .o_cf(rx_in__o_cf),
+        .o_hard(rx_in__o_hard),
+        .o_run(rx_in__o_run),
+        .o_tst(rx_in__o_tst),
+        .o_ack(rx_in__o_ack)
+    );
+    merkur_special_master__rx_bsr rx_bsr(
+        .clock(clock),
+        .i_samples(rx_bsr__i_samples),
+        .i_slots_m1(i_slots_m1),
+        .i_address(i_address),
+        .i_tst_fail(rx_bsr__i_tst_fail),
+        .i_flush(rx_bsr__i_flush),
+        .o_start(rx_bsr__o_start),
+        .o_inpkt(rx_bsr__o_inpkt),
+        .o_wvalid(rx_bsr__o_wvalid),
+        .o_kind(rx_bsr__o_kind),
+        .o_slot(rx_bsr__o_slot),
+        .o_data(rx_bsr__o_data),
+        .o_alive(rx_bsr__o_alive),
+        .o_alarm(rx_bsr__o_alarm),
+        .o_reason(rx_bsr__o_reason),
+        .o_ok(rx_bsr__o_ok),
+        .o_void(rx_bsr__o_void),
+        .o_marked(rx_bsr__o_marked),
+        .o_own(rx_bsr__o_own),
+        .o_hdr_bad(rx_bsr__o_hdr_bad),
+        .o_ptype(rx_bsr__o_ptype),
+        .o_los(rx_bsr__o_los),
+        .o_bvalid(rx_bsr__o_bvalid),
+        .o_level(rx_bsr__o_level),
+        .o_phase(rx_bsr__o_phase),
+        .o_cf(rx_bsr__o_cf),
+        .o_hard(rx_bsr__o_hard),
+        .o_run(rx_bsr__o_run),
+        .o_tst(rx_bsr__o_tst),
+        .o_ack(rx_bsr__o_ack)
+    );
+    merkur_special_master__ftx ftx(
+        .clock(clock),
+        .i_start(ftx__i_start),
+        .i_slots(ftx__i_slots),
+        .i_slots_m1(i_slots_m1),
+        .i_h0(ftx__i_h0),
+        .i_h1(ftx__i_h1),
+        .i_h0_alive(ftx__i_h0_alive),
+        .i_word_data(ftx__i_word_data),
+        .i_word_alive(ftx__i_word_alive),
+        .i_word_alarm(ftx__i_word_alarm),
+        .i_word_void(ftx__i_word_void),
+        .o_slot(ftx__o_slot),
+        .o_take(ftx__o_take),
+        .o_busy(ftx__o_busy),
+        .o_line(ftx__o_line)
+    );
+    merkur_special_master__stx stx(
+        .clock(clock),
+        .i_start(stx__i_start),
+        .i_slots(stx__i_slots),
+        .i_slots_m1(i_slots_m1),
+        .i_h0(stx__i_h0),
+        .i_h1(stx__i_h1),
+        .i_h0_alive(stx__i_h0_alive),
+        .i_word_data(stx__i_word_data),
+        .i_word_alive(stx__i_word_alive),
+        .i_word_alarm(stx__i_word_alarm),
+        .i_word_void(stx__i_word_void),
+        .o_slot(stx__o_slot),
+        .o_take(stx__o_take),
+        .o_busy(stx__o_busy),
+        .o_line(stx__o_line)
+    );
+    merkur_special_master__rep rep(
+        .clock(clock),
+        .i_valid(rep__i_valid),
+        .i_code(rep__i_code),
+        .i_phase(rep__i_phase),
+        .o_line(rep__o_line),
+        .o_slip(rep__o_slip)
+    );
+    merkur_special_master__sbox sbox(
+        .i_mode(sbox__i_mode),
+        .i_pi(i_pi),
+        .i_si(i_si),
+        .i_output(sbox__i_output),
+        .i_bss(sbox__i_bss),
+        .o_input(sbox__o_input),
+        .o_bsr(sbox__o_bsr),
+        .o_po(sbox__o_po),
+        .o_so(sbox__o_so)
+    );
+    merkur_special_master__dark dark(
+        .clock(clock),
+        .i_change(dark__i_change),
+        .i_keep_po(dark__i_keep_po),
+        .i_po(dark__i_po),
+        .i_so(dark__i_so),
+        .o_po(dark__o_po),
+        .o_so(dark__o_so)
+    );
+    merkur_special_master__tst tst(
+        .clock(clock),
+        .i_ack(tst__i_ack),
+        .i_address(i_address),
+        .i_restart(tst__i_restart),
+        .o_line(tst__o_line)
+    );
+    merkur_special_master__swc swc(
+        .clock(clock),
+        .i_armed(swc__i_armed),
+        .i_hard_in(swc__i_hard_in),
+        .i_hard_bsr(swc__i_hard_bsr),
+        .i_run_in(swc__i_run_in),
+        .i_run_bsr(swc__i_run_bsr),
+        .i_los_in(swc__i_los_in),
+        .i_los_bsr(swc__i_los_bsr),
+        .i_rw(swc__i_rw),
+        .i_fs(swc__i_fs),
+        .i_tst_ack(swc__i_tst_ack),
+        .i_frame_start(swc__i_frame_start),
+        .i_bsr_data(swc__i_bsr_data),
+        .i_in_pkt(swc__i_in_pkt),
+        .i_tst_in(swc__i_tst_in),
+        .i_tst_bsr(swc__i_tst_bsr),
+        .i_cs_timeout(i_cs_timeout),
+        .o_mode(swc__o_mode),
+        .o_change(swc__o_change),
+        .o_relink(swc__o_relink),
+        .o_tst_start(swc__o_tst_start),
+        .o_fs_set(swc__o_fs_set),
+        .o_grace_over(swc__o_grace_over)
+    );
+    merkur_special_master__mdb mdb(
+        .clock(clock),
+        .i_wb_cyc(i_wb_cyc),
+        .i_wb_stb(i_wb_stb),
+        .i_wb_we(i_wb_we),
+        .i_wb_adr(i_wb_adr),
+        .i_wb_dat(i_wb_dat),
+        .o_wb_dat(mdb__o_wb_dat),
+        .o_wb_ack(mdb__o_wb_ack),
+        .i_home(i_address),
+        .i_slots_m1(i_slots_m1),
+        .i_fs(mdb__i_fs),
+        .i_mode(mdb__i_mode),
+        .i_wvalid(mdb__i_wvalid),
+        .i_kind(mdb__i_kind),
+        .i_slot(mdb__i_slot),
+        .i_data(mdb__i_data),
+        .i_alive(mdb__i_alive),
+        .i_alarm(mdb__i_alarm),
+        .i_ok(mdb__i_ok),
+        .i_hdr_bad(mdb__i_hdr_bad),
+        .i_tx_slot(mdb__i_tx_slot),
+        .o_tx_data(mdb__o_tx_data),
+        .o_tx_cfg(mdb__o_tx_cfg),
+        .o_join(mdb__o_join),
+        .o_s2(mdb__o_s2),
+        .o_s2_slot(mdb__o_s2_slot),
+        .o_s2_act(mdb__o_s2_act),
+        .o_s2_ok(mdb__o_s2_ok),
+        .o_s2_alive(mdb__o_s2_alive),
+        .o_s2_alarm(mdb__o_s2_alarm),
+        .o_s2_data(mdb__o_s2_data),
+        .o_running(mdb__o_running),
+        .o_irq1(mdb__o_irq1),
+        .o_irq2(mdb__o_irq2),
+        .o_irq_fs(mdb__o_irq_fs),
+        .o_irq_rc(mdb__o_irq_rc),
+        .o_alarmq(mdb__o_alarmq),
+        .o_irq_fsc(mdb__o_irq_fsc),
+        .o_fs_host(mdb__o_fs_host),
+        .o_fs_clear(mdb__o_fs_clear),
+        .i_fs_cleared(mdb__i_fs_cleared),
+        .o_aerr(mdb__o_aerr)
+    );
+    merkur_special_master__store store(
+        .read_address(store__read_address),
+        .read_clock(clock),
+        .read_data(store__read_data),
+        .write_address(store__write_address),
+        .write_clock(clock),
+        .write_data(store__write_data),
+        .write_enable(store__write_enable)
+    );
+    merkur_special_master__sent_alarm sent_alarm(
+        .read_address(sent_alarm__read_address),
+        .read_clock(clock),
+        .read_data(sent_alarm__read_data),
+        .write_address(sent_alarm__write_address),
+        .write_clock(clock),
+        .write_data(sent_alarm__write_data),
+        .write_enable(sent_alarm__write_enable)
+    );
+    merkur_special_master__aact aact(
+        .read_address(aact__read_address),
+        .read_clock(clock),
+        .read_data(aact__read_data),
+        .write_address(aact__write_address),
+        .write_clock(clock),
+        .write_data(aact__write_data),
+        .write_enable(aact__write_enable)
+    );
+    merkur_special_master__fwd fwd(
+        .clock(clock),
+        .i_bvalid(fwd__i_bvalid),
+        .i_level(fwd__i_level),
+        .i_phase(fwd__i_phase),
+        .i_hdr_bad(fwd__i_hdr_bad),
+        .i_mute(fwd__i_mute),
+        .i_slots_m1(i_slots_m1),
+        .i_address(i_address),
+        .i_actuator(fwd__i_actuator),
+        .i_sensor_data(fwd__i_sensor_data),
+        .i_act_out(fwd__i_act_out),
+        .i_fs(fwd__i_fs),
+        .i_wrapped(fwd__i_wrapped),
+        .i_alarm_req(fwd__i_alarm_req),
+        .i_alarm_reason(fwd__i_alarm_reason),
+        .i_alarm_seq(fwd__i_alarm_seq),
+        .i_master(fwd__i_master),
+        .i_slot_cfg(fwd__i_slot_cfg),
+        .i_slot_data(fwd__i_slot_data),
+        .i_slot_alive(fwd__i_slot_alive),
+        .o_slot(fwd__o_slot),
+        .o_regen(fwd__o_regen),
+        .o_alarm_sent(fwd__o_alarm_sent),
+        .o_sent_reason(fwd__o_sent_reason),
+        .o_prev_alarm(fwd__o_prev_alarm),
+        .o_pkt_done(fwd__o_pkt_done),
+        .o_toggle(fwd__o_toggle),
+        .o_line(fwd__o_line)
+    );
+    merkur_special_master__txs txs(
+        .i_ftx(txs__i_ftx),
+        .i_fwd(txs__i_fwd),
+        .i_cb(txs__i_cb),
+        .i_prio(i_prio),
+        .i_join(txs__i_join),
+        .o_slot(txs__o_slot)
+    );
+    merkur_special_master__g0 g0(
+        .i_code(g0__i_code),
+        .o_nibble(g0__o_nibble),
+        .o_data(g0__o_data),
+        .o_j(g0__o_j),
+        .o_k(g0__o_k),
+        .o_i(g0__o_i),
+        .o_s(g0__o_s)
+    );
+    merkur_special_master__g1 g1(
+        .i_code(g1__i_code),
+        .o_nibble(g1__o_nibble),
+        .o_data(g1__o_data),
+        .o_j(g1__o_j),
+        .o_k(g1__o_k),
+        .o_i(g1__o_i),
+        .o_s(g1__o_s)
+    );
+    merkur_special_master__g2 g2(
+        .i_code(g2__i_code),
+        .o_nibble(g2__o_nibble),
+        .o_data(g2__o_data),
+        .o_j(g2__o_j),
+        .o_k(g2__o_k),
+        .o_i(g2__o_i),
+        .o_s(g2__o_s)
+    );
+    merkur_special_master__g3 g3(
+        .i_code(g3__i_code),
+        .o_nibble(g3__o_nibble),
+        .o_data(g3__o_data),
+        .o_j(g3__o_j),
+        .o_k(g3__o_k),
+        .o_i(g3__o_i),
+        .o_s(g3__o_s)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        st_r_d = st_r_q;
+        aact_r_d = aact_r_q;
+        half_d = half_q;
+        bcnt_d = bcnt_q;
+        cyc_d = cyc_q;
+        cycles_d = cycles_q;
+        toggle_d = toggle_q;
+        fbusy_d = fbusy_q;
+        failsafe_d = failsafe_q;
+        fs_tx_d = fs_tx_q;
+        ret_rwc_d = ret_rwc_q;
+        ret_cyc_d = ret_cyc_q;
+        hop_d = hop_q;
+        armed_d = armed_q;
+        quiet_d = quiet_q;
+        sec_sent_d = sec_sent_q;
+        sec_ok_d = sec_ok_q;
+        sec_word_d = sec_word_q;
+        serr_d = serr_q;
+        perr_d = perr_q;
+        ferr_d = ferr_q;
+        pend_fs_d = pend_fs_q;
+        pend_i1_d = pend_i1_q;
+        pend_i2_d = pend_i2_q;
+        prev_alarm_d = prev_alarm_q;
+        fl_v_d = fl_v_q;
+        fl_r_d = fl_r_q;
+        nxt_d = nxt_q;
+        await_rb_d = await_rb_q;
+        ferr_owed_d = ferr_owed_q;
+        rdl_d = rdl_q;
+        rcd_d = rcd_q;
+        rcd_run_d = rcd_run_q;
+        rdata_d = rdata_q;
+        relay_d = relay_q;
+        rlast_d = rlast_q;
+        pend_rc_d = pend_rc_q;
+        ret_rwp_d = ret_rwp_q;
+        sw_flush_d = sw_flush_q;
+        hop_ref_d = hop_ref_q;
+        whole_d = whole_q;
+        clr_sent_d = clr_sent_q;
+        ret_fs_d = ret_fs_q;
+        ret_clr_d = ret_clr_q;
+        ret_seen_d = ret_seen_q;
+        fs_request_d = fs_request_q;
+        host_clear_d = host_clear_q;
+        st_used_d = st_used_q;
+        st_used_slot_d = st_used_slot_q;
+        last_num_d = last_num_q;
+        cb_d = cb_q;
+        join_r_d = join_r_q;
+        et_d = et_q;
+        rw_hdr_d = rw_hdr_q;
+        last_cyc3_d = last_cyc3_q;
+        fwd_cut_d = fwd_cut_q;
+        rep_cut_d = rep_cut_q;
+        inpkt_was_d = inpkt_was_q;
+        in_last_d = in_last_q;
+        in_code_d = in_code_q;
+        fs_cleared_d = fs_cleared_q;
+        since_jk_d = since_jk_q;
+        dcyc_d = dcyc_q;
+        dcyc_v_d = dcyc_v_q;
+        scyc_d = scyc_q;
+        scyc_v_d = scyc_v_q;
+        base = cb_q | ((i_prio == 3'h0) & ~(mdb__o_join & i_flying));
+        join_r_d = mdb__o_join & i_flying;
+        txs__i_ftx = ftx__o_slot;
+        txs__i_fwd = fwd__o_slot;
+        txs__i_cb = cb_q;
+        txs__i_join = join_r_q;
+        mdb__i_tx_slot = txs__o_slot;
+        aact__read_address = txs__o_slot;
+        o_base = base;
+        sbox__i_mode = swc__o_mode;
+        wrapped = swc__o_mode != 2'h0;
+        rw = wrapped | ret_rwc_q | ret_rwp_q;
+        rx_in__i_samples = sbox__o_input;
+        rx_bsr__i_samples = sbox__o_bsr;
+        rx_in__i_tst_fail = ~wrapped & swc__o_grace_over;
+        rx_bsr__i_tst_fail = ~wrapped & swc__o_grace_over;
+        half_d = ~half_q;
+        tick = 1'b0;
+        unwrap_at = 1'b0;
+        if (base & mdb__o_running & half_q) begin
+            if ((bcnt_q + unwrap_lead) == i_period) begin
+                unwrap_at = 1'b1;
+            end
+            bcnt_d = bcnt_q + 20'h1;
+            if ((bcnt_q + one) == i_period) begin
+                bcnt_d = 20'h0;
+            end
+            if (bcnt_q == 20'h0) begin
+                tick = 1'b1;
+            end
+        end
+        h0 = ({4'h0, i_slots_m1}) | 16'h0;
+        if (failsafe_q) begin
+            h0 = h0 | 16'h2000;
+        end
+        if (wrapped) begin
+            h0 = h0 | 16'h1000;
+        end
+        h1 = 16'h0;
+        if (ret_rwc_q) begin
+            h1 = 16'h8000;
+        end
+        h1 = h1 | ((({13'h0, cyc_q[(0)+:(3)]}) | 16'h0) << 12);
+        sec_h0 = ({4'h0, cyc_q}) | 16'h4000;
+        ftx__i_start = tick;
+        ftx__i_slots = 1'b1;
+        ftx__i_h0 = h0;
+        ftx__i_h1 = h1;
+        ftx__i_h0_alive = clr_sent_q != 3'h0;
+        stx__i_h0_alive = 1'b0;
+        stx__i_start = tick & ~ret_rwc_q & ~wrapped;
+        stx__i_slots = 1'b0;
+        stx__i_h0 = sec_h0;
+        stx__i_h1 = ~sec_h0;
+        stx__i_word_data = 16'h0;
+        stx__i_word_alive = 1'b0;
+        stx__i_word_alarm = 1'b0;
+        stx__i_word_void = 1'b0;
+        store__read_address = ftx__o_slot;
+        st_r_d = store__read_data;
+        aact_r_d = aact__read_data;
+        st = st_r_q;
+        prev_cyc = cyc_q[(0)+:(3)] - 3'h1;
+        st_ok = st[18] & (st[(19)+:(3)] == prev_cyc);
+        w_data = st[(0)+:(16)];
+        w_alive = st[16];
+        w_alarm = st[17];
+        w_void = ~st_ok;
+        home = ftx__o_slot == i_address;
+        reason = 4'h2;
+        if (pend_i1_q) begin
+            reason = 4'h1;
+        end
+        if (pend_rc_q) begin
+            reason = 4'h4;
+            if (swc__o_mode == 2'h1) begin
+                reason = 4'h5;
+            end
+            if (swc__o_mode == 2'h2) begin
+                reason = 4'h6;
+            end
+        end
+        seq_tx = nxt_q;
+        if (fl_v_q) begin
+            reason = fl_r_q;
+            seq_tx = ~nxt_q;
+        end
+        if (pend_fs_q) begin
+            reason = 4'h3;
+            seq_tx = 1'b0;
+        end
+        send_alarm = home & ((mdb__o_tx_cfg == 2'h1) | (mdb__o_tx_cfg == 2'h3)) & (pend_fs_q | fl_v_q | pend_rc_q | pend_i1_q | pend_i2_q) & ~prev_alarm_q;
+        if (~fs_tx_q) begin
+            if (mdb__o_tx_cfg == 2'h1) begin
+                w_data = mdb__o_tx_data;
+                w_alive = toggle_q;
+                w_alarm = 1'b0;
+                w_void = 1'b0;
+            end
+            if (send_alarm) begin
+                w_data = (({12'h0, reason}) | 16'h0) << 12;
+                if (seq_tx) begin
+                    w_data = w_data | 16'h800;
+                end
+                w_alive = toggle_q;
+                w_alarm = 1'b1;
+                w_void = 1'b0;
+            end
+            if (mdb__o_tx_cfg == 2'h2) begin
+                if (~st_ok) begin
+                    w_data = mdb__o_tx_data;
+                    w_alive = ~aact_r_q;
+                    w_alarm = 1'b0;
+                    w_void = 1'b0;
+                end
+                else if (~w_alarm) begin
+                    w_data = mdb__o_tx_data;
+                end
+            end
+        end
+        ftx__i_word_data = w_data;
+        ftx__i_word_alive = w_alive;
+        ftx__i_word_alarm = w_alarm;
+        ftx__i_word_void = w_void;
+        sent_alarm__write_enable = ftx__o_take;
+        sent_alarm__write_address = ftx__o_slot;
+        sent_alarm__write_data = w_alarm & ~w_void;
+        aact__write_enable = 1'b0;
+        aact__write_address = ftx__o_slot;
+        aact__write_data = w_alive;
+        if (ftx__o_take & ~fs_tx_q & (mdb__o_tx_cfg == 2'h2)) begin
+            aact__write_enable = 1'b1;
+        end
+        if (ftx__o_take & home) begin
+            prev_alarm_d = send_alarm & ~fs_tx_q;
+            if (~fs_tx_q) begin
+                await_rb_d = send_alarm & ~pend_fs_q;
+            end
+            if (send_alarm & ~fs_tx_q) begin
+                if (pend_fs_q) begin
+                    pend_fs_d = 1'b0;
+                    failsafe_d = 1'b1;
+                    fs_request_d = 1'b1;
+                end
+                else if (~fl_v_q) begin
+                    fl_v_d = 1'b1;
+                    fl_r_d = reason;
+                    nxt_d = ~nxt_q;
+                    if (pend_rc_q) begin
+                        pend_rc_d = 1'b0;
+                    end
+                    else if (pend_i1_q) begin
+                        pend_i1_d = 1'b0;
+                    end
+                    else begin
+                        pend_i2_d = 1'b0;
+                    end
+                end
+            end
+        end
+        if (i_irq1) begin
+            pend_i1_d = 1'b1;
+        end
+        if (i_irq2) begin
+            pend_i2_d = 1'b1;
+        end
+        if (i_fs_req) begin
+            pend_fs_d = 1'b1;
+        end
+        fbusy_d = ftx__o_busy;
+        if (fbusy_q & ~ftx__o_busy) begin
+            toggle_d = ~toggle_q;
+            cyc_d = cyc_q + 12'h1;
+        end
+        leave = tick & failsafe_q & (whole_q >= 2'h2) & (~(mdb__o_fs_host | fs_request_q) | host_clear_q);
+        clr_fail = tick & ~failsafe_q & (clr_sent_q >= 3'h4);
+        fs_cleared_d = leave & host_clear_q;
+        mdb__i_fs_cleared = fs_cleared_q;
+        if (mdb__o_fs_clear) begin
+            host_clear_d = 1'b1;
+        end
+        if (tick) begin
+            ret_seen_d = 1'b0;
+            if (~ret_seen_q) begin
+                whole_d = 2'h0;
+            end
+            if (leave) begin
+                failsafe_d = 1'b0;
+                clr_sent_d = 3'h1;
+                whole_d = 2'h0;
+                fs_request_d = 1'b0;
+                host_clear_d = 1'b0;
+            end
+            else if (clr_fail) begin
+                failsafe_d = 1'b1;
+                clr_sent_d = 3'h0;
+            end
+            else if (clr_sent_q != 3'h0) begin
+                clr_sent_d = clr_sent_q + 3'h1;
+            end
+        end
+        if (tick) begin
+            fs_tx_d = (failsafe_q & ~leave) | clr_fail;
+            sec_word_d = ~sec_h0;
+            if (cycles_q != 16'hffff) begin
+                cycles_d = cycles_q + 16'h1;
+            end
+            sec_sent_d = ~ret_rwc_q & ~wrapped;
+            sec_ok_d = 1'b0;
+            if (sec_sent_q & ~sec_ok_q & (serr_q != 16'hffff)) begin
+                serr_d = serr_q + 16'h1;
+            end
+        end
+        if (rx_bsr__o_wvalid & rx_bsr__o_ok & (rx_bsr__o_kind == 2'h1) & (rx_bsr__o_ptype == 2'h1) & (rx_bsr__o_data == sec_word_q)) begin
+            sec_ok_d = 1'b1;
+        end
+        cyc_back = cyc_q[(0)+:(3)] - rx_in__o_data[(12)+:(3)];
+        ret_num = cyc_q - (({9'h0, cyc_back}) | 12'h0);
+        cyc_gap = ret_num - last_num_q - 12'h1;
+        if (armed_q & (quiet_q != 20'hfffff)) begin
+            quiet_d = quiet_q + 20'h1;
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & ~(rx_in__o_ok & (rx_in__o_ptype == 2'h2))) begin
+            quiet_d = 20'h0;
+        end
+        if (rx_in__o_wvalid & rx_in__o_ok & (rx_in__o_ptype == 2'h0)) begin
+            if (rx_in__o_kind == 2'h0) begin
+                ret_rwc_d = rx_in__o_data[12];
+                ret_fs_d = rx_in__o_data[13];
+                ret_clr_d = rx_in__o_alive;
+                if (rx_in__o_data[13] & ~rx_in__o_alive) begin
+                    failsafe_d = 1'b1;
+                end
+                if (~base & ~rx_in__o_data[13] & rx_in__o_alive) begin
+                    failsafe_d = 1'b0;
+                end
+            end
+            if (rx_in__o_kind == 2'h1) begin
+                ret_cyc_d = rx_in__o_data[(12)+:(3)];
+                ret_rwp_d = rx_in__o_data[15];
+                if (armed_q) begin
+                    ferr_owed_d = cyc_gap;
+                end
+                last_num_d = ret_num;
+                hop_d = rx_in__o_data[(0)+:(12)];
+                armed_d = 1'b1;
+                ret_seen_d = 1'b1;
+                if (failsafe_q) begin
+                    whole_d = 2'h0;
+                    if (rx_in__o_data[(0)+:(12)] >= hop_ref_q) begin
+                        whole_d = whole_q + 2'h1;
+                        if (whole_q == 2'h3) begin
+                            whole_d = 2'h3;
+                        end
+                    end
+                end
+                else begin
+                    whole_d = 2'h0;
+                    if (~ret_fs_q) begin
+                        hop_ref_d = rx_in__o_data[(0)+:(12)];
+                    end
+                end
+                if ((clr_sent_q != 3'h0) & ret_clr_q & ~ret_fs_q) begin
+                    clr_sent_d = 3'h0;
+                end
+            end
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[(12)+:(4)] == 4'h3)) begin
+            fs_request_d = 1'b1;
+        end
+        if (armed_q & (quiet_q == i_cs_timeout)) begin
+            failsafe_d = 1'b1;
+        end
+        if (~base & fwd__o_alarm_sent) begin
+            if (fwd__o_sent_reason == 4'h3) begin
+                pend_fs_d = 1'b0;
+                failsafe_d = 1'b1;
+            end
+            else if (~fl_v_q) begin
+                nxt_d = ~nxt_q;
+                fl_v_d = 1'b1;
+                fl_r_d = fwd__o_sent_reason;
+                if (fwd__o_sent_reason == 4'h1) begin
+                    pend_i1_d = 1'b0;
+                end
+                else if (fwd__o_sent_reason == 4'h2) begin
+                    pend_i2_d = 1'b0;
+                end
+                else begin
+                    pend_rc_d = 1'b0;
+                end
+            end
+        end
+        if (~base & rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[11] != nxt_q)) begin
+            fl_v_d = 1'b0;
+        end
+        swc__i_armed = armed_q;
+        swc__i_hard_in = rx_in__o_hard;
+        swc__i_hard_bsr = rx_bsr__o_hard;
+        swc__i_run_in = rx_in__o_run;
+        swc__i_run_bsr = rx_bsr__o_run;
+        swc__i_los_in = rx_in__o_los;
+        swc__i_los_bsr = rx_bsr__o_los;
+        swc__i_rw = rw;
+        swc__i_fs = failsafe_q;
+        swc__i_tst_ack = rx_bsr__o_tst & rx_bsr__o_ack;
+        swc__i_frame_start = unwrap_at;
+        swc__i_in_pkt = rx_in__o_inpkt;
+        swc__i_tst_in = rx_in__o_tst;
+        swc__i_tst_bsr = rx_bsr__o_tst;
+        swc__i_bsr_data = rx_bsr__o_wvalid & (rx_bsr__o_kind == 2'h0) & rx_bsr__o_ok & (rx_bsr__o_ptype == 2'h0);
+        if (swc__o_fs_set) begin
+            failsafe_d = 1'b1;
+        end
+        if (swc__o_change) begin
+            pend_rc_d = 1'b1;
+            if (fl_r_q[2]) begin
+                fl_v_d = 1'b0;
+            end
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & await_rb_q & ~failsafe_q) begin
+            await_rb_d = 1'b0;
+            if (rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[11] != nxt_q)) begin
+                fl_v_d = 1'b0;
+            end
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & ~rx_in__o_ok & ~rx_in__o_void & (perr_q != 16'hffff)) begin
+            perr_d = perr_q + 16'h1;
+        end
+        ferr_sum = (({1'h0, ferr_q}) | 17'h0) + (({5'h0, ferr_owed_q}) | 17'h0);
+        if (ferr_owed_q != 12'h0) begin
+            ferr_owed_d = 12'h0;
+            ferr_d = ferr_sum[(0)+:(16)];
+            if (ferr_sum[16]) begin
+                ferr_d = 16'hffff;
+            end
+        end
+        if (mdb__o_irq_fs) begin
+            failsafe_d = 1'b1;
+        end
+        sent_alarm__read_address = rx_in__o_slot;
+        st_word = (({6'h0, mdb__o_s2_data}) | 22'h0) | ((({19'h0, ret_cyc_q}) | 22'h0) << 19);
+        if (mdb__o_s2_alive) begin
+            st_word = st_word | 22'h10000;
+        end
+        if (mdb__o_s2_alarm) begin
+            st_word = st_word | 22'h20000;
+        end
+        if (mdb__o_s2_ok & ~(mdb__o_s2_alarm & sent_alarm__read_data)) begin
+            st_word = st_word | 22'h40000;
+        end
+        store__write_enable = mdb__o_s2 & base;
+        store__write_address = mdb__o_s2_slot;
+        store__write_data = st_word;
+        if (st_used_q & ~mdb__o_s2) begin
+            st_used_d = 1'b0;
+            store__write_enable = 1'b1;
+            store__write_address = st_used_slot_q;
+            store__write_data = 22'h0;
+        end
+        if (ftx__o_take) begin
+            st_used_d = 1'b1;
+            st_used_slot_d = ftx__o_slot;
+        end
+        o_wb_dat = mdb__o_wb_dat;
+        o_wb_ack = mdb__o_wb_ack;
+        mdb__i_fs = failsafe_q;
+        mdb__i_mode = swc__o_mode;
+        mdb__i_wvalid = rx_in__o_wvalid;
+        mdb__i_kind = rx_in__o_kind;
+        mdb__i_slot = rx_in__o_slot;
+        mdb__i_data = rx_in__o_data;
+        mdb__i_alive = rx_in__o_alive;
+        mdb__i_alarm = rx_in__o_alarm;
+        mdb__i_ok = rx_in__o_ok;
+        mdb__i_hdr_bad = rx_in__o_hdr_bad;
+        o_irq1 = mdb__o_irq1;
+        o_irq2 = mdb__o_irq2;
+        o_irq_fs = mdb__o_irq_fs;
+        o_irq_rc = mdb__o_irq_rc;
+        o_alarmq = mdb__o_alarmq;
+        o_mode = swc__o_mode;
+        o_failsafe = failsafe_q;
+        o_irq_fsc = mdb__o_irq_fsc;
+        o_perr = perr_q;
+        o_ferr = ferr_q;
+        o_aerr = mdb__o_aerr;
+        o_serr = serr_q;
+        o_hop = hop_q;
+        o_cycles = cycles_q;
+        o_running = mdb__o_running;
+        rep__i_valid = rx_bsr__o_bvalid;
+        rep__i_code = rdl_q[75];
+        rep__i_phase = rx_bsr__o_phase;
+        if (rx_bsr__o_bvalid) begin
+            rdl_d = rdl_q << 1;
+            if (rx_bsr__o_level != rlast_q) begin
+                rdl_d = (rdl_q << 1) | 76'h1;
+            end
+            rlast_d = rx_bsr__o_level;
+            if (rcd_run_q) begin
+                rcd_d = rcd_q - 7'h1;
+                if (rcd_q == 7'h1) begin
+                    rcd_run_d = 1'b0;
+                    relay_d = rdata_q;
+                end
+            end
+        end
+        if (rx_bsr__o_wvalid & rx_bsr__o_ok & (rx_bsr__o_kind == 2'h1) & (rx_bsr__o_ptype == 2'h0)) begin
+            rdata_d = 1'b1;
+        end
+        if (rx_bsr__o_start) begin
+            rcd_d = relay_len;
+            rcd_run_d = 1'b1;
+            rdata_d = 1'b0;
+        end
+        if (stx__i_start) begin
+            relay_d = 1'b0;
+        end
+        if (sw_flush_q) begin
+            rcd_run_d = 1'b0;
+            rdata_d = 1'b0;
+            relay_d = 1'b0;
+        end
+        tst__i_ack = rx_bsr__o_tst;
+        tst__i_restart = swc__o_tst_start;
+        sw_flush_d = swc__o_relink;
+        rx_in__i_flush = sw_flush_q;
+        rx_bsr__i_flush = sw_flush_q;
+        bss_pair = stx__o_line;
+        if (relay_q) begin
+            bss_pair = rep__o_line;
+        end
+        if (wrapped) begin
+            bss_pair = tst__o_line;
+        end
+        sbox__i_output = ftx__o_line;
+        sbox__i_bss = bss_pair;
+        dark__i_change = swc__o_change;
+        dark__i_keep_po = swc__o_relink;
+        dark__i_po = sbox__o_po;
+        dark__i_so = sbox__o_so;
+        o_po = dark__o_po;
+        o_so = dark__o_so;
+        fwd__i_bvalid = rx_in__o_bvalid;
+        fwd__i_level = rx_in__o_level;
+        fwd__i_phase = rx_in__o_phase;
+        fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0));
+        if (~rx_in__o_inpkt) begin
+            fwd_cut_d = 1'b0;
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype == 2'h2)) begin
+            fwd_cut_d = 1'b1;
+        end
+        fwd__i_mute = fwd_cut_q;
+        fwd__i_actuator = 1'b0;
+        fwd__i_sensor_data = 16'h0;
+        fwd__i_act_out = 16'h0;
+        fwd__i_fs = failsafe_q;
+        fwd__i_wrapped = wrapped;
+        fwd__i_master = 1'b1;
+        fwd__i_alarm_req = ~base & (pend_fs_q | fl_v_q | pend_rc_q | pend_i1_q | pend_i2_q);
+        fwd__i_alarm_reason = reason;
+        fwd__i_alarm_seq = seq_tx;
+        fwd__i_slot_cfg = 2'h0;
+        if (mdb__o_running) begin
+            fwd__i_slot_cfg = mdb__o_tx_cfg;
+        end
+        fwd__i_slot_data = mdb__o_tx_data;
+        fwd__i_slot_alive = aact__read_data;
+        if (~rx_bsr__o_inpkt) begin
+            rep_cut_d = 1'b0;
+        end
+        if (rx_bsr__o_wvalid & (rx_bsr__o_kind == 2'h0) & rx_bsr__o_ok & (rx_bsr__o_ptype == 2'h2)) begin
+            rep_cut_d = 1'b1;
+        end
+        pass_code = (rx_bsr__o_level != rlast_q) | rep_cut_q;
+        inpkt_was_d = rx_in__o_inpkt;
+        cyc_gap3 = rx_in__o_data[(12)+:(3)] - last_cyc3_q - 3'h1;
+        cyc_take = last_cyc3_q + i_prio + 3'h1;
+        if (half_q & (et_q != 20'hfffff)) begin
+            et_d = et_q + 20'h1;
+        end
+        if (rx_in__o_bvalid) begin
+            in_last_d = rx_in__o_level;
+            in_code_d = in_code_q << 1;
+            if (rx_in__o_level != in_last_q) begin
+                in_code_d = (in_code_q << 1) | 39'h1;
+            end
+        end
+        jk_x = in_code_q[(20)+:(10)] ^ jk_bits;
+        jk_z = jk_x & (jk_x - 10'h1);
+        jk_z1 = jk_z - 10'h1;
+        jk_ok = (jk_z == 10'h0) | ((jk_x == (jk_z | (jk_z >> 1))) & ((jk_z & jk_z1) == 10'h0));
+        g0__i_code = in_code_q[(15)+:(5)];
+        g1__i_code = in_code_q[(10)+:(5)];
+        g2__i_code = in_code_q[(5)+:(5)];
+        g3__i_code = in_code_q[(0)+:(5)];
+        jk_s = g1__o_data & g2__o_data & g3__o_data & (g1__o_nibble == i_slots_m1[(2)+:(4)]) & (g2__o_nibble == i_slots_m1[(6)+:(4)]) & (g3__o_nibble[(0)+:(2)] == i_slots_m1[(10)+:(2)]);
+        jk_bad = (in_code_q[(30)+:(9)] == 9'h1ff) & jk_ok & (jk_x != 10'h0) & ((g0__o_data & (g0__o_nibble[(0)+:(2)] == i_slots_m1[(0)+:(2)])) | jk_x[0]) & jk_s;
+        if (half_q & (since_jk_q != 20'hfffff)) begin
+            since_jk_d = since_jk_q + 20'h1;
+        end
+        if (rx_in__o_start | jk_bad) begin
+            since_jk_d = 20'h0;
+        end
+        if (rx_in__o_wvalid & rx_in__o_ok) begin
+            if ((rx_in__o_kind == 2'h1) & (rx_in__o_ptype == 2'h0) & (~dcyc_v_q | (rx_in__o_data[(12)+:(3)] != dcyc_q))) begin
+                dcyc_v_d = 1'b1;
+                dcyc_d = rx_in__o_data[(12)+:(3)];
+                et_d = since_jk_q;
+            end
+            if ((rx_in__o_kind == 2'h0) & (rx_in__o_ptype == 2'h1) & (~scyc_v_q | (rx_in__o_data[(0)+:(12)] != scyc_q))) begin
+                scyc_v_d = 1'b1;
+                scyc_d = rx_in__o_data[(0)+:(12)];
+                et_d = since_jk_q;
+            end
+            if ((rx_in__o_kind == 2'h0) & (rx_in__o_ptype == 2'h2)) begin
+                et_d = since_jk_q;
+            end
+        end
+        if (rx_in__o_hdr_bad | jk_bad) begin
+            et_d = since_jk_q;
+            if (jk_bad) begin
+                et_d = 20'h0;
+            end
+        end
+        if (base) begin
+            et_d = 20'h0;
+        end
+        if (~base & rx_in__o_wvalid & rx_in__o_ok & (rx_in__o_ptype == 2'h0) & (rx_in__o_kind == 2'h1) & (~dcyc_v_q | (rx_in__o_data[(12)+:(3)] != dcyc_q))) begin
+            rw_hdr_d = ret_rwc_q | rx_in__o_data[15] | wrapped;
+            last_cyc3_d = rx_in__o_data[(12)+:(3)];
+            ferr_owed_d = 12'h0;
+            if (armed_q) begin
+                ferr_owed_d = ({9'h0, cyc_gap3}) | 12'h0;
+            end
+        end
+        if (~base) begin
+            toggle_d = fwd__o_toggle;
+        end
+        if (~base) begin
+            swc__i_rw = rw_hdr_q;
+            swc__i_frame_start = inpkt_was_q & ~rx_in__o_inpkt;
+        end
+        if (~base) begin
+            aact__write_enable = 1'b0;
+            aact__write_address = mdb__o_s2_slot;
+            aact__write_data = mdb__o_s2_alive;
+            if (mdb__o_s2 & mdb__o_s2_ok & mdb__o_s2_act & ~failsafe_q) begin
+                aact__write_enable = 1'b1;
+            end
+            if (fwd__o_regen) begin
+                aact__write_enable = 1'b1;
+                aact__write_address = fwd__o_slot;
+                aact__write_data = ~aact__read_data;
+            end
+        end
+        if (~base) begin
+            rep__i_code = pass_code;
+            bss_pair = rep__o_line;
+            if (wrapped) begin
+                bss_pair = tst__o_line;
+            end
+            sbox__i_output = fwd__o_line;
+            sbox__i_bss = bss_pair;
+            dark__i_keep_po = 1'b0;
+        end
+        if (~base) begin
+            if (mdb__o_running & (i_prio != 3'h0) & armed_q & ~failsafe_q & ~rw_hdr_q & (et_q == i_elect)) begin
+                cb_d = 1'b1;
+                bcnt_d = i_period - takeover_lead;
+                cyc_d = ({9'h0, cyc_take}) | 12'h0;
+                last_num_d = (({9'h0, cyc_take}) | 12'h0) - 12'h1;
+                ret_rwc_d = 1'b0;
+                ret_rwp_d = 1'b0;
+                hop_ref_d = 12'h0;
+                whole_d = 2'h0;
+                clr_sent_d = 3'h0;
+                fs_request_d = 1'b0;
+                host_clear_d = 1'b0;
+            end
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial pend_rc_q = 1'h0;
+    always @(posedge clock) pend_rc_q <= pend_rc_d;
+    initial ret_rwp_q = 1'h0;
+    always @(posedge clock) ret_rwp_q <= ret_rwp_d;
+    initial sw_flush_q = 1'h0;
+    always @(posedge clock) sw_flush_q <= sw_flush_d;
+    initial rdl_q = 76'h0;
+    always @(posedge clock) rdl_q <= rdl_d;
+    initial rcd_q = 7'h0;
+    always @(posedge clock) rcd_q <= rcd_d;
+    initial rcd_run_q = 1'h0;
+    always @(posedge clock) rcd_run_q <= rcd_run_d;
+    initial rdata_q = 1'h0;
+    always @(posedge clock) rdata_q <= rdata_d;
+    initial relay_q = 1'h0;
+    always @(posedge clock) relay_q <= relay_d;
+    initial rlast_q = 1'h0;
+    always @(posedge clock) rlast_q <= rlast_d;
+    initial st_used_q = 1'h0;
+    always @(posedge clock) st_used_q <= st_used_d;
+    initial st_used_slot_q = 12'h0;
+    always @(posedge clock) st_used_slot_q <= st_used_slot_d;
+    initial st_r_q = 22'h0;
+    always @(posedge clock) st_r_q <= st_r_d;
+    initial aact_r_q = 1'h0;
+    always @(posedge clock) aact_r_q <= aact_r_d;
+    initial half_q = 1'h0;
+    always @(posedge clock) half_q <= half_d;
+    initial bcnt_q = 20'h0;
+    always @(posedge clock) bcnt_q <= bcnt_d;
+    initial cyc_q = 12'h0;
+    always @(posedge clock) cyc_q <= cyc_d;
+    initial cycles_q = 16'h0;
+    always @(posedge clock) cycles_q <= cycles_d;
+    initial toggle_q = 1'h0;
+    always @(posedge clock) toggle_q <= toggle_d;
+    initial fbusy_q = 1'h0;
+    always @(posedge clock) fbusy_q <= fbusy_d;
+    initial failsafe_q = 1'h0;
+    always @(posedge clock) failsafe_q <= failsafe_d;
+    initial fs_tx_q = 1'h0;
+    always @(posedge clock) fs_tx_q <= fs_tx_d;
+    initial ret_rwc_q = 1'h0;
+    always @(posedge clock) ret_rwc_q <= ret_rwc_d;
+    initial ret_cyc_q = 3'h0;
+    always @(posedge clock) ret_cyc_q <= ret_cyc_d;
+    initial hop_q = 12'h0;
+    always @(posedge clock) hop_q <= hop_d;
+    initial armed_q = 1'h0;
+    always @(posedge clock) armed_q <= armed_d;
+    initial ferr_owed_q = 12'h0;
+    always @(posedge clock) ferr_owed_q <= ferr_owed_d;
+    initial last_num_q = 12'h0;
+    always @(posedge clock) last_num_q <= last_num_d;
+    initial quiet_q = 20'h0;
+    always @(posedge clock) quiet_q <= quiet_d;
+    initial sec_sent_q = 1'h0;
+    always @(posedge clock) sec_sent_q <= sec_sent_d;
+    initial hop_ref_q = 12'h0;
+    always @(posedge clock) hop_ref_q <= hop_ref_d;
+    initial whole_q = 2'h0;
+    always @(posedge clock) whole_q <= whole_d;
+    initial clr_sent_q = 3'h0;
+    always @(posedge clock) clr_sent_q <= clr_sent_d;
+    initial ret_fs_q = 1'h0;
+    always @(posedge clock) ret_fs_q <= ret_fs_d;
+    initial ret_clr_q = 1'h0;
+    always @(posedge clock) ret_clr_q <= ret_clr_d;
+    initial ret_seen_q = 1'h0;
+    always @(posedge clock) ret_seen_q <= ret_seen_d;
+    initial fs_request_q = 1'h0;
+    always @(posedge clock) fs_request_q <= fs_request_d;
+    initial host_clear_q = 1'h0;
+    always @(posedge clock) host_clear_q <= host_clear_d;
+    initial sec_ok_q = 1'h0;
+    always @(posedge clock) sec_ok_q <= sec_ok_d;
+    initial sec_word_q = 16'h0;
+    always @(posedge clock) sec_word_q <= sec_word_d;
+    initial serr_q = 16'h0;
+    always @(posedge clock) serr_q <= serr_d;
+    initial perr_q = 16'h0;
+    always @(posedge clock) perr_q <= perr_d;
+    initial ferr_q = 16'h0;
+    always @(posedge clock) ferr_q <= ferr_d;
+    initial pend_fs_q = 1'h0;
+    always @(posedge clock) pend_fs_q <= pend_fs_d;
+    initial pend_i1_q = 1'h0;
+    always @(posedge clock) pend_i1_q <= pend_i1_d;
+    initial pend_i2_q = 1'h0;
+    always @(posedge clock) pend_i2_q <= pend_i2_d;
+    initial prev_alarm_q = 1'h0;
+    always @(posedge clock) prev_alarm_q <= prev_alarm_d;
+    initial fl_v_q = 1'h0;
+    always @(posedge clock) fl_v_q <= fl_v_d;
+    initial fl_r_q = 4'h0;
+    always @(posedge clock) fl_r_q <= fl_r_d;
+    initial nxt_q = 1'h0;
+    always @(posedge clock) nxt_q <= nxt_d;
+    initial await_rb_q = 1'h0;
+    always @(posedge clock) await_rb_q <= await_rb_d;
+    initial fs_cleared_q = 1'h0;
+    always @(posedge clock) fs_cleared_q <= fs_cleared_d;
+    initial cb_q = 1'h0;
+    always @(posedge clock) cb_q <= cb_d;
+    initial join_r_q = 1'h0;
+    always @(posedge clock) join_r_q <= join_r_d;
+    initial et_q = 20'h0;
+    always @(posedge clock) et_q <= et_d;
+    initial in_last_q = 1'h0;
+    always @(posedge clock) in_last_q <= in_last_d;
+    initial in_code_q = 39'h0;
+    always @(posedge clock) in_code_q <= in_code_d;
+    initial since_jk_q = 20'h0;
+    always @(posedge clock) since_jk_q <= since_jk_d;
+    initial dcyc_q = 3'h0;
+    always @(posedge clock) dcyc_q <= dcyc_d;
+    initial dcyc_v_q = 1'h0;
+    always @(posedge clock) dcyc_v_q <= dcyc_v_d;
+    initial scyc_q = 12'h0;
+    always @(posedge clock) scyc_q <= scyc_d;
+    initial scyc_v_q = 1'h0;
+    always @(posedge clock) scyc_v_q <= scyc_v_d;
+    initial rw_hdr_q = 1'h0;
+    always @(posedge clock) rw_hdr_q <= rw_hdr_d;
+    initial last_cyc3_q = 3'h0;
+    always @(posedge clock) last_cyc3_q <= last_cyc3_d;
+    initial fwd_cut_q = 1'h0;
+    always @(posedge clock) fwd_cut_q <= fwd_cut_d;
+    initial rep_cut_q = 1'h0;
+    always @(posedge clock) rep_cut_q <= rep_cut_d;
+    initial inpkt_was_q = 1'h0;
+    always @(posedge clock) inpkt_was_q <= inpkt_was_d;
+endmodule // merkur_special_master
+// --------------------------------------------------------------------------
+// `aact` of `merkur_special_master`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__aact(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[0:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {1{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__aact
+// --------------------------------------------------------------------------
+// `dark`: SwDark, Dark time of the physical outputs after a switchbox change. (rtl/src/node/sw_dark.rs)
+//
+// # sw_dark — dark physical outputs after a switchbox change (protocol §10)
+//
+// Purpose: when a node's switchbox changes mode, what its PO and SO carry
+// comes from another source (OUTPUT, the secondary pass-through, the TST
+// generator) in the middle of whatever the old source was sending. A
+// downstream receiver inside a packet would take the new source's bits as
+// the rest of its word (a splice that can pass both parities with a foreign
+// value) or stay inside a cut TST until three idle groups have passed. So
+// for [`DARK_CLOCKS`] (12 bit times) after a change both outputs hold their
+// level: every downstream receiver mutes ([`crate::line::cdr::MUTE_SAMPLES`], 8
+// bit times) and ends its packet, dropping the word it was in (not
+// received, protocol §5), and hunts for the next J K; 12 bit times are
+// well under loss of signal (32), so no stream controller fails. An
+// output whose source stays the same (`i_keep_po`: the special master's
+// PO, its own frame generator in N and in WU) is not darkened, so the
+// frame it is sending is not cut.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_change` | in | 1 | clock | the switchbox mode changes at the next clock edge |
+// | `i_keep_po` | in | 1 | clock | with `i_change`: PO keeps its source (not darkened) |
+// | `i_po`, `i_so` | in | 2 | clock | the switchbox's physical outputs, DDR pairs |
+// | `o_po`, `o_so` | out | 2 | clock | the same, dark (level held) for [`DARK_CLOCKS`] after a change |
+//
+// Latency: combinational (0 clocks) outside the dark time.
+//
+// ```text
+// i_change  __/‾\______________________________
+// i_po      ==X===X===X===X===X===X===X===X====   (new source from the next clock)
+// o_po      ==X===|___ level held, 24 clocks __|X===X====
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__dark(clock,i_change,i_keep_po,i_po,i_so,o_po,o_so);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_change;
+    input wire  i_keep_po;
+    input wire  [1:0] i_po;
+    input wire  [1:0] i_so;
+    output reg  [1:0] o_po;
+    output reg  [1:0] o_so;
+
+    // Constant declarations
+    localparam  dark_clocks = 5'b11000;
+
+    // Registers and child block ports
+    reg  [4:0] dark_d;
+    reg  [4:0] dark_q;
+    reg  dark_po_d;
+    reg  dark_po_q;
+    reg  lvl_po_d;
+    reg  lvl_po_q;
+    reg  lvl_so_d;
+    reg  lvl_so_q;
+
+    // Combinational logic
+    always @(*) begin
+        dark_d = dark_q;
+        dark_po_d = dark_po_q;
+        lvl_po_d = lvl_po_q;
+        lvl_so_d = lvl_so_q;
+        o_po = i_po;
+        o_so = i_so;
+        if (dark_q != 5'h0) begin
+            dark_d = dark_q - 5'h1;
+            if (dark_po_q) begin
+                o_po = 2'h0;
+                if (lvl_po_q) begin
+                    o_po = 2'h3;
+                end
+            end
+            o_so = 2'h0;
+            if (lvl_so_q) begin
+                o_so = 2'h3;
+            end
+        end
+        lvl_po_d = o_po[1];
+        lvl_so_d = o_so[1];
+        if (i_change) begin
+            dark_d = dark_clocks;
+            dark_po_d = ~i_keep_po;
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial dark_q = 5'h0;
+    always @(posedge clock) dark_q <= dark_d;
+    initial dark_po_q = 1'h0;
+    always @(posedge clock) dark_po_q <= dark_po_d;
+    initial lvl_po_q = 1'h0;
+    always @(posedge clock) lvl_po_q <= lvl_po_d;
+    initial lvl_so_q = 1'h0;
+    always @(posedge clock) lvl_so_q <= lvl_so_d;
+endmodule // merkur_special_master__dark
+// --------------------------------------------------------------------------
+// `ftx`: PktTx, Packet generator. (rtl/src/node/pkt_tx.rs)
+//
+// # pkt_tx — packet generator of the special master (protocol §3–§5)
+//
+// Purpose: sends one packet per `i_start` on the node's own clock: J K, the
+// header words H0 and H1 (ALARM = 0; ALIVE = 0 but for H0's CLR flag,
+// `i_h0_alive`, protocol §5, §12), and — for a DATA frame
+// (`i_slots` = 1) — `i_slots_m1 + 1` slot words, each taken from
+// `i_word_*` when its turn comes (`o_take` is high in that clock; `o_slot`
+// is the slot whose word must be on `i_word_*`; it moves to the first slot
+// when a frame starts, 60 bit times before that slot is due). A VOID word (`i_word_void`) is five S
+// groups. Idles (all ones) between packets. Words are encoded as the
+// protocol's §4 (flags first, two odd parities last), 4B/5B, NRZI.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_start` | in | 1 | clock | start a packet at the next group boundary (ignored while busy) |
+// | `i_slots` | in | 1 | clock | the packet carries slot words (DATA) |
+// | `i_slots_m1` | in | 12 | static | slot words − 1 |
+// | `i_h0`, `i_h1` | in | 16 | clock | header words, taken when they are due |
+// | `i_h0_alive` | in | 1 | clock | H0's ALIVE bit (a DATA frame's CLR), taken with `i_h0` |
+// | `i_word_data` | in | 16 | clock | data of slot `o_slot` |
+// | `i_word_alive`, `i_word_alarm`, `i_word_void` | in | 1 | clock | its flags / VOID |
+// | `o_slot` | out | 12 | clock | slot whose word is due next |
+// | `o_take` | out | 1 | clock | the word of `o_slot` is taken in this clock (combinational) |
+// | `o_busy` | out | 1 | clock | a packet is being sent |
+// | `o_line` | out | 2 | clock | line, DDR pair |
+//
+// Latency: the J group starts 1–5 bit times after `i_start` (group
+// boundary); each word's fields are taken 5 bit times before its first bit.
+//
+// ```text
+// i_start  _/‾\_________________________________________________
+// o_line   ~idle~| J K | H0 | H1 | slot 0 | slot 1 | ... |~idle~
+// o_take   ______________________^ (slot 0)  ^ (slot 1)  ...
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h0_alive,i_word_data,i_word_alive,i_word_alarm,i_word_void,o_slot,o_take,o_busy,o_line);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_start;
+    input wire  i_slots;
+    input wire  [11:0] i_slots_m1;
+    input wire  [15:0] i_h0;
+    input wire  [15:0] i_h1;
+    input wire  i_h0_alive;
+    input wire  [15:0] i_word_data;
+    input wire  i_word_alive;
+    input wire  i_word_alarm;
+    input wire  i_word_void;
+    output reg  [11:0] o_slot;
+    output reg  o_take;
+    output reg  o_busy;
+    output reg  [1:0] o_line;
+
+    // Registers and child block ports
+    reg  [4:0] enc__i_sym;
+    wire  [4:0] enc__o_code;
+    reg  tx__i_bit_en;
+    reg  [4:0] tx__i_code;
+    wire  tx__o_take;
+    wire  tx__o_line;
+    reg  half_d;
+    reg  half_q;
+    reg  pend_d;
+    reg  pend_q;
+    reg  busy_d;
+    reg  busy_q;
+    reg  [1:0] wcnt_d;
+    reg  [1:0] wcnt_q;
+    reg  [2:0] grp_d;
+    reg  [2:0] grp_q;
+    reg  [11:0] slot_d;
+    reg  [11:0] slot_q;
+    reg  last_d;
+    reg  last_q;
+    reg  [15:0] w_data_d;
+    reg  [15:0] w_data_q;
+    reg  w_alive_d;
+    reg  w_alive_q;
+    reg  w_alarm_d;
+    reg  w_alarm_q;
+    reg  w_void_d;
+    reg  w_void_q;
+
+    // Local signals
+    reg  [3:0] nib;
+    reg  p_a;
+    reg  p_b;
+    reg  [4:0] sym;
+
+    // Child blocks
+    merkur_special_master__ftx__enc enc(
+        .i_sym(enc__i_sym),
+        .o_code(enc__o_code)
+    );
+    merkur_special_master__ftx__tx tx(
+        .clock(clock),
+        .i_bit_en(tx__i_bit_en),
+        .i_code(tx__i_code),
+        .o_take(tx__o_take),
+        .o_line(tx__o_line)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        half_d = half_q;
+        pend_d = pend_q;
+        busy_d = busy_q;
+        wcnt_d = wcnt_q;
+        grp_d = grp_q;
+        slot_d = slot_q;
+        last_d = last_q;
+        w_data_d = w_data_q;
+        w_alive_d = w_alive_q;
+        w_alarm_d = w_alarm_q;
+        w_void_d = w_void_q;
+        half_d = ~half_q;
+        tx__i_bit_en = half_q;
+        if (i_start & ~busy_q) begin
+            pend_d = 1'b1;
+        end
+        p_a = ~(w_alarm_q ^ w_alive_q ^ w_data_q[5] ^ w_data_q[4] ^ w_data_q[9] ^ w_data_q[8] ^ w_data_q[13] ^ w_data_q[12] ^ w_data_q[15]);
+        p_b = ~(w_alive_q ^ w_data_q[1] ^ w_data_q[0] ^ w_data_q[4] ^ w_data_q[3] ^ w_data_q[2] ^ w_data_q[8] ^ w_data_q[7] ^ w_data_q[6] ^ w_data_q[12] ^ w_data_q[11] ^ w_data_q[10] ^ w_data_q[15] ^ w_data_q[14]);
+        nib = w_data_q[(0)+:(4)] & 4'h3;
+        if (w_alarm_q) begin
+            nib = nib | 4'h8;
+        end
+        if (w_alive_q) begin
+            nib = nib | 4'h4;
+        end
+        if (grp_q == 3'h1) begin
+            nib = w_data_q[(2)+:(4)];
+        end
+        if (grp_q == 3'h2) begin
+            nib = w_data_q[(6)+:(4)];
+        end
+        if (grp_q == 3'h3) begin
+            nib = w_data_q[(10)+:(4)];
+        end
+        if (grp_q == 3'h4) begin
+            nib = (w_data_q[(12)+:(4)] >> 1) & 4'h6;
+            if (p_a) begin
+                nib = nib | 4'h8;
+            end
+            if (p_b) begin
+                nib = nib | 4'h1;
+            end
+        end
+        sym = 5'h0;
+        if (nib[0]) begin
+            sym = sym | 5'h1;
+        end
+        if (nib[1]) begin
+            sym = sym | 5'h2;
+        end
+        if (nib[2]) begin
+            sym = sym | 5'h4;
+        end
+        if (nib[3]) begin
+            sym = sym | 5'h8;
+        end
+        if (w_void_q) begin
+            sym = 5'h13;
+        end
+        if (wcnt_q == 2'h0) begin
+            sym = 5'h11;
+        end
+        if (~busy_q) begin
+            sym = 5'h12;
+            if (pend_q) begin
+                sym = 5'h10;
+            end
+        end
+        enc__i_sym = sym;
+        tx__i_code = enc__o_code;
+        o_take = 1'b0;
+        if (tx__o_take) begin
+            if (~busy_q) begin
+                if (pend_q) begin
+                    busy_d = 1'b1;
+                    pend_d = 1'b0;
+                    wcnt_d = 2'h0;
+                    grp_d = 3'h4;
+                    slot_d = 12'h0;
+                    last_d = 1'b0;
+                end
+            end
+            else if (grp_q == 3'h4) begin
+                grp_d = 3'h0;
+                w_alive_d = 1'b0;
+                w_alarm_d = 1'b0;
+                w_void_d = 1'b0;
+                if (wcnt_q == 2'h0) begin
+                    wcnt_d = 2'h1;
+                    w_data_d = i_h0;
+                    w_alive_d = i_h0_alive;
+                end
+                else if (wcnt_q == 2'h1) begin
+                    wcnt_d = 2'h2;
+                    w_data_d = i_h1;
+                end
+                else if (((wcnt_q == 2'h2) & ~i_slots) | ((wcnt_q == 2'h3) & last_q)) begin
+                    busy_d = 1'b0;
+                end
+                else begin
+                    slot_d = slot_q + 12'h1;
+                    last_d = slot_q == i_slots_m1;
+                    wcnt_d = 2'h3;
+                    w_data_d = i_word_data;
+                    w_alive_d = i_word_alive;
+                    w_alarm_d = i_word_alarm;
+                    w_void_d = i_word_void;
+                    o_take = 1'b1;
+                end
+            end
+            else begin
+                grp_d = grp_q + 3'h1;
+            end
+        end
+        o_slot = slot_q;
+        o_busy = busy_q | pend_q;
+        o_line = 2'h0;
+        if (tx__o_line) begin
+            o_line = 2'h3;
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial half_q = 1'h0;
+    always @(posedge clock) half_q <= half_d;
+    initial pend_q = 1'h0;
+    always @(posedge clock) pend_q <= pend_d;
+    initial busy_q = 1'h0;
+    always @(posedge clock) busy_q <= busy_d;
+    initial wcnt_q = 2'h0;
+    always @(posedge clock) wcnt_q <= wcnt_d;
+    initial grp_q = 3'h0;
+    always @(posedge clock) grp_q <= grp_d;
+    initial slot_q = 12'h0;
+    always @(posedge clock) slot_q <= slot_d;
+    initial last_q = 1'h0;
+    always @(posedge clock) last_q <= last_d;
+    initial w_data_q = 16'h0;
+    always @(posedge clock) w_data_q <= w_data_d;
+    initial w_alive_q = 1'h0;
+    always @(posedge clock) w_alive_q <= w_alive_d;
+    initial w_alarm_q = 1'h0;
+    always @(posedge clock) w_alarm_q <= w_alarm_d;
+    initial w_void_q = 1'h0;
+    always @(posedge clock) w_void_q <= w_void_d;
+endmodule // merkur_special_master__ftx
+// --------------------------------------------------------------------------
+// `enc`: Enc4b5b, 4B/5B encoder. (rtl/src/line/enc4b5b.rs)
+//
+// # enc4b5b — 4B/5B symbol encoder (protocol §2)
+//
+// Purpose: maps a symbol number to its 5-bit code group. Symbols 0..=15 are
+// data nibbles; [`SYM_J`], [`SYM_K`], [`SYM_I`], [`SYM_S`] are the control
+// groups. Any other symbol number gives I (idle), so the line never carries
+// an undefined group.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `i_sym` | in | 5 | — (combinational) | symbol number |
+// | `o_code` | out | 5 | — | code group, bit 4 sent first |
+//
+// Latency: combinational (0 clocks).
+//
+// ```text
+// i_sym   ==X== 0x0 ==X== 0x10 (J) ==X== 0x12 (I) ==
+// o_code  ==X= 11110 =X== 11000 ====X== 11111 =====
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__ftx__enc(i_sym,o_code);
+
+    // Module arguments
+    input wire  [4:0] i_sym;
+    output reg  [4:0] o_code;
+
+    // Registers and child block ports
+    wire  [4:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__ftx__enc__rom rom(
+        .address(i_sym),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_code = rom__data;
+    end
+
+endmodule // merkur_special_master__ftx__enc
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__ftx__enc`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__ftx__enc__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [4:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 5'b11110;
+      5'b1: data = 5'b1001;
+      5'b10: data = 5'b10100;
+      5'b11: data = 5'b10101;
+      5'b100: data = 5'b1010;
+      5'b101: data = 5'b1011;
+      5'b110: data = 5'b1110;
+      5'b111: data = 5'b1111;
+      5'b1000: data = 5'b10010;
+      5'b1001: data = 5'b10011;
+      5'b1010: data = 5'b10110;
+      5'b1011: data = 5'b10111;
+      5'b1100: data = 5'b11010;
+      5'b1101: data = 5'b11011;
+      5'b1110: data = 5'b11100;
+      5'b1111: data = 5'b11101;
+      5'b10000: data = 5'b11000;
+      5'b10001: data = 5'b10001;
+      5'b10010: data = 5'b11111;
+      5'b10011: data = 5'b11001;
+      5'b10100: data = 5'b11111;
+      5'b10101: data = 5'b11111;
+      5'b10110: data = 5'b11111;
+      5'b10111: data = 5'b11111;
+      5'b11000: data = 5'b11111;
+      5'b11001: data = 5'b11111;
+      5'b11010: data = 5'b11111;
+      5'b11011: data = 5'b11111;
+      5'b11100: data = 5'b11111;
+      5'b11101: data = 5'b11111;
+      5'b11110: data = 5'b11111;
+      5'b11111: data = 5'b11111;
+      default: data = 5'b0;
+    endcase
+
+endmodule // merkur_special_master__ftx__enc__rom
+// --------------------------------------------------------------------------
+// `tx`: NrziTx, Serializer + NRZI modulator. (rtl/src/line/nrzi_tx.rs)
+//
+// # nrzi_tx — code-group serializer with NRZI (protocol §2)
+//
+// Purpose: sends 5-bit code groups bit by bit, most significant bit first,
+// NRZI-modulated: a 1 toggles `o_line`, a 0 keeps it. One bit per
+// `i_bit_en` (the node's bit-time enable, tied high when the core clock is
+// the bit clock). The group on `i_code` is taken in the clock where `o_take`
+// is high (the first bit time of each group), so the feeding logic has the
+// whole previous group's time to prepare it.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock |
+// | `i_bit_en` | in | 1 | clock | one bit time |
+// | `i_code` | in | 5 | clock | next code group, sampled when `o_take` |
+// | `o_take` | out | 1 | clock | `i_code` is taken in this clock |
+// | `o_line` | out | 1 | clock | NRZI line level (registered) |
+//
+// Latency: `o_line` shows a group's first bit one clock after the clock in
+// which `o_take` was high; a group occupies 5 bit times.
+//
+// ```text
+// clock     _/‾\_/‾\_/‾\_/‾\_/‾\_/‾\_/‾\_
+// i_bit_en  ‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾ (tied high)
+// o_take    ‾‾‾\___________________/‾‾‾‾
+// i_code    = G0 =================== G1 =
+// code bit      g0[4] g0[3] g0[2] g0[1] g0[0] g1[4]
+// o_line    ____ toggles on every 1 bit ____
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__ftx__tx(clock,i_bit_en,i_code,o_take,o_line);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_bit_en;
+    input wire  [4:0] i_code;
+    output reg  o_take;
+    output reg  o_line;
+
+    // Registers and child block ports
+    reg  [4:0] shift_d;
+    reg  [4:0] shift_q;
+    reg  [2:0] count_d;
+    reg  [2:0] count_q;
+    reg  level_d;
+    reg  level_q;
+
+    // Combinational logic
+    always @(*) begin
+        shift_d = shift_q;
+        count_d = count_q;
+        level_d = level_q;
+        o_take = i_bit_en & (count_q == 3'h0);
+        o_line = level_q;
+        if (i_bit_en) begin
+            if (count_q == 3'h0) begin
+                level_d = level_q ^ i_code[4];
+                shift_d = i_code << 1;
+            end
+            else begin
+                level_d = level_q ^ shift_q[4];
+                shift_d = shift_q << 1;
+            end
+            if (count_q == 3'h4) begin
+                count_d = 3'h0;
+            end
+            else begin
+                count_d = count_q + 3'h1;
+            end
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial shift_q = 5'h0;
+    always @(posedge clock) shift_q <= shift_d;
+    initial count_q = 3'h0;
+    always @(posedge clock) count_q <= count_d;
+    initial level_q = 1'h0;
+    always @(posedge clock) level_q <= level_d;
+endmodule // merkur_special_master__ftx__tx
+// --------------------------------------------------------------------------
+// `fwd`: Fwd, Cut-through forwarder of a slave node. (rtl/src/node/fwd.rs)
+//
+// # fwd — cut-through forwarder: the slave's slot shift register (protocol §4, §5, §7)
+//
+// Purpose: repeats the INPUT stream on OUTPUT, bit for bit on the recovered
+// timing, five code bits (one group) behind, and changes what the node
+// changes on the way:
+// - H0: sets FS when the node is in failsafe, RWC when it is wrapped;
+// - H1: adds 1 to HOP (carry running forward through the nibbles);
+// - its own slot (`i_address`; in a master (`i_master`) every slot whose
+//   `i_slot_cfg` is LOCAL or ACT): a **sensor** or a master's LOCAL slot writes a fresh word
+//   `{i_sensor_data, ALIVE = toggle}` or an alarm; an **actuator** replaces
+//   ALIVE with its toggle, or — when the first group shows VOID or an alarm
+//   (its own, coming back) — writes `{i_act_out, toggle}`, or its alarm;
+//   a **master's ACT slot** gets `i_slot_data` with the actuator's ALIVE
+//   kept, or — on VOID — `{i_slot_data, NOT i_slot_alive}` (`o_regen`);
+// - parities are fixed in the word's last group from the changes made
+//   (delta parity), so a word that arrived bad leaves bad — and **marked**:
+//   its last group goes out as T (protocol §4), so the next receivers know
+//   it was damaged before their fibre (their stream controllers count only
+//   their own fibre's errors);
+// - H0's FS bit: set when the node is in failsafe, unless the header
+//   carries CLR (its ALIVE bit, in the first group) and arrived with FS = 0:
+//   the node leaves failsafe at that header (protocol §12).
+//
+// Everything else, including J K, idles, bad groups and packets after a
+// rejected header (`i_hdr_bad`), passes unchanged; three idle groups in a
+// row end a packet that was cut short upstream (as [`crate::line::rx_word`]), and
+// so does a dead INPUT (no bit for [`DEAD_CLOCKS`]: the clock recovery
+// muted), which also refills the
+// group delay with idles. A frame whose header was processed toggles the
+// Alive flip-flop even when it was cut short. The Alive flip-flop
+// toggles after each processed DATA packet. Alarms: `i_alarm_req` with
+// `i_alarm_reason` and `i_alarm_seq` is sent in the home slot if the previous
+// cycle's home word was data (alternation); `o_alarm_sent` pulses when it
+// goes out.
+// The output bits go through a [`Retime`] buffer and out on the node's own
+// clock (DDR pair), so the receiver's sampling error is not passed on.
+//
+// Parameters: none (basic 25-bit words; the extended-alarm variant is not
+// implemented by this block yet).
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_bvalid`, `i_level`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits (from [`crate::node::port_rx`]) |
+// | `i_hdr_bad` | in | 1 | clock | header rejected, or not a DATA packet: pass the rest unchanged |
+// | `i_mute` | in | 1 | clock | send idles for the code bits arriving from now on (a TST's rest) |
+// | `i_slots_m1`, `i_address` | in | 12 | static | slot count − 1, home slot |
+// | `i_actuator` | in | 1 | static | 1 actuator, 0 sensor |
+// | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
+// | `i_act_out` | in | 16 | clock | actuator output register |
+// | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
+// | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (`D[11]`) |
+// | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
+// | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
+// | `o_slot` | out | 12 | clock | slot of the word passing |
+// | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
+// | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
+// | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
+// | `o_pkt_done` | out | 1 | clock | a DATA packet's last slot went through |
+// | `o_toggle` | out | 1 | clock | the Alive flip-flop |
+// | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
+//
+// Pipeline (issue 20: every stage a few levels of logic at 2 × the line
+// rate): stage A decodes a group in the clock its last bit arrives (and
+// the action of a word's first group); stage B, the next clock, decides
+// the rewrite from registers (the word flags and the fresh word with its
+// parities are prepared a clock ahead, `pre_*`, `f_*`); stage C, the
+// clock after, encodes it into the delay line and sums the delta parity.
+//
+// Latency: 6 bit times (one group and one bit, so that stage C's rewrite
+// is in place before the group's first bit leaves) from INPUT bit to the
+// retime buffer, which sends it 2.5 ± 0.5 bit times after its receive
+// clock; with the CDR 9.5–10.5 bit times from the node's input samples
+// to its output line, 10–11 from fibre to fibre with the top's capture
+// register (measured at the fibres, docs/benchmarks.md).
+//
+// ```text
+// in code   | N0 | N1 | N2 | N3 | N4 | ...
+// out code       | N0'| N1'| N2'| N3'| N4'|        N0 decides, N4' fixes the parities
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,o_slot,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_bvalid;
+    input wire  i_level;
+    input wire  [1:0] i_phase;
+    input wire  i_hdr_bad;
+    input wire  i_mute;
+    input wire  [11:0] i_slots_m1;
+    input wire  [11:0] i_address;
+    input wire  i_actuator;
+    input wire  [15:0] i_sensor_data;
+    input wire  [15:0] i_act_out;
+    input wire  i_fs;
+    input wire  i_wrapped;
+    input wire  i_alarm_req;
+    input wire  [3:0] i_alarm_reason;
+    input wire  i_alarm_seq;
+    input wire  i_master;
+    input wire  [1:0] i_slot_cfg;
+    input wire  [15:0] i_slot_data;
+    input wire  i_slot_alive;
+    output reg  [11:0] o_slot;
+    output reg  o_regen;
+    output reg  o_alarm_sent;
+    output reg  [3:0] o_sent_reason;
+    output reg  o_prev_alarm;
+    output reg  o_pkt_done;
+    output reg  o_toggle;
+    output reg  [1:0] o_line;
+
+    // Constant declarations
+    localparam  jk = 10'b1100010001;
+    localparam  dead_after = 4'h6;
+
+    // Registers and child block ports
+    reg  prev_d;
+    reg  prev_q;
+    reg  [9:0] window_d;
+    reg  [9:0] window_q;
+    reg  [5:0] delay_d;
+    reg  [5:0] delay_q;
+    reg  c_pend_d;
+    reg  c_pend_q;
+    reg  [3:0] c_nib_d;
+    reg  [3:0] c_nib_q;
+    reg  [3:0] c_orig_d;
+    reg  [3:0] c_orig_q;
+    reg  c_write_d;
+    reg  c_write_q;
+    reg  c_mark_d;
+    reg  c_mark_q;
+    reg  c_first_d;
+    reg  c_first_q;
+    reg  c_shift_d;
+    reg  c_shift_q;
+    reg  g_pend_d;
+    reg  g_pend_q;
+    reg  g_cut_d;
+    reg  g_cut_q;
+    reg  [3:0] g_nib_d;
+    reg  [3:0] g_nib_q;
+    reg  g_dat_d;
+    reg  g_dat_q;
+    reg  g_sym_s_d;
+    reg  g_sym_s_q;
+    reg  [2:0] g_act_d;
+    reg  [2:0] g_act_q;
+    reg  inpkt_d;
+    reg  inpkt_q;
+    reg  [1:0] idles_d;
+    reg  [1:0] idles_q;
+    reg  [3:0] quiet_d;
+    reg  [3:0] quiet_q;
+    reg  [2:0] bitc_d;
+    reg  [2:0] bitc_q;
+    reg  [2:0] gidx_d;
+    reg  [2:0] gidx_q;
+    reg  [1:0] wcount_d;
+    reg  [1:0] wcount_q;
+    reg  [11:0] slot_d;
+    reg  [11:0] slot_q;
+    reg  dead_d;
+    reg  dead_q;
+    reg  [2:0] action_d;
+    reg  [2:0] action_q;
+    reg  in_pa_d;
+    reg  in_pa_q;
+    reg  in_pb_d;
+    reg  in_pb_q;
+    reg  in_data_d;
+    reg  in_data_q;
+    reg  in_s_d;
+    reg  in_s_q;
+    reg  clr_h0_d;
+    reg  clr_h0_q;
+    reg  d_a_d;
+    reg  d_a_q;
+    reg  d_b_d;
+    reg  d_b_q;
+    reg  carry_d;
+    reg  carry_q;
+    reg  [15:0] f_data_d;
+    reg  [15:0] f_data_q;
+    reg  f_alive_d;
+    reg  f_alive_q;
+    reg  f_alarm_d;
+    reg  f_alarm_q;
+    reg  [3:0] f_reason_d;
+    reg  [3:0] f_reason_q;
+    reg  f_pa_d;
+    reg  f_pa_q;
+    reg  f_pb_d;
+    reg  f_pb_q;
+    reg  pre_home_d;
+    reg  pre_home_q;
+    reg  fs_r_d;
+    reg  fs_r_q;
+    reg  wr_r_d;
+    reg  wr_r_q;
+    reg  pre_own_d;
+    reg  pre_own_q;
+    reg  toggle_d;
+    reg  toggle_q;
+    reg  prev_alarm_d;
+    reg  prev_alarm_q;
+    reg  out__i_code;
+    wire  [1:0] out__o_line;
+    wire  out__o_slip;
+    reg  sent_d;
+    reg  sent_q;
+    reg  [3:0] sent_reason_d;
+    reg  [3:0] sent_reason_q;
+    reg  done_d;
+    reg  done_q;
+    reg  regen_d;
+    reg  regen_q;
+
+    // Local signals
+    reg  code;
+    reg  [9:0] shifted;
+    reg  [4:0] group;
+    reg  [3:0] dec_nib;
+    reg  dec_data;
+    reg  dec_s;
+    reg  [3:0] nib;
+    reg  g_data;
+    reg  g_s;
+    reg  [4:0] code_w;
+    reg  [5:0] code_w6;
+    reg  in_code;
+    reg  [4:0] code_out;
+    reg  [2:0] act_now;
+    reg  [2:0] act_c;
+    reg  [3:0] nib_out;
+    reg  recode;
+    reg  [3:0] diff;
+    reg  home_c;
+    reg  own_c;
+    reg  send_c;
+    reg  [15:0] fresh_data;
+    reg  fresh_alive;
+    reg  cut;
+    reg  pa_fix;
+    reg  pb_fix;
+    reg  [3:0] inc2;
+    reg  [3:0] inc4;
+    reg  out_bit;
+    reg  arrived_bad;
+
+    // Child blocks
+    merkur_special_master__fwd__out out(
+        .clock(clock),
+        .i_valid(i_bvalid),
+        .i_code(out__i_code),
+        .i_phase(i_phase),
+        .o_line(out__o_line),
+        .o_slip(out__o_slip)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        prev_d = prev_q;
+        window_d = window_q;
+        delay_d = delay_q;
+        c_pend_d = c_pend_q;
+        c_nib_d = c_nib_q;
+        c_orig_d = c_orig_q;
+        c_write_d = c_write_q;
+        c_mark_d = c_mark_q;
+        c_first_d = c_first_q;
+        c_shift_d = c_shift_q;
+        g_pend_d = g_pend_q;
+        g_cut_d = g_cut_q;
+        g_nib_d = g_nib_q;
+        g_dat_d = g_dat_q;
+        g_sym_s_d = g_sym_s_q;
+        g_act_d = g_act_q;
+        inpkt_d = inpkt_q;
+        idles_d = idles_q;
+        quiet_d = quiet_q;
+        bitc_d = bitc_q;
+        gidx_d = gidx_q;
+        wcount_d = wcount_q;
+        slot_d = slot_q;
+        dead_d = dead_q;
+        action_d = action_q;
+        d_a_d = d_a_q;
+        d_b_d = d_b_q;
+        carry_d = carry_q;
+        f_data_d = f_data_q;
+        f_alive_d = f_alive_q;
+        f_alarm_d = f_alarm_q;
+        f_reason_d = f_reason_q;
+        f_pa_d = f_pa_q;
+        f_pb_d = f_pb_q;
+        pre_home_d = pre_home_q;
+        fs_r_d = fs_r_q;
+        wr_r_d = wr_r_q;
+        pre_own_d = pre_own_q;
+        toggle_d = toggle_q;
+        prev_alarm_d = prev_alarm_q;
+        sent_d = sent_q;
+        sent_reason_d = sent_reason_q;
+        done_d = done_q;
+        regen_d = regen_q;
+        in_pa_d = in_pa_q;
+        in_pb_d = in_pb_q;
+        in_data_d = in_data_q;
+        in_s_d = in_s_q;
+        clr_h0_d = clr_h0_q;
+        code = i_level ^ prev_q;
+        shifted = window_q << 1;
+        if (code) begin
+            shifted = (window_q << 1) | 10'h1;
+        end
+        group = shifted[(0)+:(5)];
+        dec_nib = 4'h0;
+        dec_data = 1'b0;
+        if (group == 5'h1e) begin
+            dec_nib = 4'h0;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h9) begin
+            dec_nib = 4'h1;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h14) begin
+            dec_nib = 4'h2;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h15) begin
+            dec_nib = 4'h3;
+            dec_data = 1'b1;
+        end
+        if (group == 5'ha) begin
+            dec_nib = 4'h4;
+            dec_data = 1'b1;
+        end
+        if (group == 5'hb) begin
+            dec_nib = 4'h5;
+            dec_data = 1'b1;
+        end
+        if (group == 5'he) begin
+            dec_nib = 4'h6;
+            dec_data = 1'b1;
+        end
+        if (group == 5'hf) begin
+            dec_nib = 4'h7;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h12) begin
+            dec_nib = 4'h8;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h13) begin
+            dec_nib = 4'h9;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h16) begin
+            dec_nib = 4'ha;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h17) begin
+            dec_nib = 4'hb;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h1a) begin
+            dec_nib = 4'hc;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h1b) begin
+            dec_nib = 4'hd;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h1c) begin
+            dec_nib = 4'he;
+            dec_data = 1'b1;
+        end
+        if (group == 5'h1d) begin
+            dec_nib = 4'hf;
+            dec_data = 1'b1;
+        end
+        dec_s = group == 5'h19;
+        nib = g_nib_q;
+        g_data = g_dat_q;
+        g_s = g_sym_s_q;
+        fs_r_d = i_fs;
+        wr_r_d = i_wrapped;
+        home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~dead_q & ~fs_r_q;
+        send_c = home_c & i_alarm_req & ~prev_alarm_q & (~i_master | (i_slot_cfg != 2'h0));
+        own_c = home_c;
+        if (i_master) begin
+            own_c = (wcount_q == 2'h2) & (i_slot_cfg != 2'h0) & ((i_slot_cfg != 2'h3) | send_c) & ~dead_q & ~fs_r_q;
+        end
+        pre_home_d = home_c;
+        pre_own_d = own_c;
+        act_c = action_q;
+        if (gidx_q == 3'h0) begin
+            act_c = 3'h0;
+            if (~dead_q) begin
+                if (wcount_q == 2'h0) begin
+                    act_c = 3'h1;
+                end
+                if (wcount_q == 2'h1) begin
+                    act_c = 3'h2;
+                end
+            end
+            if (own_c) begin
+                act_c = 3'h3;
+                if (i_actuator & ~i_master & ~send_c) begin
+                    if (dec_data & ~dec_nib[3]) begin
+                        act_c = 3'h4;
+                    end
+                    if (~dec_data & ~dec_s) begin
+                        act_c = 3'h0;
+                    end
+                end
+                if (i_master & (i_slot_cfg == 2'h2) & ~send_c) begin
+                    act_c = 3'h0;
+                    if (dec_data & ~dec_nib[3]) begin
+                        act_c = 3'h5;
+                    end
+                    if (dec_s) begin
+                        act_c = 3'h3;
+                    end
+                end
+            end
+        end
+        act_now = g_act_q;
+        fresh_alive = toggle_q;
+        fresh_data = i_sensor_data;
+        if (i_actuator) begin
+            fresh_data = i_act_out;
+        end
+        if (i_master) begin
+            fresh_data = i_slot_data;
+            if (i_slot_cfg == 2'h2) begin
+                fresh_alive = ~i_slot_alive;
+            end
+        end
+        if (send_c) begin
+            fresh_data = 16'h0;
+            if (i_alarm_reason[0]) begin
+                fresh_data = fresh_data | 16'h1000;
+            end
+            if (i_alarm_reason[1]) begin
+                fresh_data = fresh_data | 16'h2000;
+            end
+            if (i_alarm_reason[2]) begin
+                fresh_data = fresh_data | 16'h4000;
+            end
+            if (i_alarm_reason[3]) begin
+                fresh_data = fresh_data | 16'h8000;
+            end
+            if (i_alarm_seq) begin
+                fresh_data = fresh_data | 16'h800;
+            end
+        end
+        if ((gidx_q == 3'h0) & ~g_pend_q) begin
+            f_data_d = fresh_data;
+            f_alive_d = fresh_alive;
+            f_alarm_d = send_c;
+            f_reason_d = i_alarm_reason;
+            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
+            f_pb_d = ~(fresh_alive ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
+        end
+        pa_fix = 1'b0;
+        pb_fix = 1'b0;
+        inc2 = nib ^ 4'h1;
+        if (nib[0]) begin
+            inc2 = nib ^ 4'h3;
+        end
+        inc4 = inc2;
+        if (nib[(0)+:(2)] == 2'h3) begin
+            inc4 = nib ^ 4'h7;
+            if (nib[2]) begin
+                inc4 = nib ^ 4'hf;
+            end
+        end
+        nib_out = nib;
+        recode = 1'b0;
+        if (act_now == 3'h3) begin
+            recode = 1'b1;
+            nib_out = f_data_q[(0)+:(4)] & 4'h3;
+            if (f_alarm_q) begin
+                nib_out = nib_out | 4'h8;
+            end
+            if (f_alive_q) begin
+                nib_out = nib_out | 4'h4;
+            end
+            if (gidx_q == 3'h1) begin
+                nib_out = f_data_q[(2)+:(4)];
+            end
+            if (gidx_q == 3'h2) begin
+                nib_out = f_data_q[(6)+:(4)];
+            end
+            if (gidx_q == 3'h3) begin
+                nib_out = f_data_q[(10)+:(4)];
+            end
+            if (gidx_q == 3'h4) begin
+                nib_out = (f_data_q[(12)+:(4)] >> 1) & 4'h6;
+                if (f_pa_q) begin
+                    nib_out = nib_out | 4'h8;
+                end
+                if (f_pb_q) begin
+                    nib_out = nib_out | 4'h1;
+                end
+            end
+        end
+        if (g_data & (act_now != 3'h0) & (act_now != 3'h3)) begin
+            recode = 1'b1;
+            if ((act_now == 3'h1) & (gidx_q == 3'h3)) begin
+                if (fs_r_q & ~clr_h0_q) begin
+                    nib_out = nib_out | 4'h8;
+                end
+                if (wr_r_q) begin
+                    nib_out = nib_out | 4'h4;
+                end
+            end
+            if ((act_now == 3'h2) & (gidx_q == 3'h0)) begin
+                nib_out = inc2;
+            end
+            if ((act_now == 3'h2) & ((gidx_q == 3'h1) | (gidx_q == 3'h2)) & carry_q) begin
+                nib_out = inc4;
+            end
+            if ((act_now == 3'h2) & (gidx_q == 3'h3) & carry_q) begin
+                nib_out = inc2;
+            end
+            if ((act_now == 3'h4) & (gidx_q == 3'h0)) begin
+                nib_out = nib & 4'hb;
+                if (toggle_q) begin
+                    nib_out = nib_out | 4'h4;
+                end
+            end
+            if (act_now == 3'h5) begin
+                if (gidx_q == 3'h0) begin
+                    nib_out = (nib & 4'hc) | (f_data_q[(0)+:(4)] & 4'h3);
+                end
+                if (gidx_q == 3'h1) begin
+                    nib_out = f_data_q[(2)+:(4)];
+                end
+                if (gidx_q == 3'h2) begin
+                    nib_out = f_data_q[(6)+:(4)];
+                end
+                if (gidx_q == 3'h3) begin
+                    nib_out = f_data_q[(10)+:(4)];
+                end
+            end
+            if (gidx_q == 3'h4) begin
+                pa_fix = d_a_q;
+                pb_fix = d_b_q;
+                if (act_now == 3'h5) begin
+                    nib_out = (nib & 4'h9) | ((f_data_q[(12)+:(4)] >> 1) & 4'h6);
+                    pa_fix = d_a_q ^ nib[2] ^ f_data_q[15];
+                    pb_fix = d_b_q ^ nib[2] ^ f_data_q[15] ^ nib[1] ^ f_data_q[14];
+                end
+                if (pa_fix) begin
+                    nib_out = nib_out ^ 4'h8;
+                end
+                if (pb_fix) begin
+                    nib_out = nib_out ^ 4'h1;
+                end
+            end
+        end
+        diff = c_orig_q ^ c_nib_q;
+        arrived_bad = ~(in_data_q & g_data & (in_pa_q ^ nib[3] ^ nib[2]) & (in_pb_q ^ nib[2] ^ nib[1] ^ nib[0])) & ~(in_s_q & g_s);
+        code_out = 5'h1e;
+        if (c_nib_q == 4'h1) begin
+            code_out = 5'h9;
+        end
+        if (c_nib_q == 4'h2) begin
+            code_out = 5'h14;
+        end
+        if (c_nib_q == 4'h3) begin
+            code_out = 5'h15;
+        end
+        if (c_nib_q == 4'h4) begin
+            code_out = 5'ha;
+        end
+        if (c_nib_q == 4'h5) begin
+            code_out = 5'hb;
+        end
+        if (c_nib_q == 4'h6) begin
+            code_out = 5'he;
+        end
+        if (c_nib_q == 4'h7) begin
+            code_out = 5'hf;
+        end
+        if (c_nib_q == 4'h8) begin
+            code_out = 5'h12;
+        end
+        if (c_nib_q == 4'h9) begin
+            code_out = 5'h13;
+        end
+        if (c_nib_q == 4'ha) begin
+            code_out = 5'h16;
+        end
+        if (c_nib_q == 4'hb) begin
+            code_out = 5'h17;
+        end
+        if (c_nib_q == 4'hc) begin
+            code_out = 5'h1a;
+        end
+        if (c_nib_q == 4'hd) begin
+            code_out = 5'h1b;
+        end
+        if (c_nib_q == 4'he) begin
+            code_out = 5'h1c;
+        end
+        if (c_nib_q == 4'hf) begin
+            code_out = 5'h1d;
+        end
+        out_bit = delay_q[5];
+        in_code = code | i_mute;
+        sent_d = 1'b0;
+        done_d = 1'b0;
+        cut = 1'b0;
+        regen_d = 1'b0;
+        g_pend_d = 1'b0;
+        if (i_bvalid) begin
+            prev_d = i_level;
+            window_d = shifted;
+            delay_d = delay_q << 1;
+            if (in_code) begin
+                delay_d = (delay_q << 1) | 6'h1;
+            end
+            if (inpkt_q) begin
+                if (bitc_q == 3'h4) begin
+                    bitc_d = 3'h0;
+                    idles_d = 2'h0;
+                    if (group == 5'h1f) begin
+                        idles_d = idles_q + 2'h1;
+                    end
+                    g_pend_d = 1'b1;
+                    g_cut_d = (group == 5'h1f) & (idles_q == 2'h2);
+                    if ((group == 5'h1f) & (idles_q == 2'h2)) begin
+                        cut = 1'b1;
+                    end
+                    g_nib_d = dec_nib;
+                    g_dat_d = dec_data;
+                    g_sym_s_d = dec_s;
+                    g_act_d = act_c;
+                end
+                else begin
+                    bitc_d = bitc_q + 3'h1;
+                end
+            end
+            else if (shifted == jk) begin
+                inpkt_d = 1'b1;
+                bitc_d = 3'h0;
+                gidx_d = 3'h0;
+                wcount_d = 2'h0;
+                slot_d = 12'h0;
+                dead_d = 1'b0;
+                idles_d = 2'h0;
+            end
+        end
+        c_pend_d = 1'b0;
+        if (g_pend_q & ~g_cut_q) begin
+            c_pend_d = 1'b1;
+            c_nib_d = nib_out;
+            c_orig_d = nib;
+            c_write_d = recode;
+            c_first_d = gidx_q == 3'h0;
+            c_shift_d = i_bvalid;
+            c_mark_d = (gidx_q == 3'h4) & arrived_bad & ~dead_q & (action_q != 3'h3);
+            in_pa_d = in_pa_q ^ nib[3] ^ nib[2];
+            in_pb_d = in_pb_q ^ nib[2] ^ nib[1] ^ nib[0];
+            in_data_d = in_data_q & g_data;
+            in_s_d = in_s_q & g_s;
+            if (gidx_q == 3'h0) begin
+                in_pa_d = nib[3] ^ nib[2];
+                in_pb_d = nib[2] ^ nib[1] ^ nib[0];
+                in_data_d = g_data;
+                in_s_d = g_s;
+                if (wcount_q == 2'h0) begin
+                    clr_h0_d = nib[2];
+                end
+            end
+            if (gidx_q == 3'h0) begin
+                action_d = act_now;
+                carry_d = 1'b0;
+                regen_d = pre_own_q & i_master & (i_slot_cfg == 2'h2) & (act_now == 3'h3);
+                if (pre_home_q) begin
+                    prev_alarm_d = f_alarm_q;
+                    sent_d = f_alarm_q;
+                    sent_reason_d = f_reason_q;
+                end
+            end
+            if (gidx_q == 3'h0) begin
+                carry_d = nib[(0)+:(2)] == 2'h3;
+            end
+            else begin
+                carry_d = carry_q & (nib == 4'hf);
+            end
+            gidx_d = gidx_q + 3'h1;
+            if (gidx_q == 3'h4) begin
+                gidx_d = 3'h0;
+                if (wcount_q == 2'h2) begin
+                    slot_d = slot_q + 12'h1;
+                    if (slot_q == i_slots_m1) begin
+                        inpkt_d = 1'b0;
+                        if (~dead_q) begin
+                            done_d = 1'b1;
+                            toggle_d = ~toggle_q;
+                        end
+                    end
+                end
+                else begin
+                    wcount_d = wcount_q + 2'h1;
+                end
+            end
+        end
+        code_w = code_out;
+        if (c_mark_q) begin
+            code_w = 5'hd;
+        end
+        code_w6 = ({1'h0, code_w}) | 6'h0;
+        if (c_pend_q & (c_write_q | c_mark_q)) begin
+            if (c_shift_q) begin
+                delay_d = (delay_q & 6'h1) | (code_w6 << 1);
+                out_bit = code_w[4];
+                if (i_bvalid) begin
+                    delay_d = (code_w6 << 2) | ((delay_q & 6'h1) << 1) | (({5'h0, in_code}) | 6'h0);
+                end
+            end
+            else begin
+                delay_d = (delay_q & 6'h20) | code_w6;
+                if (i_bvalid) begin
+                    delay_d = (code_w6 << 1) | (({5'h0, in_code}) | 6'h0);
+                end
+            end
+        end
+        if (c_pend_q) begin
+            d_a_d = d_a_q ^ diff[3] ^ diff[2];
+            d_b_d = d_b_q ^ diff[2] ^ diff[1] ^ diff[0];
+            if (c_first_q) begin
+                d_a_d = diff[3] ^ diff[2];
+                d_b_d = diff[2] ^ diff[1] ^ diff[0];
+            end
+        end
+        out__i_code = out_bit;
+        if (i_bvalid) begin
+            quiet_d = 4'h0;
+        end
+        else if (quiet_q != 4'hf) begin
+            quiet_d = quiet_q + 4'h1;
+        end
+        if (quiet_q == dead_after) begin
+            delay_d = 6'h3f;
+            cut = 1'b1;
+        end
+        if (cut) begin
+            inpkt_d = 1'b0;
+            idles_d = 2'h0;
+            if (inpkt_q & (wcount_q == 2'h2) & ~dead_q) begin
+                done_d = 1'b1;
+                toggle_d = ~toggle_q;
+            end
+        end
+        if (i_hdr_bad) begin
+            dead_d = 1'b1;
+        end
+        o_slot = slot_q;
+        o_regen = regen_q;
+        o_alarm_sent = sent_q;
+        o_sent_reason = sent_reason_q;
+        o_prev_alarm = prev_alarm_q;
+        o_pkt_done = done_q;
+        o_toggle = toggle_q;
+        o_line = out__o_line;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial prev_q = 1'h0;
+    always @(posedge clock) prev_q <= prev_d;
+    initial window_q = 10'h0;
+    always @(posedge clock) window_q <= window_d;
+    initial delay_q = 6'h0;
+    always @(posedge clock) delay_q <= delay_d;
+    initial c_pend_q = 1'h0;
+    always @(posedge clock) c_pend_q <= c_pend_d;
+    initial c_nib_q = 4'h0;
+    always @(posedge clock) c_nib_q <= c_nib_d;
+    initial c_orig_q = 4'h0;
+    always @(posedge clock) c_orig_q <= c_orig_d;
+    initial c_write_q = 1'h0;
+    always @(posedge clock) c_write_q <= c_write_d;
+    initial c_mark_q = 1'h0;
+    always @(posedge clock) c_mark_q <= c_mark_d;
+    initial c_first_q = 1'h0;
+    always @(posedge clock) c_first_q <= c_first_d;
+    initial c_shift_q = 1'h0;
+    always @(posedge clock) c_shift_q <= c_shift_d;
+    initial g_pend_q = 1'h0;
+    always @(posedge clock) g_pend_q <= g_pend_d;
+    initial g_cut_q = 1'h0;
+    always @(posedge clock) g_cut_q <= g_cut_d;
+    initial g_nib_q = 4'h0;
+    always @(posedge clock) g_nib_q <= g_nib_d;
+    initial g_dat_q = 1'h0;
+    always @(posedge clock) g_dat_q <= g_dat_d;
+    initial g_sym_s_q = 1'h0;
+    always @(posedge clock) g_sym_s_q <= g_sym_s_d;
+    initial g_act_q = 3'h0;
+    always @(posedge clock) g_act_q <= g_act_d;
+    initial inpkt_q = 1'h0;
+    always @(posedge clock) inpkt_q <= inpkt_d;
+    initial idles_q = 2'h0;
+    always @(posedge clock) idles_q <= idles_d;
+    initial quiet_q = 4'h0;
+    always @(posedge clock) quiet_q <= quiet_d;
+    initial bitc_q = 3'h0;
+    always @(posedge clock) bitc_q <= bitc_d;
+    initial gidx_q = 3'h0;
+    always @(posedge clock) gidx_q <= gidx_d;
+    initial wcount_q = 2'h0;
+    always @(posedge clock) wcount_q <= wcount_d;
+    initial slot_q = 12'h0;
+    always @(posedge clock) slot_q <= slot_d;
+    initial dead_q = 1'h0;
+    always @(posedge clock) dead_q <= dead_d;
+    initial action_q = 3'h0;
+    always @(posedge clock) action_q <= action_d;
+    initial in_pa_q = 1'h0;
+    always @(posedge clock) in_pa_q <= in_pa_d;
+    initial in_pb_q = 1'h0;
+    always @(posedge clock) in_pb_q <= in_pb_d;
+    initial in_data_q = 1'h0;
+    always @(posedge clock) in_data_q <= in_data_d;
+    initial in_s_q = 1'h0;
+    always @(posedge clock) in_s_q <= in_s_d;
+    initial clr_h0_q = 1'h0;
+    always @(posedge clock) clr_h0_q <= clr_h0_d;
+    initial d_a_q = 1'h0;
+    always @(posedge clock) d_a_q <= d_a_d;
+    initial d_b_q = 1'h0;
+    always @(posedge clock) d_b_q <= d_b_d;
+    initial carry_q = 1'h0;
+    always @(posedge clock) carry_q <= carry_d;
+    initial f_data_q = 16'h0;
+    always @(posedge clock) f_data_q <= f_data_d;
+    initial f_alive_q = 1'h0;
+    always @(posedge clock) f_alive_q <= f_alive_d;
+    initial f_alarm_q = 1'h0;
+    always @(posedge clock) f_alarm_q <= f_alarm_d;
+    initial f_reason_q = 4'h0;
+    always @(posedge clock) f_reason_q <= f_reason_d;
+    initial f_pa_q = 1'h0;
+    always @(posedge clock) f_pa_q <= f_pa_d;
+    initial f_pb_q = 1'h0;
+    always @(posedge clock) f_pb_q <= f_pb_d;
+    initial pre_home_q = 1'h0;
+    always @(posedge clock) pre_home_q <= pre_home_d;
+    initial fs_r_q = 1'h0;
+    always @(posedge clock) fs_r_q <= fs_r_d;
+    initial wr_r_q = 1'h0;
+    always @(posedge clock) wr_r_q <= wr_r_d;
+    initial pre_own_q = 1'h0;
+    always @(posedge clock) pre_own_q <= pre_own_d;
+    initial toggle_q = 1'h0;
+    always @(posedge clock) toggle_q <= toggle_d;
+    initial prev_alarm_q = 1'h0;
+    always @(posedge clock) prev_alarm_q <= prev_alarm_d;
+    initial sent_q = 1'h0;
+    always @(posedge clock) sent_q <= sent_d;
+    initial sent_reason_q = 4'h0;
+    always @(posedge clock) sent_reason_q <= sent_reason_d;
+    initial done_q = 1'h0;
+    always @(posedge clock) done_q <= done_d;
+    initial regen_q = 1'h0;
+    always @(posedge clock) regen_q <= regen_d;
+endmodule // merkur_special_master__fwd
+// --------------------------------------------------------------------------
+// `out`: Retime, Elastic output buffer with its own bit timing. (rtl/src/line/retime.rs)
+//
+// # retime — elastic output buffer: sends recovered bits on the node's own clock (protocol §9)
+//
+// Purpose: a node retransmits at the rate of the stream it receives, but a
+// transmitter that repeats every edge where its receiver saw it also repeats
+// that receiver's sampling error, and on a long ring those errors add up
+// hop by hop until an edge moves by half a bit. This block breaks the chain:
+// code bits (1: the line toggles) go into a small buffer at the receive
+// timing and come out on the node's own clock, one bit per 4 half clocks (the DDR output's two halves
+// per clock); to follow the stream's rate it makes one bit 3 or 5 half
+// clocks long now and then. So an edge on the line is off by at most one
+// output half clock (2 receiver samples) from where the node's clock puts
+// it, whatever the input did, and a downstream receiver
+// ([`crate::line::cdr`]: 8k − 3 … 8k + 4 samples for a k-bit interval) has a
+// sample of margin on every link.
+//
+// **Phase measure.** At each write the block computes how long, in receive
+// samples (quarter clocks), the new bit will wait until it is sent:
+// `lag = 2·rem + 8·cnt − i_phase`, with `rem` the half clocks to the next
+// send at the start of the next clock, `cnt` the bits buffered and
+// `i_phase` the sample of its clock the bit was taken from. The target is
+// [`TARGET`] = 20 (2.5 bit times; a bit sent in the clock after its write
+// has a lag of 5–8). After [`VOTES`] writes in a row with
+// `lag` more than [`BAND`] above (below) the target, the next bit is sent
+// 3 (5) half clocks long, at most once per [`GAP`] bits, so that no edge
+// interval on the line carries two corrections. That follows a clock
+// difference of up to 1/(4·GAP) (31 000 ppm); a node's offset needs
+// ±2000 ppm.
+//
+// **Start and errors.** Until two bits have arrived it sends idles (NRZI
+// ones: the line toggles every bit) on its own bit grid; from the second
+// bit on it sends the buffer, from the grid's next boundary. A send with an empty buffer
+// (underflow: the input stopped) or a write into a full one (overflow)
+// pulses `o_slip` and empties the buffer; an underflow sends no idle edge
+// (the zeros the receiver read from a dying line before it muted would be
+// confirmed by it): the line stays dark until [`QUIET_BITS`] bit times
+// after the last edge it sent, so a downstream receiver mutes and drops the
+// word the input stopped in ([`crate::line::monitor`]) and a downstream
+// forwarder sees its input dead ([`crate::node::fwd::DEAD_CLOCKS`]); then it
+// sends idles, so the next node sees a live line again long before loss
+// of signal (32 bit times); the next bits start again. Counted from the
+// last edge *sent*, the gap is the same on every hop whatever the
+// pipeline in front of the buffer held back (a forwarder keeps a group of
+// the zeros read from a dying line in its delay line: counted from the
+// underflow, the gap shrank by that much per hop until a node no longer
+// saw it, issue 19). A live stream within ±2000 ppm never slips.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_valid` | in | 1 | clock | a bit to send (at most one per clock) |
+// | `i_code` | in | 1 | clock | its code bit: 1 = the line toggles (NRZI) |
+// | `i_phase` | in | 2 | clock | its receive sample within the clock ([`crate::line::cdr`]'s `o_phase`) |
+// | `o_line` | out | 2 | clock | OUTPUT line, DDR pair (bit 0 first) |
+// | `o_slip` | out | 1 | clock | pulse: underflow or overflow, the buffer restarted |
+//
+// Latency: a bit is sent [`TARGET`] receive samples (2.5 bit times,
+// ± [`BAND`]) after the clock of its receive sample, plus the output
+// register.
+//
+// ```text
+// i_valid   _/‾\___/‾\___/‾\___/‾\___/‾\___     (receive timing: jitters)
+// rem         3 1 3 1 3 1 3 1 3 1 3 1 3 1        (half clocks to the next send)
+// o_line    ==X=======X=======X=======X====      (own clock: 4 half clocks per bit)
+// correction: one bit of 3 or 5 half clocks, at most every GAP bits
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__fwd__out(clock,i_valid,i_code,i_phase,o_line,o_slip);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_valid;
+    input wire  i_code;
+    input wire  [1:0] i_phase;
+    output reg  [1:0] o_line;
+    output reg  o_slip;
+
+    // Constant declarations
+    localparam  quiet_bits = 5'b1110;
+    localparam  votes = 3'b100;
+    localparam  gap_min = 4'h8;
+    localparam  one = 8'h1;
+
+    // Registers and child block ports
+    reg  [7:0] sr_d;
+    reg  [7:0] sr_q;
+    reg  [3:0] cnt_d;
+    reg  [3:0] cnt_q;
+    reg  [2:0] rem_d;
+    reg  [2:0] rem_q;
+    reg  lvl_d;
+    reg  lvl_q;
+    reg  run_d;
+    reg  run_q;
+    reg  dark_d;
+    reg  dark_q;
+    reg  [4:0] since_d;
+    reg  [4:0] since_q;
+    reg  [2:0] hi_d;
+    reg  [2:0] hi_q;
+    reg  [2:0] lo_d;
+    reg  [2:0] lo_q;
+    reg  [3:0] gap_d;
+    reg  [3:0] gap_q;
+    reg  [1:0] pair_d;
+    reg  [1:0] pair_q;
+    reg  slip_d;
+    reg  slip_q;
+
+    // Local signals
+    reg  send0;
+    reg  send1;
+    reg  take;
+    reg  under;
+    reg  oldest;
+    reg  [7:0] sr_shift;
+    reg  [2:0] wpos;
+    reg  [7:0] wmask;
+    reg  new_lvl;
+    reg  [2:0] len;
+    reg  [3:0] cnt_next;
+    reg  [2:0] rem_next;
+    reg  t_neg;
+    reg  t_pos;
+    reg  t_lt8;
+    reg  t_gt8;
+    reg  c_is0;
+    reg  c_is1;
+    reg  c_is2;
+    reg  c_is3;
+    reg  c_ge4;
+    reg  late;
+    reg  early;
+    reg  start2;
+    reg  over;
+
+    // Combinational logic
+    always @(*) begin
+        sr_d = sr_q;
+        cnt_d = cnt_q;
+        rem_d = rem_q;
+        lvl_d = lvl_q;
+        run_d = run_q;
+        dark_d = dark_q;
+        since_d = since_q;
+        hi_d = hi_q;
+        lo_d = lo_q;
+        gap_d = gap_q;
+        pair_d = pair_q;
+        slip_d = slip_q;
+        send0 = rem_q == 3'h0;
+        send1 = rem_q == 3'h1;
+        take = (send0 | send1) & run_q & (cnt_q != 4'h0);
+        oldest = sr_q[0];
+        under = (send0 | send1) & run_q & (cnt_q == 4'h0);
+        new_lvl = lvl_q;
+        if ((send0 | send1) & ~dark_q & ~under) begin
+            new_lvl = ~lvl_q;
+        end
+        if ((send0 | send1) & dark_q & (since_q >= quiet_bits)) begin
+            dark_d = 1'b0;
+        end
+        if (take) begin
+            new_lvl = lvl_q ^ oldest;
+        end
+        pair_d = 2'h0;
+        if (lvl_q) begin
+            pair_d = 2'h3;
+        end
+        if (send0 & new_lvl) begin
+            pair_d = 2'h3;
+        end
+        if (send0 & ~new_lvl) begin
+            pair_d = 2'h0;
+        end
+        if (send1 & (new_lvl != lvl_q)) begin
+            pair_d = 2'h1;
+            if (new_lvl) begin
+                pair_d = 2'h2;
+            end
+        end
+        lvl_d = new_lvl;
+        if (send0 | send1) begin
+            if (new_lvl != lvl_q) begin
+                since_d = 5'h0;
+            end
+            else if (since_q != 5'h1f) begin
+                since_d = since_q + 5'h1;
+            end
+        end
+        len = 3'h4;
+        if (run_q & (gap_q >= gap_min)) begin
+            if (hi_q >= votes) begin
+                len = 3'h3;
+            end
+            if (lo_q >= votes) begin
+                len = 3'h5;
+            end
+        end
+        rem_next = rem_q ^ 3'h2;
+        if (~rem_q[1]) begin
+            rem_next = rem_q ^ 3'h6;
+        end
+        if (send0 | send1) begin
+            if (gap_q != 4'hf) begin
+                gap_d = gap_q + 4'h1;
+            end
+            if (len != 3'h4) begin
+                gap_d = 4'h0;
+                hi_d = 3'h0;
+                lo_d = 3'h0;
+            end
+        end
+        if (send0) begin
+            rem_next = 3'h2;
+            if (len == 3'h3) begin
+                rem_next = 3'h1;
+            end
+            if (len == 3'h5) begin
+                rem_next = 3'h3;
+            end
+        end
+        if (send1) begin
+            rem_next = 3'h3;
+            if (len == 3'h3) begin
+                rem_next = 3'h2;
+            end
+            if (len == 3'h5) begin
+                rem_next = 3'h4;
+            end
+        end
+        sr_shift = sr_q;
+        if (take) begin
+            sr_shift = sr_q >> 1;
+        end
+        sr_d = sr_shift;
+        wpos = cnt_q[(0)+:(3)];
+        if (take) begin
+            wpos = cnt_q[(0)+:(3)] - 3'h1;
+        end
+        wmask = one << wpos;
+        cnt_next = cnt_q;
+        if (take & ~i_valid) begin
+            cnt_next = cnt_q - 4'h1;
+        end
+        if (i_valid) begin
+            sr_d = sr_shift & ~wmask;
+            if (i_code) begin
+                sr_d = sr_shift | wmask;
+            end
+            if (~take) begin
+                cnt_next = cnt_q + 4'h1;
+            end
+        end
+        t_neg = ((rem_next == 3'h0) & (i_phase != 2'h0)) | ((rem_next == 3'h1) & (i_phase == 2'h3));
+        t_pos = (rem_next >= 3'h2) | ((rem_next == 3'h1) & ~i_phase[1]);
+        t_lt8 = (rem_next <= 3'h3) | ((rem_next == 3'h4) & (i_phase != 2'h0)) | ((rem_next == 3'h5) & (i_phase == 2'h3));
+        t_gt8 = (rem_next >= 3'h6) | ((rem_next == 3'h5) & ~i_phase[1]);
+        c_is0 = cnt_q == 4'hf;
+        c_is1 = cnt_q == 4'h0;
+        c_is2 = cnt_q == 4'h1;
+        c_is3 = cnt_q == 4'h2;
+        c_ge4 = (cnt_q >= 4'h3) & (cnt_q != 4'hf);
+        if (take) begin
+            c_is1 = cnt_q == 4'h1;
+            c_is2 = cnt_q == 4'h2;
+            c_is3 = cnt_q == 4'h3;
+            c_ge4 = cnt_q >= 4'h4;
+            c_is0 = 1'b0;
+        end
+        late = c_ge4 | (c_is0 & t_neg) | (c_is2 & t_gt8) | (c_is3 & t_pos);
+        early = (c_is0 & ~t_neg) | (c_is1 & t_lt8) | (c_is2 & t_neg);
+        if (run_q & i_valid) begin
+            if (late) begin
+                if (hi_q != 3'h7) begin
+                    hi_d = hi_q + 3'h1;
+                end
+                lo_d = 3'h0;
+            end
+            else if (early) begin
+                if (lo_q != 3'h7) begin
+                    lo_d = lo_q + 3'h1;
+                end
+                hi_d = 3'h0;
+            end
+            else begin
+                hi_d = 3'h0;
+                lo_d = 3'h0;
+            end
+        end
+        rem_d = rem_next;
+        cnt_d = cnt_next;
+        slip_d = 1'b0;
+        if (dark_q) begin
+            cnt_next = 4'h0;
+        end
+        start2 = ~run_q & i_valid & ~dark_q & (cnt_q == 4'h1);
+        over = ~dark_q & ((i_valid & ~take & (cnt_q >= 4'h8) & (cnt_q != 4'hf)) | (take & ~i_valid & (cnt_q >= 4'ha)) | ((i_valid == take) & (cnt_q >= 4'h9)));
+        if (start2) begin
+            run_d = 1'b1;
+            hi_d = 3'h0;
+            lo_d = 3'h0;
+            gap_d = 4'h0;
+        end
+        if (under | over) begin
+            slip_d = 1'b1;
+            run_d = 1'b0;
+            cnt_d = 4'h0;
+        end
+        if (under) begin
+            dark_d = 1'b1;
+        end
+        o_line = pair_q;
+        o_slip = slip_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial sr_q = 8'h0;
+    always @(posedge clock) sr_q <= sr_d;
+    initial cnt_q = 4'h0;
+    always @(posedge clock) cnt_q <= cnt_d;
+    initial rem_q = 3'h0;
+    always @(posedge clock) rem_q <= rem_d;
+    initial lvl_q = 1'h0;
+    always @(posedge clock) lvl_q <= lvl_d;
+    initial run_q = 1'h0;
+    always @(posedge clock) run_q <= run_d;
+    initial dark_q = 1'h0;
+    always @(posedge clock) dark_q <= dark_d;
+    initial since_q = 5'h0;
+    always @(posedge clock) since_q <= since_d;
+    initial hi_q = 3'h0;
+    always @(posedge clock) hi_q <= hi_d;
+    initial lo_q = 3'h0;
+    always @(posedge clock) lo_q <= lo_d;
+    initial gap_q = 4'h0;
+    always @(posedge clock) gap_q <= gap_d;
+    initial pair_q = 2'h0;
+    always @(posedge clock) pair_q <= pair_d;
+    initial slip_q = 1'h0;
+    always @(posedge clock) slip_q <= slip_d;
+endmodule // merkur_special_master__fwd__out
+// --------------------------------------------------------------------------
+// `g0`: Dec5b4b, 4B/5B decoder. (rtl/src/line/dec5b4b.rs)
+//
+// # dec5b4b — 4B/5B code group decoder (protocol §2, §4)
+//
+// Purpose: classifies a received 5-bit code group: a data nibble, one of the
+// control groups J, K, I, S, or invalid (none of the flags set).
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `i_code` | in | 5 | — (combinational) | code group, bit 4 received first |
+// | `o_nibble` | out | 4 | — | data nibble (0 unless `o_data`) |
+// | `o_data` | out | 1 | — | the group is a data nibble |
+// | `o_j`, `o_k`, `o_i`, `o_s` | out | 1 | — | the group is J / K / I / S |
+//
+// Latency: combinational (0 clocks).
+//
+// ```text
+// i_code   ==X= 01001 =X= 11000 =X= 00000 ==
+// o_nibble ==X== 0x1 ==X== 0x0 ==X== 0x0 ===
+// o_data   __/‾‾‾‾‾‾‾‾\_________________
+// o_j      ___________/‾‾‾‾‾‾‾\_________
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__g0(i_code,o_nibble,o_data,o_j,o_k,o_i,o_s);
+
+    // Module arguments
+    input wire  [4:0] i_code;
+    output reg  [3:0] o_nibble;
+    output reg  o_data;
+    output reg  o_j;
+    output reg  o_k;
+    output reg  o_i;
+    output reg  o_s;
+
+    // Registers and child block ports
+    wire  [8:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__g0__rom rom(
+        .address(i_code),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_nibble = rom__data[(0)+:(4)];
+        o_data = rom__data[4];
+        o_j = rom__data[5];
+        o_k = rom__data[6];
+        o_i = rom__data[7];
+        o_s = rom__data[8];
+    end
+
+endmodule // merkur_special_master__g0
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__g0`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__g0__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [8:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 9'b0;
+      5'b1: data = 9'b0;
+      5'b10: data = 9'b0;
+      5'b11: data = 9'b0;
+      5'b100: data = 9'b0;
+      5'b101: data = 9'b0;
+      5'b110: data = 9'b0;
+      5'b111: data = 9'b0;
+      5'b1000: data = 9'b0;
+      5'b1001: data = 9'b10001;
+      5'b1010: data = 9'b10100;
+      5'b1011: data = 9'b10101;
+      5'b1100: data = 9'b0;
+      5'b1101: data = 9'b0;
+      5'b1110: data = 9'b10110;
+      5'b1111: data = 9'b10111;
+      5'b10000: data = 9'b0;
+      5'b10001: data = 9'b1000000;
+      5'b10010: data = 9'b11000;
+      5'b10011: data = 9'b11001;
+      5'b10100: data = 9'b10010;
+      5'b10101: data = 9'b10011;
+      5'b10110: data = 9'b11010;
+      5'b10111: data = 9'b11011;
+      5'b11000: data = 9'b100000;
+      5'b11001: data = 9'b100000000;
+      5'b11010: data = 9'b11100;
+      5'b11011: data = 9'b11101;
+      5'b11100: data = 9'b11110;
+      5'b11101: data = 9'b11111;
+      5'b11110: data = 9'b10000;
+      5'b11111: data = 9'b10000000;
+      default: data = 9'b0;
+    endcase
+
+endmodule // merkur_special_master__g0__rom
+// --------------------------------------------------------------------------
+// `g1`: Dec5b4b, 4B/5B decoder. (rtl/src/line/dec5b4b.rs)
+// Documented at module `merkur_special_master__g0` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__g1(i_code,o_nibble,o_data,o_j,o_k,o_i,o_s);
+
+    // Module arguments
+    input wire  [4:0] i_code;
+    output reg  [3:0] o_nibble;
+    output reg  o_data;
+    output reg  o_j;
+    output reg  o_k;
+    output reg  o_i;
+    output reg  o_s;
+
+    // Registers and child block ports
+    wire  [8:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__g1__rom rom(
+        .address(i_code),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_nibble = rom__data[(0)+:(4)];
+        o_data = rom__data[4];
+        o_j = rom__data[5];
+        o_k = rom__data[6];
+        o_i = rom__data[7];
+        o_s = rom__data[8];
+    end
+
+endmodule // merkur_special_master__g1
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__g1`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__g1__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [8:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 9'b0;
+      5'b1: data = 9'b0;
+      5'b10: data = 9'b0;
+      5'b11: data = 9'b0;
+      5'b100: data = 9'b0;
+      5'b101: data = 9'b0;
+      5'b110: data = 9'b0;
+      5'b111: data = 9'b0;
+      5'b1000: data = 9'b0;
+      5'b1001: data = 9'b10001;
+      5'b1010: data = 9'b10100;
+      5'b1011: data = 9'b10101;
+      5'b1100: data = 9'b0;
+      5'b1101: data = 9'b0;
+      5'b1110: data = 9'b10110;
+      5'b1111: data = 9'b10111;
+      5'b10000: data = 9'b0;
+      5'b10001: data = 9'b1000000;
+      5'b10010: data = 9'b11000;
+      5'b10011: data = 9'b11001;
+      5'b10100: data = 9'b10010;
+      5'b10101: data = 9'b10011;
+      5'b10110: data = 9'b11010;
+      5'b10111: data = 9'b11011;
+      5'b11000: data = 9'b100000;
+      5'b11001: data = 9'b100000000;
+      5'b11010: data = 9'b11100;
+      5'b11011: data = 9'b11101;
+      5'b11100: data = 9'b11110;
+      5'b11101: data = 9'b11111;
+      5'b11110: data = 9'b10000;
+      5'b11111: data = 9'b10000000;
+      default: data = 9'b0;
+    endcase
+
+endmodule // merkur_special_master__g1__rom
+// --------------------------------------------------------------------------
+// `g2`: Dec5b4b, 4B/5B decoder. (rtl/src/line/dec5b4b.rs)
+// Documented at module `merkur_special_master__g0` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__g2(i_code,o_nibble,o_data,o_j,o_k,o_i,o_s);
+
+    // Module arguments
+    input wire  [4:0] i_code;
+    output reg  [3:0] o_nibble;
+    output reg  o_data;
+    output reg  o_j;
+    output reg  o_k;
+    output reg  o_i;
+    output reg  o_s;
+
+    // Registers and child block ports
+    wire  [8:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__g2__rom rom(
+        .address(i_code),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_nibble = rom__data[(0)+:(4)];
+        o_data = rom__data[4];
+        o_j = rom__data[5];
+        o_k = rom__data[6];
+        o_i = rom__data[7];
+        o_s = rom__data[8];
+    end
+
+endmodule // merkur_special_master__g2
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__g2`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__g2__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [8:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 9'b0;
+      5'b1: data = 9'b0;
+      5'b10: data = 9'b0;
+      5'b11: data = 9'b0;
+      5'b100: data = 9'b0;
+      5'b101: data = 9'b0;
+      5'b110: data = 9'b0;
+      5'b111: data = 9'b0;
+      5'b1000: data = 9'b0;
+      5'b1001: data = 9'b10001;
+      5'b1010: data = 9'b10100;
+      5'b1011: data = 9'b10101;
+      5'b1100: data = 9'b0;
+      5'b1101: data = 9'b0;
+      5'b1110: data = 9'b10110;
+      5'b1111: data = 9'b10111;
+      5'b10000: data = 9'b0;
+      5'b10001: data = 9'b1000000;
+      5'b10010: data = 9'b11000;
+      5'b10011: data = 9'b11001;
+      5'b10100: data = 9'b10010;
+      5'b10101: data = 9'b10011;
+      5'b10110: data = 9'b11010;
+      5'b10111: data = 9'b11011;
+      5'b11000: data = 9'b100000;
+      5'b11001: data = 9'b100000000;
+      5'b11010: data = 9'b11100;
+      5'b11011: data = 9'b11101;
+      5'b11100: data = 9'b11110;
+      5'b11101: data = 9'b11111;
+      5'b11110: data = 9'b10000;
+      5'b11111: data = 9'b10000000;
+      default: data = 9'b0;
+    endcase
+
+endmodule // merkur_special_master__g2__rom
+// --------------------------------------------------------------------------
+// `g3`: Dec5b4b, 4B/5B decoder. (rtl/src/line/dec5b4b.rs)
+// Documented at module `merkur_special_master__g0` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__g3(i_code,o_nibble,o_data,o_j,o_k,o_i,o_s);
+
+    // Module arguments
+    input wire  [4:0] i_code;
+    output reg  [3:0] o_nibble;
+    output reg  o_data;
+    output reg  o_j;
+    output reg  o_k;
+    output reg  o_i;
+    output reg  o_s;
+
+    // Registers and child block ports
+    wire  [8:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__g3__rom rom(
+        .address(i_code),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_nibble = rom__data[(0)+:(4)];
+        o_data = rom__data[4];
+        o_j = rom__data[5];
+        o_k = rom__data[6];
+        o_i = rom__data[7];
+        o_s = rom__data[8];
+    end
+
+endmodule // merkur_special_master__g3
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__g3`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__g3__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [8:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 9'b0;
+      5'b1: data = 9'b0;
+      5'b10: data = 9'b0;
+      5'b11: data = 9'b0;
+      5'b100: data = 9'b0;
+      5'b101: data = 9'b0;
+      5'b110: data = 9'b0;
+      5'b111: data = 9'b0;
+      5'b1000: data = 9'b0;
+      5'b1001: data = 9'b10001;
+      5'b1010: data = 9'b10100;
+      5'b1011: data = 9'b10101;
+      5'b1100: data = 9'b0;
+      5'b1101: data = 9'b0;
+      5'b1110: data = 9'b10110;
+      5'b1111: data = 9'b10111;
+      5'b10000: data = 9'b0;
+      5'b10001: data = 9'b1000000;
+      5'b10010: data = 9'b11000;
+      5'b10011: data = 9'b11001;
+      5'b10100: data = 9'b10010;
+      5'b10101: data = 9'b10011;
+      5'b10110: data = 9'b11010;
+      5'b10111: data = 9'b11011;
+      5'b11000: data = 9'b100000;
+      5'b11001: data = 9'b100000000;
+      5'b11010: data = 9'b11100;
+      5'b11011: data = 9'b11101;
+      5'b11100: data = 9'b11110;
+      5'b11101: data = 9'b11111;
+      5'b11110: data = 9'b10000;
+      5'b11111: data = 9'b10000000;
+      default: data = 9'b0;
+    endcase
+
+endmodule // merkur_special_master__g3__rom
+// --------------------------------------------------------------------------
+// `mdb`: Mdb, A master's database. (rtl/src/node/mdb.rs)
+//
+// # mdb — a master's real-time database: memories, host port, Alive check, interrupts
+//
+// Purpose: the part every master (and the special master) has beside its
+// ring logic (protocol §7, §11; the paper's Figure 7):
+// - **data memory** 4096 × 16 (one block-RAM port pair), the real-time
+//   database: the ring side reads slot `i_tx_slot` for what the node sends
+//   and writes every good word of a slot it does not write itself; the host
+//   reads and writes it through Wishbone;
+// - **configuration memory**, one byte per slot (bits 0 LAST, 1 ACT,
+//   2 ALIVE_EN, 3 LOCAL; bits 3:1 kept), in two copies (ring send side,
+//   ring receive side + host), writable only before the ring runs. LAST
+//   is not stored (protocol §7: the header carries S − 1): the host reads
+//   it as 1 for slot `i_slots_m1`. Bit 0 of each copy holds ring state
+//   instead: the receive copy's, the SEQ that a new alarm of that slot
+//   has (the inverse of the last one read there; 0 after reset and after
+//   a configuration write); the send copy's, the slot's has-value bit
+//   (below);
+// - **Alive check** per slot with ALIVE_EN (state memory: valid, last
+//   Alive, lost, and the CYC that wrote it, so a slot missing in the
+//   previous cycle is not compared), counted in `aerr`;
+// - **interrupts and the alarm queue** (protocol §11): every good alarm
+//   word in a slot other than the home slot (outside failsafe) that is
+//   not a repeat (its SEQ equal to the slot's last, §11) pulses
+//   `o_irq1` / `o_irq2` / `o_irq_fs` / `o_irq_rc` (RECONFIG, reasons 4–6)
+//   by its reason and goes into a 16-entry queue `{reason, slot, CYC}` that
+//   the host reads oldest first; a full queue keeps its entries and counts
+//   the alarm it could not keep (`overflow`); `o_alarmq` is high while the
+//   queue is not empty. The queue is one 32 × 16 memory (one block RAM),
+//   an entry's two words written in two clocks (received words are 25 bit
+//   times apart, so alarms are too). `o_irq_fsc` pulses when the node enters or leaves
+//   failsafe (the status register's bit 3 says which; protocol §12).
+//
+// Every memory here is written 4096 deep (the 12-bit slot number); the
+// Verilog that simulation and synthesis use is sized to the ring's slot
+// count ([`crate::emit::verilog::size_memories`]): slots beyond it read 0 from
+// the host port and take no writes.
+//
+// Host port: **Wishbone B4 classic** (16-bit data, 14-bit word address),
+// one transfer per `i_wb_cyc & i_wb_stb`, acknowledged after 1–4 clocks:
+//
+// | address | R/W | meaning |
+// |---|---|---|
+// | 0x0000–0x0FFF | R/W | data memory, slot = address; a write to a slot that is neither LOCAL nor ACT is refused (not written, `status[2]` set) |
+// | 0x1000–0x1FFF | R/W | configuration byte of slot address − 0x1000; a write while running is refused (`status[1]` set); LAST (bit 0) is not stored and reads 1 for slot `i_slots_m1` |
+// | 0x2000 | R | status: 0 running, 1 config write refused, 2 data write refused, 3 failsafe, 5:4 mode, 6 FS_HOST, 7 FS_CLEAR given and not yet used, 8 started by JOIN, 9 the reload frame not yet read |
+// | 0x2000 | W | bit 0 = 1: start (the ring runs, configuration locked); bits 1, 2 = 1: clear those flags; bit 3 = 1: stop (a special master sends no more frames); bit 4 = 1: FS_CLEAR, the host allows the ring out of failsafe (a special master; protocol §12); bit 5: FS_HOST, the ring leaves failsafe only after FS_CLEAR (a special master; written before the start, refused while running: `status[1]`); bit 6 = 1: JOIN, start after a restart (below; refused while running: `status[1]`) |
+// | 0x2001 | R | `aerr` Alive-check failures (saturating) |
+// | 0x2002 | R | last alarm delivered: reason `[15:12]`, slot `[11:0]` |
+// | 0x2003 | R | alarm queue, oldest entry: reason `[15:12]`, slot `[11:0]` (0: the queue is empty) |
+// | 0x2004 | R | alarm queue: entries `[4:0]` (0–16), CYC of the oldest entry `[14:12]` |
+// | 0x2004 | W | bit 0 = 1: remove the oldest entry (none: ignored); bit 1 = 1: clear the overflow count |
+// | 0x2005 | R | alarm queue overflow: alarms not kept because the queue was full (saturating) |
+//
+// **Restart (protocol §12).** A master that got power again is started
+// with JOIN (`0x2000` bit 6) instead of bit 0, after its host loaded the
+// configuration again: its first frame read with a good header outside
+// failsafe is the **reload frame**, in which it writes nothing (`o_tx_cfg` 0);
+// and each of its own slots (LOCAL or ACT) has a value only once a good
+// data word came by in it (taken into the data memory, which it otherwise
+// never does for its own slots) or its host wrote it — one has-value bit
+// per slot, zero at power-up, in the send copy of the configuration
+// (bit 0: LAST is not stored), so no memory grows; the receive side reads
+// it in the clock a word arrives (the send side's look-up waits that
+// clock).
+// Until then the send side reports the slot as one it does not write (but
+// for an alarm in its home slot, `o_tx_cfg` 3). A
+// master started with bit 0 has a value for every slot from the start.
+//
+// A host drains the queue with: read 0x2004; while entries > 0, read 0x2003
+// (and 0x2004's CYC), write 1 to 0x2004.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock |
+// | `i_wb_cyc`, `i_wb_stb`, `i_wb_we` | in | 1 | clock | Wishbone cycle, strobe, write enable |
+// | `i_wb_adr` | in | 14 | clock | Wishbone word address |
+// | `i_wb_dat` | in | 16 | clock | Wishbone write data |
+// | `o_wb_dat` | out | 16 | clock | Wishbone read data (valid with `o_wb_ack`) |
+// | `o_wb_ack` | out | 1 | clock | Wishbone acknowledge (one clock) |
+// | `i_home` | in | 12 | static | home slot (no interrupt for its own alarms) |
+// | `i_slots_m1` | in | 12 | static | slots per frame − 1 (the slot whose configuration reads LAST) |
+// | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
+// | `i_mode` | in | 2 | clock | switchbox mode (status register) |
+// | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
+// | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
+// | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
+// | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
+// | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
+// | `o_join` | out | 1 | clock | started by JOIN |
+// | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+// | `o_running` | out | 1 | clock | the host started the ring |
+// | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
+// | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
+// | `o_irq_fsc` | out | 1 | clock | failsafe changed (one clock, each way) |
+// | `o_fs_host`, `o_fs_clear` | out | 1 | clock | FS_HOST set; FS_CLEAR written (one clock) |
+// | `o_aerr` | out | 16 | clock | Alive-check failures |
+//
+// Latency: a good word is in the data memory 2 clocks after `i_wvalid`
+// (an own slot's taken after JOIN: 3, or 4 behind a host write).
+//
+// ```text
+// clock      _/‾\_/‾\_/‾\_/‾\_/‾\_
+// i_wvalid   _/‾‾‾\_______________     stage 1: read cfg, Alive state
+// o_s2       _____/‾‾‾\___________     stage 2: write data, Alive state; irq
+// wb stb     _/‾‾‾‾‾‾‾‾‾‾‾\_______
+// wb ack     _________/‾‾‾\_______     data read: 2 clocks
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_ok,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_wb_cyc;
+    input wire  i_wb_stb;
+    input wire  i_wb_we;
+    input wire  [13:0] i_wb_adr;
+    input wire  [15:0] i_wb_dat;
+    output reg  [15:0] o_wb_dat;
+    output reg  o_wb_ack;
+    input wire  [11:0] i_home;
+    input wire  [11:0] i_slots_m1;
+    input wire  i_fs;
+    input wire  [1:0] i_mode;
+    input wire  i_wvalid;
+    input wire  [1:0] i_kind;
+    input wire  [11:0] i_slot;
+    input wire  [15:0] i_data;
+    input wire  i_alive;
+    input wire  i_alarm;
+    input wire  i_ok;
+    input wire  i_hdr_bad;
+    input wire  [11:0] i_tx_slot;
+    output reg  [15:0] o_tx_data;
+    output reg  [1:0] o_tx_cfg;
+    output reg  o_join;
+    output reg  o_s2;
+    output reg  [11:0] o_s2_slot;
+    output reg  o_s2_act;
+    output reg  o_s2_ok;
+    output reg  o_s2_alive;
+    output reg  o_s2_alarm;
+    output reg  [15:0] o_s2_data;
+    output reg  o_running;
+    output reg  o_irq1;
+    output reg  o_irq2;
+    output reg  o_irq_fs;
+    output reg  o_irq_rc;
+    output reg  o_alarmq;
+    output reg  o_irq_fsc;
+    output reg  o_fs_host;
+    output reg  o_fs_clear;
+    input wire  i_fs_cleared;
+    output reg  [15:0] o_aerr;
+
+    // Registers and child block ports
+    reg  [11:0] db__read_address;
+    wire  [15:0] db__read_data;
+    reg  [11:0] db__write_address;
+    reg  [15:0] db__write_data;
+    reg  db__write_enable;
+    reg  [11:0] cfg_tx__read_address;
+    wire  [3:0] cfg_tx__read_data;
+    reg  [11:0] cfg_tx__write_address;
+    reg  [3:0] cfg_tx__write_data;
+    reg  cfg_tx__write_enable;
+    reg  [11:0] cfg_rx__read_address;
+    wire  [3:0] cfg_rx__read_data;
+    reg  [11:0] cfg_rx__write_address;
+    reg  [3:0] cfg_rx__write_data;
+    reg  cfg_rx__write_enable;
+    wire  [5:0] ast__read_data;
+    reg  [11:0] ast__write_address;
+    reg  [5:0] ast__write_data;
+    reg  ast__write_enable;
+    reg  join_d;
+    reg  join_q;
+    reg  [1:0] rl_d;
+    reg  [1:0] rl_q;
+    reg  [4:0] alq__read_address;
+    wire  [15:0] alq__read_data;
+    reg  [4:0] alq__write_address;
+    reg  [15:0] alq__write_data;
+    reg  alq__write_enable;
+    reg  [4:0] alq_wr_d;
+    reg  [4:0] alq_wr_q;
+    reg  [4:0] alq_rd_d;
+    reg  [4:0] alq_rd_q;
+    reg  [4:0] alq_level_d;
+    reg  [4:0] alq_level_q;
+    reg  [15:0] alq_ovf_d;
+    reg  [15:0] alq_ovf_q;
+    reg  alq_in_d;
+    reg  alq_in_q;
+    reg  [15:0] alq_word_d;
+    reg  [15:0] alq_word_q;
+    reg  alq_w2_d;
+    reg  alq_w2_q;
+    reg  alq_out_d;
+    reg  alq_out_q;
+    reg  [15:0] hdr_cyc_d;
+    reg  [15:0] hdr_cyc_q;
+    reg  [15:0] alq_c_d;
+    reg  [15:0] alq_c_q;
+    reg  tx_served_d;
+    reg  tx_served_q;
+    reg  [15:0] tx_data_d;
+    reg  [15:0] tx_data_q;
+    reg  [3:0] tx_cfg_d;
+    reg  [3:0] tx_cfg_q;
+    reg  tx_home_d;
+    reg  tx_home_q;
+    reg  hwsame_d;
+    reg  hwsame_q;
+    reg  t3_d;
+    reg  t3_q;
+    reg  t3_hv_d;
+    reg  t3_hv_q;
+    reg  [11:0] t3_slot_d;
+    reg  [11:0] t3_slot_q;
+    reg  [15:0] t3_data_d;
+    reg  [15:0] t3_data_q;
+    reg  [3:0] t3_cfg_d;
+    reg  [3:0] t3_cfg_q;
+    reg  s2_d;
+    reg  s2_q;
+    reg  [11:0] s2_slot_d;
+    reg  [11:0] s2_slot_q;
+    reg  s2_ok_d;
+    reg  s2_ok_q;
+    reg  s2_alive_d;
+    reg  s2_alive_q;
+    reg  s2_alarm_d;
+    reg  s2_alarm_q;
+    reg  s2_run_d;
+    reg  s2_run_q;
+    reg  [15:0] s2_data_d;
+    reg  [15:0] s2_data_q;
+    reg  irq1_d;
+    reg  irq1_q;
+    reg  irq2_d;
+    reg  irq2_q;
+    reg  irq_fs_d;
+    reg  irq_fs_q;
+    reg  irq_rc_d;
+    reg  irq_rc_q;
+    reg  irq_fsc_d;
+    reg  irq_fsc_q;
+    reg  fs_was_d;
+    reg  fs_was_q;
+    reg  fs_host_d;
+    reg  fs_host_q;
+    reg  fs_clear_d;
+    reg  fs_clear_q;
+    reg  fs_clear_held_d;
+    reg  fs_clear_held_q;
+    reg  [15:0] aerr_d;
+    reg  [15:0] aerr_q;
+    reg  [15:0] last_irq_d;
+    reg  [15:0] last_irq_q;
+    reg  [2:0] cur_cyc_d;
+    reg  [2:0] cur_cyc_q;
+    reg  fs_frame_d;
+    reg  fs_frame_q;
+    reg  unread_d;
+    reg  unread_q;
+    reg  read_prev_d;
+    reg  read_prev_q;
+    reg  running_d;
+    reg  running_q;
+    reg  err_cfg_d;
+    reg  err_cfg_q;
+    reg  err_wr_d;
+    reg  err_wr_q;
+    reg  [2:0] hstate_d;
+    reg  [2:0] hstate_q;
+    reg  ack_d;
+    reg  ack_q;
+    reg  [15:0] rdat_d;
+    reg  [15:0] rdat_q;
+    reg  [3:0] perm_d;
+    reg  [3:0] perm_q;
+    reg  aerr_inc_d;
+    reg  aerr_inc_q;
+
+    // Local signals
+    reg  alq_push;
+    reg  alq_pop;
+    reg  alq_keep;
+    reg  [15:0] stat;
+    reg  tx_value;
+    reg  [15:0] irq_word;
+    reg  [3:0] s2_cfg;
+    reg  [5:0] s2_ast;
+    reg  [5:0] new_ast;
+    reg  [2:0] prev_cyc;
+    reg  ast_valid;
+    reg  s2_alrm;
+    reg  s2_fsr;
+    reg  s2_new;
+    reg  [5:0] ast_word;
+    reg  s2_write;
+    reg  s2_own;
+    reg  s3_take;
+    reg  host_wr;
+    reg  host_req;
+    reg  adr_data;
+    reg  adr_cfg;
+
+    // Child blocks
+    merkur_special_master__mdb__db db(
+        .read_address(db__read_address),
+        .read_clock(clock),
+        .read_data(db__read_data),
+        .write_address(db__write_address),
+        .write_clock(clock),
+        .write_data(db__write_data),
+        .write_enable(db__write_enable)
+    );
+    merkur_special_master__mdb__cfg_tx cfg_tx(
+        .read_address(cfg_tx__read_address),
+        .read_clock(clock),
+        .read_data(cfg_tx__read_data),
+        .write_address(cfg_tx__write_address),
+        .write_clock(clock),
+        .write_data(cfg_tx__write_data),
+        .write_enable(cfg_tx__write_enable)
+    );
+    merkur_special_master__mdb__cfg_rx cfg_rx(
+        .read_address(cfg_rx__read_address),
+        .read_clock(clock),
+        .read_data(cfg_rx__read_data),
+        .write_address(cfg_rx__write_address),
+        .write_clock(clock),
+        .write_data(cfg_rx__write_data),
+        .write_enable(cfg_rx__write_enable)
+    );
+    merkur_special_master__mdb__ast ast(
+        .read_address(i_slot),
+        .read_clock(clock),
+        .read_data(ast__read_data),
+        .write_address(ast__write_address),
+        .write_clock(clock),
+        .write_data(ast__write_data),
+        .write_enable(ast__write_enable)
+    );
+    merkur_special_master__mdb__alq alq(
+        .read_address(alq__read_address),
+        .read_clock(clock),
+        .read_data(alq__read_data),
+        .write_address(alq__write_address),
+        .write_clock(clock),
+        .write_data(alq__write_data),
+        .write_enable(alq__write_enable)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        tx_served_d = tx_served_q;
+        tx_data_d = tx_data_q;
+        tx_cfg_d = tx_cfg_q;
+        tx_home_d = tx_home_q;
+        hwsame_d = hwsame_q;
+        t3_d = t3_q;
+        t3_hv_d = t3_hv_q;
+        t3_slot_d = t3_slot_q;
+        t3_data_d = t3_data_q;
+        t3_cfg_d = t3_cfg_q;
+        join_d = join_q;
+        rl_d = rl_q;
+        s2_d = s2_q;
+        s2_slot_d = s2_slot_q;
+        s2_ok_d = s2_ok_q;
+        s2_alive_d = s2_alive_q;
+        s2_alarm_d = s2_alarm_q;
+        s2_run_d = s2_run_q;
+        s2_data_d = s2_data_q;
+        irq1_d = irq1_q;
+        irq2_d = irq2_q;
+        irq_fs_d = irq_fs_q;
+        irq_rc_d = irq_rc_q;
+        irq_fsc_d = irq_fsc_q;
+        fs_was_d = fs_was_q;
+        fs_host_d = fs_host_q;
+        fs_clear_d = fs_clear_q;
+        fs_clear_held_d = fs_clear_held_q;
+        aerr_d = aerr_q;
+        last_irq_d = last_irq_q;
+        running_d = running_q;
+        err_cfg_d = err_cfg_q;
+        err_wr_d = err_wr_q;
+        hstate_d = hstate_q;
+        ack_d = ack_q;
+        rdat_d = rdat_q;
+        perm_d = perm_q;
+        aerr_inc_d = aerr_inc_q;
+        cur_cyc_d = cur_cyc_q;
+        fs_frame_d = fs_frame_q;
+        unread_d = unread_q;
+        read_prev_d = read_prev_q;
+        alq_wr_d = alq_wr_q;
+        alq_rd_d = alq_rd_q;
+        alq_level_d = alq_level_q;
+        alq_ovf_d = alq_ovf_q;
+        alq_in_d = alq_in_q;
+        alq_word_d = alq_word_q;
+        alq_w2_d = alq_w2_q;
+        alq_out_d = alq_out_q;
+        hdr_cyc_d = hdr_cyc_q;
+        alq_c_d = alq_c_q;
+        alq_push = 1'b0;
+        alq_pop = 1'b0;
+        alq__read_address = alq_rd_q;
+        stat = 16'h0;
+        irq_word = 16'h0;
+        host_req = i_wb_cyc & i_wb_stb & ~ack_q;
+        adr_data = i_wb_adr[(12)+:(2)] == 2'h0;
+        adr_cfg = i_wb_adr[(12)+:(2)] == 2'h1;
+        tx_served_d = 1'b1;
+        db__read_address = i_tx_slot;
+        cfg_tx__read_address = i_tx_slot;
+        if (tx_served_q) begin
+            tx_data_d = db__read_data;
+            tx_cfg_d = cfg_tx__read_data;
+        end
+        tx_home_d = i_tx_slot == i_home;
+        o_tx_data = tx_data_q;
+        tx_value = ~join_q | tx_cfg_q[0];
+        o_tx_cfg = 2'h0;
+        if (rl_q == 2'h0) begin
+            if (tx_cfg_q[3]) begin
+                if (tx_value) begin
+                    o_tx_cfg = 2'h1;
+                end
+                else if (tx_home_q) begin
+                    o_tx_cfg = 2'h3;
+                end
+            end
+            if (tx_cfg_q[1] & tx_value) begin
+                o_tx_cfg = 2'h2;
+            end
+        end
+        o_join = join_q;
+        cfg_rx__read_address = i_slot;
+        if (i_wvalid) begin
+            cfg_tx__read_address = i_slot;
+            tx_served_d = 1'b0;
+        end
+        s2_d = i_wvalid & (i_kind == 2'h2);
+        s2_slot_d = i_slot;
+        s2_ok_d = i_ok;
+        s2_alive_d = i_alive;
+        s2_alarm_d = i_alarm;
+        s2_run_d = running_q;
+        s2_data_d = i_data;
+        s2_cfg = cfg_rx__read_data;
+        s2_ast = ast__read_data;
+        irq1_d = 1'b0;
+        irq2_d = 1'b0;
+        aerr_inc_d = 1'b0;
+        if (aerr_inc_q & (aerr_q != 16'hffff)) begin
+            aerr_d = aerr_q + 16'h1;
+        end
+        irq_fs_d = 1'b0;
+        irq_rc_d = 1'b0;
+        fs_was_d = i_fs;
+        irq_fsc_d = fs_was_q != i_fs;
+        fs_clear_d = 1'b0;
+        if (i_fs_cleared) begin
+            fs_clear_held_d = 1'b0;
+        end
+        s2_write = 1'b0;
+        s2_own = 1'b0;
+        s3_take = 1'b0;
+        host_wr = 1'b0;
+        hwsame_d = 1'b0;
+        t3_d = 1'b0;
+        if (i_hdr_bad) begin
+            unread_d = 1'b1;
+        end
+        if (i_wvalid & (i_kind == 2'h1) & i_ok) begin
+            cur_cyc_d = i_data[(12)+:(3)];
+            hdr_cyc_d = i_data & 16'h7000;
+            fs_frame_d = i_fs;
+            read_prev_d = ~unread_q & ~fs_frame_q;
+            unread_d = 1'b0;
+            if (~i_fs & (rl_q == 2'h1)) begin
+                rl_d = 2'h2;
+            end
+            if (~i_fs & (rl_q == 2'h2)) begin
+                rl_d = 2'h0;
+            end
+        end
+        prev_cyc = cur_cyc_q - 3'h1;
+        ast_valid = s2_ast[0] & (s2_ast[(3)+:(3)] == prev_cyc) & read_prev_q;
+        new_ast = s2_ast & 6'h4;
+        ast__write_enable = 1'b0;
+        ast__write_address = s2_slot_q;
+        cfg_rx__write_enable = 1'b0;
+        cfg_rx__write_address = s2_slot_q;
+        cfg_rx__write_data = s2_cfg | 4'h1;
+        if (s2_data_q[11]) begin
+            cfg_rx__write_data = s2_cfg & 4'he;
+        end
+        s2_alrm = s2_q & s2_ok_q & s2_alarm_q & (s2_slot_q != i_home);
+        s2_fsr = s2_data_q[(12)+:(4)] == 4'h3;
+        if (s2_alrm & ~s2_fsr & s2_run_q & running_q) begin
+            cfg_rx__write_enable = 1'b1;
+        end
+        s2_new = s2_fsr | ~s2_run_q | (s2_data_q[11] == s2_cfg[0]);
+        if (s2_q & ~fs_frame_q) begin
+            ast__write_enable = 1'b1;
+            if (s2_ok_q) begin
+                if (s2_alrm & s2_new) begin
+                    irq_word = s2_data_q & 16'hf000;
+                    if (s2_slot_q[0]) begin
+                        irq_word = irq_word | 16'h1;
+                    end
+                    if (s2_slot_q[1]) begin
+                        irq_word = irq_word | 16'h2;
+                    end
+                    if (s2_slot_q[2]) begin
+                        irq_word = irq_word | 16'h4;
+                    end
+                    if (s2_slot_q[3]) begin
+                        irq_word = irq_word | 16'h8;
+                    end
+                    if (s2_slot_q[4]) begin
+                        irq_word = irq_word | 16'h10;
+                    end
+                    if (s2_slot_q[5]) begin
+                        irq_word = irq_word | 16'h20;
+                    end
+                    if (s2_slot_q[6]) begin
+                        irq_word = irq_word | 16'h40;
+                    end
+                    if (s2_slot_q[7]) begin
+                        irq_word = irq_word | 16'h80;
+                    end
+                    if (s2_slot_q[8]) begin
+                        irq_word = irq_word | 16'h100;
+                    end
+                    if (s2_slot_q[9]) begin
+                        irq_word = irq_word | 16'h200;
+                    end
+                    if (s2_slot_q[10]) begin
+                        irq_word = irq_word | 16'h400;
+                    end
+                    if (s2_slot_q[11]) begin
+                        irq_word = irq_word | 16'h800;
+                    end
+                    last_irq_d = irq_word;
+                    alq_push = 1'b1;
+                    if (s2_data_q[(12)+:(4)] == 4'h1) begin
+                        irq1_d = 1'b1;
+                    end
+                    if (s2_data_q[(12)+:(4)] == 4'h2) begin
+                        irq2_d = 1'b1;
+                    end
+                    if (s2_data_q[(12)+:(4)] == 4'h3) begin
+                        irq_fs_d = 1'b1;
+                    end
+                    if ((s2_data_q[(12)+:(4)] >= 4'h4) & (s2_data_q[(12)+:(4)] <= 4'h6)) begin
+                        irq_rc_d = 1'b1;
+                    end
+                end
+                s2_own = (s2_cfg & 4'ha) != 4'h0;
+                s2_write = ~s2_alarm_q & ~s2_own;
+                t3_d = ~s2_alarm_q & s2_own & join_q;
+                t3_hv_d = cfg_tx__read_data[0] | hwsame_q;
+                t3_slot_d = s2_slot_q;
+                t3_data_d = s2_data_q;
+                t3_cfg_d = s2_cfg;
+                if (s2_cfg[2]) begin
+                    new_ast = (s2_ast & 6'h4) | 6'h1;
+                    if (s2_alive_q) begin
+                        new_ast = (s2_ast & 6'h4) | 6'h3;
+                    end
+                    if (ast_valid) begin
+                        if (s2_ast[1] == s2_alive_q) begin
+                            new_ast = new_ast | 6'h4;
+                            aerr_inc_d = 1'b1;
+                        end
+                        else begin
+                            new_ast = new_ast & 6'h3;
+                        end
+                    end
+                end
+            end
+        end
+        ast_word = new_ast & 6'h7;
+        if (cur_cyc_q[0]) begin
+            ast_word = ast_word | 6'h8;
+        end
+        if (cur_cyc_q[1]) begin
+            ast_word = ast_word | 6'h10;
+        end
+        if (cur_cyc_q[2]) begin
+            ast_word = ast_word | 6'h20;
+        end
+        ast__write_data = ast_word;
+        db__write_enable = s2_write;
+        db__write_address = s2_slot_q;
+        db__write_data = s2_data_q;
+        ack_d = 1'b0;
+        cfg_tx__write_enable = 1'b0;
+        cfg_tx__write_address = i_wb_adr[(0)+:(12)];
+        cfg_tx__write_data = i_wb_dat[(0)+:(4)] & 4'he;
+        if (~host_req) begin
+            hstate_d = 3'h0;
+        end
+        else if (hstate_q == 3'h0) begin
+            if (adr_data) begin
+                if (i_wb_we) begin
+                    if (~i_wvalid) begin
+                        cfg_rx__read_address = i_wb_adr[(0)+:(12)];
+                        hstate_d = 3'h3;
+                    end
+                end
+                else begin
+                    db__read_address = i_wb_adr[(0)+:(12)];
+                    tx_served_d = 1'b0;
+                    hstate_d = 3'h1;
+                end
+            end
+            else if (adr_cfg) begin
+                if (i_wb_we) begin
+                    if (running_q) begin
+                        err_cfg_d = 1'b1;
+                    end
+                    else begin
+                        cfg_tx__write_enable = 1'b1;
+                        cfg_rx__write_enable = 1'b1;
+                        cfg_rx__write_address = i_wb_adr[(0)+:(12)];
+                        cfg_rx__write_data = i_wb_dat[(0)+:(4)] & 4'he;
+                    end
+                    ack_d = 1'b1;
+                end
+                else if (~i_wvalid) begin
+                    cfg_rx__read_address = i_wb_adr[(0)+:(12)];
+                    hstate_d = 3'h5;
+                end
+            end
+            else begin
+                ack_d = 1'b1;
+                rdat_d = 16'h0;
+                if (i_wb_adr == 14'h2000) begin
+                    stat = 16'h0;
+                    if (i_mode[0]) begin
+                        stat = stat | 16'h10;
+                    end
+                    if (i_mode[1]) begin
+                        stat = stat | 16'h20;
+                    end
+                    if (running_q) begin
+                        stat = stat | 16'h1;
+                    end
+                    if (err_cfg_q) begin
+                        stat = stat | 16'h2;
+                    end
+                    if (err_wr_q) begin
+                        stat = stat | 16'h4;
+                    end
+                    if (i_fs) begin
+                        stat = stat | 16'h8;
+                    end
+                    if (fs_host_q) begin
+                        stat = stat | 16'h40;
+                    end
+                    if (fs_clear_held_q) begin
+                        stat = stat | 16'h80;
+                    end
+                    if (join_q) begin
+                        stat = stat | 16'h100;
+                    end
+                    if (rl_q != 2'h0) begin
+                        stat = stat | 16'h200;
+                    end
+                    rdat_d = stat;
+                    if (i_wb_we) begin
+                        if (i_wb_dat[4]) begin
+                            fs_clear_d = 1'b1;
+                            fs_clear_held_d = 1'b1;
+                        end
+                        if (i_wb_dat[5]) begin
+                            if (running_q) begin
+                                err_cfg_d = 1'b1;
+                            end
+                            else begin
+                                fs_host_d = 1'b1;
+                            end
+                        end
+                        if (i_wb_dat[0]) begin
+                            running_d = 1'b1;
+                        end
+                        if (i_wb_dat[6]) begin
+                            if (running_q) begin
+                                err_cfg_d = 1'b1;
+                            end
+                            else begin
+                                running_d = 1'b1;
+                                join_d = 1'b1;
+                                rl_d = 2'h1;
+                            end
+                        end
+                        if (i_wb_dat[1]) begin
+                            err_cfg_d = 1'b0;
+                        end
+                        if (i_wb_dat[2]) begin
+                            err_wr_d = 1'b0;
+                        end
+                        if (i_wb_dat[3]) begin
+                            running_d = 1'b0;
+                        end
+                    end
+                end
+                if (i_wb_adr == 14'h2001) begin
+                    rdat_d = aerr_q;
+                end
+                if (i_wb_adr == 14'h2002) begin
+                    rdat_d = last_irq_q;
+                end
+                if (~i_wb_we & (i_wb_adr == 14'h2003)) begin
+                    ack_d = 1'b0;
+                    alq__read_address = alq_rd_q;
+                    hstate_d = 3'h6;
+                end
+                if (~i_wb_we & (i_wb_adr == 14'h2004)) begin
+                    ack_d = 1'b0;
+                    alq__read_address = alq_rd_q | 5'h1;
+                    hstate_d = 3'h6;
+                end
+                if (i_wb_we & (i_wb_adr == 14'h2004) & i_wb_dat[0] & (alq_level_q != 5'h0)) begin
+                    alq_pop = 1'b1;
+                end
+                if ((i_wb_adr == 14'h2004) & i_wb_we & i_wb_dat[1]) begin
+                    alq_ovf_d = 16'h0;
+                end
+                if (i_wb_adr == 14'h2005) begin
+                    rdat_d = alq_ovf_q;
+                end
+            end
+        end
+        else if (hstate_q == 3'h1) begin
+            rdat_d = db__read_data;
+            ack_d = 1'b1;
+            hstate_d = 3'h7;
+        end
+        else if (hstate_q == 3'h3) begin
+            perm_d = cfg_rx__read_data;
+            hstate_d = 3'h4;
+        end
+        else if (hstate_q == 3'h4) begin
+            if ((perm_q & 4'ha) == 4'h0) begin
+                err_wr_d = 1'b1;
+                ack_d = 1'b1;
+                hstate_d = 3'h7;
+            end
+            else if (~s2_q) begin
+                db__write_enable = 1'b1;
+                db__write_address = i_wb_adr[(0)+:(12)];
+                db__write_data = i_wb_dat;
+                cfg_tx__write_enable = 1'b1;
+                cfg_tx__write_data = (perm_q & 4'he) | 4'h1;
+                hwsame_d = i_wvalid & (i_slot == i_wb_adr[(0)+:(12)]);
+                host_wr = 1'b1;
+                ack_d = 1'b1;
+                hstate_d = 3'h7;
+            end
+        end
+        else if (hstate_q == 3'h6) begin
+            stat = 16'h0;
+            if (alq_level_q != 5'h0) begin
+                stat = alq__read_data;
+            end
+            if (i_wb_adr == 14'h2004) begin
+                stat = stat & 16'h7000;
+                if (alq_level_q[0]) begin
+                    stat = stat | 16'h1;
+                end
+                if (alq_level_q[1]) begin
+                    stat = stat | 16'h2;
+                end
+                if (alq_level_q[2]) begin
+                    stat = stat | 16'h4;
+                end
+                if (alq_level_q[3]) begin
+                    stat = stat | 16'h8;
+                end
+                if (alq_level_q[4]) begin
+                    stat = stat | 16'h10;
+                end
+            end
+            rdat_d = stat;
+            ack_d = 1'b1;
+            hstate_d = 3'h7;
+        end
+        else if (hstate_q == 3'h5) begin
+            stat = 16'h0;
+            if (i_wb_adr[(0)+:(12)] == i_slots_m1) begin
+                stat = stat | 16'h1;
+            end
+            if (cfg_rx__read_data[1]) begin
+                stat = stat | 16'h2;
+            end
+            if (cfg_rx__read_data[2]) begin
+                stat = stat | 16'h4;
+            end
+            if (cfg_rx__read_data[3]) begin
+                stat = stat | 16'h8;
+            end
+            rdat_d = stat;
+            ack_d = 1'b1;
+            hstate_d = 3'h7;
+        end
+        if (t3_q & ~t3_hv_q) begin
+            if (host_wr) begin
+                t3_d = t3_slot_q != i_wb_adr[(0)+:(12)];
+            end
+            else begin
+                s3_take = 1'b1;
+            end
+        end
+        if (s3_take) begin
+            db__write_enable = 1'b1;
+            db__write_address = t3_slot_q;
+            db__write_data = t3_data_q;
+            cfg_tx__write_enable = 1'b1;
+            cfg_tx__write_address = t3_slot_q;
+            cfg_tx__write_data = (t3_cfg_q & 4'he) | 4'h1;
+        end
+        o_wb_ack = ack_q;
+        o_wb_dat = rdat_q;
+        alq_in_d = alq_push;
+        if (alq_push) begin
+            alq_word_d = irq_word;
+        end
+        alq_out_d = alq_pop;
+        alq_keep = alq_in_q & ((alq_level_q != 5'h10) | alq_out_q);
+        alq_w2_d = alq_keep;
+        alq__write_address = alq_wr_q;
+        alq__write_data = alq_word_q;
+        alq__write_enable = alq_keep;
+        if (alq_keep) begin
+            alq_c_d = hdr_cyc_q;
+        end
+        if (alq_w2_q) begin
+            alq__write_address = alq_wr_q | 5'h1;
+            alq__write_data = alq_c_q;
+            alq__write_enable = 1'b1;
+            alq_wr_d = alq_wr_q + 5'h2;
+        end
+        if (alq_out_q) begin
+            alq_rd_d = alq_rd_q + 5'h2;
+        end
+        if (alq_w2_q & ~alq_out_q) begin
+            alq_level_d = alq_level_q + 5'h1;
+        end
+        if (~alq_w2_q & alq_out_q) begin
+            alq_level_d = alq_level_q - 5'h1;
+        end
+        if (alq_in_q & ~alq_keep & (alq_ovf_q != 16'hffff)) begin
+            alq_ovf_d = alq_ovf_q + 16'h1;
+        end
+        o_s2 = s2_q;
+        o_s2_slot = s2_slot_q;
+        o_s2_act = s2_cfg[1];
+        o_s2_ok = s2_ok_q;
+        o_s2_alive = s2_alive_q;
+        o_s2_alarm = s2_alarm_q;
+        o_s2_data = s2_data_q;
+        o_running = running_q;
+        o_irq1 = irq1_q;
+        o_irq2 = irq2_q;
+        o_irq_fs = irq_fs_q;
+        o_irq_rc = irq_rc_q;
+        o_alarmq = alq_level_q != 5'h0;
+        o_irq_fsc = irq_fsc_q;
+        o_fs_host = fs_host_q;
+        o_fs_clear = fs_clear_q;
+        o_aerr = aerr_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial join_q = 1'h0;
+    always @(posedge clock) join_q <= join_d;
+    initial rl_q = 2'h0;
+    always @(posedge clock) rl_q <= rl_d;
+    initial alq_wr_q = 5'h0;
+    always @(posedge clock) alq_wr_q <= alq_wr_d;
+    initial alq_rd_q = 5'h0;
+    always @(posedge clock) alq_rd_q <= alq_rd_d;
+    initial alq_level_q = 5'h0;
+    always @(posedge clock) alq_level_q <= alq_level_d;
+    initial alq_ovf_q = 16'h0;
+    always @(posedge clock) alq_ovf_q <= alq_ovf_d;
+    initial alq_in_q = 1'h0;
+    always @(posedge clock) alq_in_q <= alq_in_d;
+    initial alq_word_q = 16'h0;
+    always @(posedge clock) alq_word_q <= alq_word_d;
+    initial alq_w2_q = 1'h0;
+    always @(posedge clock) alq_w2_q <= alq_w2_d;
+    initial alq_out_q = 1'h0;
+    always @(posedge clock) alq_out_q <= alq_out_d;
+    initial hdr_cyc_q = 16'h0;
+    always @(posedge clock) hdr_cyc_q <= hdr_cyc_d;
+    initial alq_c_q = 16'h0;
+    always @(posedge clock) alq_c_q <= alq_c_d;
+    initial tx_served_q = 1'h0;
+    always @(posedge clock) tx_served_q <= tx_served_d;
+    initial tx_data_q = 16'h0;
+    always @(posedge clock) tx_data_q <= tx_data_d;
+    initial tx_cfg_q = 4'h0;
+    always @(posedge clock) tx_cfg_q <= tx_cfg_d;
+    initial tx_home_q = 1'h0;
+    always @(posedge clock) tx_home_q <= tx_home_d;
+    initial hwsame_q = 1'h0;
+    always @(posedge clock) hwsame_q <= hwsame_d;
+    initial t3_q = 1'h0;
+    always @(posedge clock) t3_q <= t3_d;
+    initial t3_hv_q = 1'h0;
+    always @(posedge clock) t3_hv_q <= t3_hv_d;
+    initial t3_slot_q = 12'h0;
+    always @(posedge clock) t3_slot_q <= t3_slot_d;
+    initial t3_data_q = 16'h0;
+    always @(posedge clock) t3_data_q <= t3_data_d;
+    initial t3_cfg_q = 4'h0;
+    always @(posedge clock) t3_cfg_q <= t3_cfg_d;
+    initial s2_q = 1'h0;
+    always @(posedge clock) s2_q <= s2_d;
+    initial s2_slot_q = 12'h0;
+    always @(posedge clock) s2_slot_q <= s2_slot_d;
+    initial s2_ok_q = 1'h0;
+    always @(posedge clock) s2_ok_q <= s2_ok_d;
+    initial s2_alive_q = 1'h0;
+    always @(posedge clock) s2_alive_q <= s2_alive_d;
+    initial s2_alarm_q = 1'h0;
+    always @(posedge clock) s2_alarm_q <= s2_alarm_d;
+    initial s2_run_q = 1'h0;
+    always @(posedge clock) s2_run_q <= s2_run_d;
+    initial s2_data_q = 16'h0;
+    always @(posedge clock) s2_data_q <= s2_data_d;
+    initial irq1_q = 1'h0;
+    always @(posedge clock) irq1_q <= irq1_d;
+    initial irq2_q = 1'h0;
+    always @(posedge clock) irq2_q <= irq2_d;
+    initial irq_fs_q = 1'h0;
+    always @(posedge clock) irq_fs_q <= irq_fs_d;
+    initial irq_rc_q = 1'h0;
+    always @(posedge clock) irq_rc_q <= irq_rc_d;
+    initial irq_fsc_q = 1'h0;
+    always @(posedge clock) irq_fsc_q <= irq_fsc_d;
+    initial fs_was_q = 1'h0;
+    always @(posedge clock) fs_was_q <= fs_was_d;
+    initial fs_host_q = 1'h0;
+    always @(posedge clock) fs_host_q <= fs_host_d;
+    initial fs_clear_q = 1'h0;
+    always @(posedge clock) fs_clear_q <= fs_clear_d;
+    initial fs_clear_held_q = 1'h0;
+    always @(posedge clock) fs_clear_held_q <= fs_clear_held_d;
+    initial aerr_q = 16'h0;
+    always @(posedge clock) aerr_q <= aerr_d;
+    initial last_irq_q = 16'h0;
+    always @(posedge clock) last_irq_q <= last_irq_d;
+    initial cur_cyc_q = 3'h0;
+    always @(posedge clock) cur_cyc_q <= cur_cyc_d;
+    initial fs_frame_q = 1'h0;
+    always @(posedge clock) fs_frame_q <= fs_frame_d;
+    initial unread_q = 1'h0;
+    always @(posedge clock) unread_q <= unread_d;
+    initial read_prev_q = 1'h0;
+    always @(posedge clock) read_prev_q <= read_prev_d;
+    initial running_q = 1'h0;
+    always @(posedge clock) running_q <= running_d;
+    initial err_cfg_q = 1'h0;
+    always @(posedge clock) err_cfg_q <= err_cfg_d;
+    initial err_wr_q = 1'h0;
+    always @(posedge clock) err_wr_q <= err_wr_d;
+    initial hstate_q = 3'h0;
+    always @(posedge clock) hstate_q <= hstate_d;
+    initial ack_q = 1'h0;
+    always @(posedge clock) ack_q <= ack_d;
+    initial rdat_q = 16'h0;
+    always @(posedge clock) rdat_q <= rdat_d;
+    initial perm_q = 4'h0;
+    always @(posedge clock) perm_q <= perm_d;
+    initial aerr_inc_q = 1'h0;
+    always @(posedge clock) aerr_inc_q <= aerr_inc_d;
+endmodule // merkur_special_master__mdb
+// --------------------------------------------------------------------------
+// `alq` of `merkur_special_master__mdb`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__mdb__alq(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [4:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[15:0] mem[31:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 31; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= mem[read_address];
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__mdb__alq
+// --------------------------------------------------------------------------
+// `ast` of `merkur_special_master__mdb`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__mdb__ast(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  [5:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  [5:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[5:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {6{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__mdb__ast
+// --------------------------------------------------------------------------
+// `cfg_rx` of `merkur_special_master__mdb`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__mdb__cfg_rx(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  [3:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  [3:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[3:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {4{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__mdb__cfg_rx
+// --------------------------------------------------------------------------
+// `cfg_tx` of `merkur_special_master__mdb`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__mdb__cfg_tx(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  [3:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  [3:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[3:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {4{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__mdb__cfg_tx
+// --------------------------------------------------------------------------
+// `db` of `merkur_special_master__mdb`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__mdb__db(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  [15:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[15:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {16{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__mdb__db
+// --------------------------------------------------------------------------
+// `rep`: Retime, Elastic output buffer with its own bit timing. (rtl/src/line/retime.rs)
+// Documented at module `merkur_special_master__fwd__out` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rep(clock,i_valid,i_code,i_phase,o_line,o_slip);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_valid;
+    input wire  i_code;
+    input wire  [1:0] i_phase;
+    output reg  [1:0] o_line;
+    output reg  o_slip;
+
+    // Constant declarations
+    localparam  quiet_bits = 5'b1110;
+    localparam  votes = 3'b100;
+    localparam  gap_min = 4'h8;
+    localparam  one = 8'h1;
+
+    // Registers and child block ports
+    reg  [7:0] sr_d;
+    reg  [7:0] sr_q;
+    reg  [3:0] cnt_d;
+    reg  [3:0] cnt_q;
+    reg  [2:0] rem_d;
+    reg  [2:0] rem_q;
+    reg  lvl_d;
+    reg  lvl_q;
+    reg  run_d;
+    reg  run_q;
+    reg  dark_d;
+    reg  dark_q;
+    reg  [4:0] since_d;
+    reg  [4:0] since_q;
+    reg  [2:0] hi_d;
+    reg  [2:0] hi_q;
+    reg  [2:0] lo_d;
+    reg  [2:0] lo_q;
+    reg  [3:0] gap_d;
+    reg  [3:0] gap_q;
+    reg  [1:0] pair_d;
+    reg  [1:0] pair_q;
+    reg  slip_d;
+    reg  slip_q;
+
+    // Local signals
+    reg  send0;
+    reg  send1;
+    reg  take;
+    reg  under;
+    reg  oldest;
+    reg  [7:0] sr_shift;
+    reg  [2:0] wpos;
+    reg  [7:0] wmask;
+    reg  new_lvl;
+    reg  [2:0] len;
+    reg  [3:0] cnt_next;
+    reg  [2:0] rem_next;
+    reg  t_neg;
+    reg  t_pos;
+    reg  t_lt8;
+    reg  t_gt8;
+    reg  c_is0;
+    reg  c_is1;
+    reg  c_is2;
+    reg  c_is3;
+    reg  c_ge4;
+    reg  late;
+    reg  early;
+    reg  start2;
+    reg  over;
+
+    // Combinational logic
+    always @(*) begin
+        sr_d = sr_q;
+        cnt_d = cnt_q;
+        rem_d = rem_q;
+        lvl_d = lvl_q;
+        run_d = run_q;
+        dark_d = dark_q;
+        since_d = since_q;
+        hi_d = hi_q;
+        lo_d = lo_q;
+        gap_d = gap_q;
+        pair_d = pair_q;
+        slip_d = slip_q;
+        send0 = rem_q == 3'h0;
+        send1 = rem_q == 3'h1;
+        take = (send0 | send1) & run_q & (cnt_q != 4'h0);
+        oldest = sr_q[0];
+        under = (send0 | send1) & run_q & (cnt_q == 4'h0);
+        new_lvl = lvl_q;
+        if ((send0 | send1) & ~dark_q & ~under) begin
+            new_lvl = ~lvl_q;
+        end
+        if ((send0 | send1) & dark_q & (since_q >= quiet_bits)) begin
+            dark_d = 1'b0;
+        end
+        if (take) begin
+            new_lvl = lvl_q ^ oldest;
+        end
+        pair_d = 2'h0;
+        if (lvl_q) begin
+            pair_d = 2'h3;
+        end
+        if (send0 & new_lvl) begin
+            pair_d = 2'h3;
+        end
+        if (send0 & ~new_lvl) begin
+            pair_d = 2'h0;
+        end
+        if (send1 & (new_lvl != lvl_q)) begin
+            pair_d = 2'h1;
+            if (new_lvl) begin
+                pair_d = 2'h2;
+            end
+        end
+        lvl_d = new_lvl;
+        if (send0 | send1) begin
+            if (new_lvl != lvl_q) begin
+                since_d = 5'h0;
+            end
+            else if (since_q != 5'h1f) begin
+                since_d = since_q + 5'h1;
+            end
+        end
+        len = 3'h4;
+        if (run_q & (gap_q >= gap_min)) begin
+            if (hi_q >= votes) begin
+                len = 3'h3;
+            end
+            if (lo_q >= votes) begin
+                len = 3'h5;
+            end
+        end
+        rem_next = rem_q ^ 3'h2;
+        if (~rem_q[1]) begin
+            rem_next = rem_q ^ 3'h6;
+        end
+        if (send0 | send1) begin
+            if (gap_q != 4'hf) begin
+                gap_d = gap_q + 4'h1;
+            end
+            if (len != 3'h4) begin
+                gap_d = 4'h0;
+                hi_d = 3'h0;
+                lo_d = 3'h0;
+            end
+        end
+        if (send0) begin
+            rem_next = 3'h2;
+            if (len == 3'h3) begin
+                rem_next = 3'h1;
+            end
+            if (len == 3'h5) begin
+                rem_next = 3'h3;
+            end
+        end
+        if (send1) begin
+            rem_next = 3'h3;
+            if (len == 3'h3) begin
+                rem_next = 3'h2;
+            end
+            if (len == 3'h5) begin
+                rem_next = 3'h4;
+            end
+        end
+        sr_shift = sr_q;
+        if (take) begin
+            sr_shift = sr_q >> 1;
+        end
+        sr_d = sr_shift;
+        wpos = cnt_q[(0)+:(3)];
+        if (take) begin
+            wpos = cnt_q[(0)+:(3)] - 3'h1;
+        end
+        wmask = one << wpos;
+        cnt_next = cnt_q;
+        if (take & ~i_valid) begin
+            cnt_next = cnt_q - 4'h1;
+        end
+        if (i_valid) begin
+            sr_d = sr_shift & ~wmask;
+            if (i_code) begin
+                sr_d = sr_shift | wmask;
+            end
+            if (~take) begin
+                cnt_next = cnt_q + 4'h1;
+            end
+        end
+        t_neg = ((rem_next == 3'h0) & (i_phase != 2'h0)) | ((rem_next == 3'h1) & (i_phase == 2'h3));
+        t_pos = (rem_next >= 3'h2) | ((rem_next == 3'h1) & ~i_phase[1]);
+        t_lt8 = (rem_next <= 3'h3) | ((rem_next == 3'h4) & (i_phase != 2'h0)) | ((rem_next == 3'h5) & (i_phase == 2'h3));
+        t_gt8 = (rem_next >= 3'h6) | ((rem_next == 3'h5) & ~i_phase[1]);
+        c_is0 = cnt_q == 4'hf;
+        c_is1 = cnt_q == 4'h0;
+        c_is2 = cnt_q == 4'h1;
+        c_is3 = cnt_q == 4'h2;
+        c_ge4 = (cnt_q >= 4'h3) & (cnt_q != 4'hf);
+        if (take) begin
+            c_is1 = cnt_q == 4'h1;
+            c_is2 = cnt_q == 4'h2;
+            c_is3 = cnt_q == 4'h3;
+            c_ge4 = cnt_q >= 4'h4;
+            c_is0 = 1'b0;
+        end
+        late = c_ge4 | (c_is0 & t_neg) | (c_is2 & t_gt8) | (c_is3 & t_pos);
+        early = (c_is0 & ~t_neg) | (c_is1 & t_lt8) | (c_is2 & t_neg);
+        if (run_q & i_valid) begin
+            if (late) begin
+                if (hi_q != 3'h7) begin
+                    hi_d = hi_q + 3'h1;
+                end
+                lo_d = 3'h0;
+            end
+            else if (early) begin
+                if (lo_q != 3'h7) begin
+                    lo_d = lo_q + 3'h1;
+                end
+                hi_d = 3'h0;
+            end
+            else begin
+                hi_d = 3'h0;
+                lo_d = 3'h0;
+            end
+        end
+        rem_d = rem_next;
+        cnt_d = cnt_next;
+        slip_d = 1'b0;
+        if (dark_q) begin
+            cnt_next = 4'h0;
+        end
+        start2 = ~run_q & i_valid & ~dark_q & (cnt_q == 4'h1);
+        over = ~dark_q & ((i_valid & ~take & (cnt_q >= 4'h8) & (cnt_q != 4'hf)) | (take & ~i_valid & (cnt_q >= 4'ha)) | ((i_valid == take) & (cnt_q >= 4'h9)));
+        if (start2) begin
+            run_d = 1'b1;
+            hi_d = 3'h0;
+            lo_d = 3'h0;
+            gap_d = 4'h0;
+        end
+        if (under | over) begin
+            slip_d = 1'b1;
+            run_d = 1'b0;
+            cnt_d = 4'h0;
+        end
+        if (under) begin
+            dark_d = 1'b1;
+        end
+        o_line = pair_q;
+        o_slip = slip_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial sr_q = 8'h0;
+    always @(posedge clock) sr_q <= sr_d;
+    initial cnt_q = 4'h0;
+    always @(posedge clock) cnt_q <= cnt_d;
+    initial rem_q = 3'h0;
+    always @(posedge clock) rem_q <= rem_d;
+    initial lvl_q = 1'h0;
+    always @(posedge clock) lvl_q <= lvl_d;
+    initial run_q = 1'h0;
+    always @(posedge clock) run_q <= run_d;
+    initial dark_q = 1'h0;
+    always @(posedge clock) dark_q <= dark_d;
+    initial since_q = 5'h0;
+    always @(posedge clock) since_q <= since_d;
+    initial hi_q = 3'h0;
+    always @(posedge clock) hi_q <= hi_d;
+    initial lo_q = 3'h0;
+    always @(posedge clock) lo_q <= lo_d;
+    initial gap_q = 4'h0;
+    always @(posedge clock) gap_q <= gap_d;
+    initial pair_q = 2'h0;
+    always @(posedge clock) pair_q <= pair_d;
+    initial slip_q = 1'h0;
+    always @(posedge clock) slip_q <= slip_d;
+endmodule // merkur_special_master__rep
+// --------------------------------------------------------------------------
+// `rx_bsr`: PortRx, Supervised receive port. (rtl/src/node/port_rx.rs)
+//
+// # port_rx — one supervised receive port: [`Monitor`] + [`StreamCtrl`]
+//
+// Purpose: what a node has on each logical input (INPUT and BSR): the receive
+// chain (CDR, framer, word decoder) and its stream controller.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
+// | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::line::rx_word::RxWord`] |
+// | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
+// | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
+// | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
+// | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
+// | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+//
+// Latency: as [`Monitor`]; stream-controller outputs one clock later.
+//
+// ```text
+// i_samples ~~~~~~ line ~~~~~~|______ dark ______________________
+// o_los     ____________________________________/‾‾‾‾‾‾‾‾‾‾‾‾‾‾   32 bit times later
+// o_cf      _____________________________________/‾‾‾‾‾‾‾‾‾‾‾‾‾
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_level,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] i_samples;
+    input wire  [11:0] i_slots_m1;
+    input wire  [11:0] i_address;
+    input wire  i_tst_fail;
+    input wire  i_flush;
+    output reg  o_start;
+    output reg  o_inpkt;
+    output reg  o_wvalid;
+    output reg  [1:0] o_kind;
+    output reg  [11:0] o_slot;
+    output reg  [15:0] o_data;
+    output reg  o_alive;
+    output reg  o_alarm;
+    output reg  [3:0] o_reason;
+    output reg  o_ok;
+    output reg  o_void;
+    output reg  o_marked;
+    output reg  o_own;
+    output reg  o_hdr_bad;
+    output reg  [1:0] o_ptype;
+    output reg  o_los;
+    output reg  o_bvalid;
+    output reg  o_level;
+    output reg  [1:0] o_phase;
+    output reg  o_cf;
+    output reg  o_hard;
+    output reg  o_run;
+    output reg  o_tst;
+    output reg  o_ack;
+
+    // Registers and child block ports
+    wire  mon__o_los;
+    wire  mon__o_bvalid;
+    wire  mon__o_level;
+    wire  [1:0] mon__o_phase;
+    wire  mon__o_start;
+    wire  mon__o_inpkt;
+    wire  mon__o_wvalid;
+    wire  [1:0] mon__o_kind;
+    wire  [11:0] mon__o_slot;
+    wire  [15:0] mon__o_data;
+    wire  mon__o_alive;
+    wire  mon__o_alarm;
+    wire  [3:0] mon__o_reason;
+    wire  mon__o_ok;
+    wire  mon__o_compl;
+    wire  mon__o_void;
+    wire  mon__o_marked;
+    wire  mon__o_own;
+    wire  mon__o_hdr_bad;
+    wire  [1:0] mon__o_ptype;
+    reg  ctrl__i_los;
+    reg  ctrl__i_wvalid;
+    reg  [1:0] ctrl__i_kind;
+    reg  ctrl__i_ok;
+    reg  ctrl__i_void;
+    reg  ctrl__i_marked;
+    reg  ctrl__i_d12;
+    reg  ctrl__i_compl;
+    reg  [1:0] ctrl__i_ptype;
+    wire  ctrl__o_cf;
+    wire  ctrl__o_hard;
+    wire  ctrl__o_run;
+    wire  ctrl__o_tst;
+    wire  ctrl__o_ack;
+
+    // Child blocks
+    merkur_special_master__rx_bsr__mon mon(
+        .clock(clock),
+        .i_samples(i_samples),
+        .i_slots_m1(i_slots_m1),
+        .i_address(i_address),
+        .i_flush(i_flush),
+        .o_los(mon__o_los),
+        .o_bvalid(mon__o_bvalid),
+        .o_level(mon__o_level),
+        .o_phase(mon__o_phase),
+        .o_start(mon__o_start),
+        .o_inpkt(mon__o_inpkt),
+        .o_wvalid(mon__o_wvalid),
+        .o_kind(mon__o_kind),
+        .o_slot(mon__o_slot),
+        .o_data(mon__o_data),
+        .o_alive(mon__o_alive),
+        .o_alarm(mon__o_alarm),
+        .o_reason(mon__o_reason),
+        .o_ok(mon__o_ok),
+        .o_compl(mon__o_compl),
+        .o_void(mon__o_void),
+        .o_marked(mon__o_marked),
+        .o_own(mon__o_own),
+        .o_hdr_bad(mon__o_hdr_bad),
+        .o_ptype(mon__o_ptype)
+    );
+    merkur_special_master__rx_bsr__ctrl ctrl(
+        .clock(clock),
+        .i_los(ctrl__i_los),
+        .i_wvalid(ctrl__i_wvalid),
+        .i_kind(ctrl__i_kind),
+        .i_ok(ctrl__i_ok),
+        .i_void(ctrl__i_void),
+        .i_marked(ctrl__i_marked),
+        .i_d12(ctrl__i_d12),
+        .i_compl(ctrl__i_compl),
+        .i_ptype(ctrl__i_ptype),
+        .i_tst_fail(i_tst_fail),
+        .i_flush(i_flush),
+        .o_cf(ctrl__o_cf),
+        .o_hard(ctrl__o_hard),
+        .o_run(ctrl__o_run),
+        .o_tst(ctrl__o_tst),
+        .o_ack(ctrl__o_ack)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        ctrl__i_los = mon__o_los;
+        ctrl__i_wvalid = mon__o_wvalid;
+        ctrl__i_kind = mon__o_kind;
+        ctrl__i_ok = mon__o_ok;
+        ctrl__i_void = mon__o_void;
+        ctrl__i_marked = mon__o_marked;
+        ctrl__i_d12 = mon__o_data[12];
+        ctrl__i_compl = mon__o_compl;
+        ctrl__i_ptype = mon__o_ptype;
+        o_start = mon__o_start;
+        o_inpkt = mon__o_inpkt;
+        o_wvalid = mon__o_wvalid;
+        o_kind = mon__o_kind;
+        o_slot = mon__o_slot;
+        o_data = mon__o_data;
+        o_alive = mon__o_alive;
+        o_alarm = mon__o_alarm;
+        o_reason = mon__o_reason;
+        o_ok = mon__o_ok;
+        o_void = mon__o_void;
+        o_marked = mon__o_marked;
+        o_own = mon__o_own;
+        o_hdr_bad = mon__o_hdr_bad;
+        o_ptype = mon__o_ptype;
+        o_los = mon__o_los;
+        o_bvalid = mon__o_bvalid;
+        o_level = mon__o_level;
+        o_phase = mon__o_phase;
+        o_cf = ctrl__o_cf;
+        o_hard = ctrl__o_hard;
+        o_run = ctrl__o_run;
+        o_tst = ctrl__o_tst;
+        o_ack = ctrl__o_ack;
+    end
+
+endmodule // merkur_special_master__rx_bsr
+// --------------------------------------------------------------------------
+// `ctrl`: StreamCtrl, Stream controller. (rtl/src/node/stream_ctrl.rs)
+//
+// # stream_ctrl — stream controller: channel failure and test signal (protocol §9)
+//
+// Purpose: supervises one logical input (INPUT: the primary controller,
+// `pcf`/`ptst`; BSR: the secondary one, `scf`/`stst`) from the words its
+// receive chain ([`crate::line::monitor`]) decodes.
+//
+// Channel failure `o_cf` is any of:
+// - loss of signal (no line transition for 32 bit times, from the CDR);
+// - a test signal while `i_tst_fail` (mode N on INPUT: a TST where DATA is
+//   expected means the upstream neighbour has wrapped);
+// - 8 consecutive bad words damaged on this fibre (parity or code errors;
+//   VOID words are not bad, marked words — damaged on an earlier fibre,
+//   protocol §4 — leave the count as it is), until the next good word, or
+//   until the switchbox moves the input to another line (`i_flush`: a run
+//   is a property of one channel; carried over, it would make a node that
+//   wrapped because of it fail safe as soon as the settling time after the
+//   change is over).
+//
+// The first two are structural (`o_hard`: a dark fibre, a dead or wrapped
+// neighbour), the last a transient (`o_run`): a node decides differently on
+// them (protocol §9, §12; [`crate::node::switch_ctl`]).
+//
+// Test signal `o_tst`: a good TST packet (H0 type 10, H1 = NOT H0) was
+// received within the last 130 bit times (2 TST periods); `o_ack` is the
+// ACK bit of the last one.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_los` | in | 1 | clock | loss of signal |
+// | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_compl`, `i_ptype` | in | | clock | word outputs of the receive chain (`i_compl`: data = NOT the previous word's, [`crate::line::rx_word`]) |
+// | `i_d12` | in | 1 | clock | the word's data bit 12 (a TST's H1 carries NOT ACK there) |
+// | `i_tst_fail` | in | 1 | static | a test signal counts as channel failure |
+// | `i_flush` | in | 1 | clock | the input moved to another line: the run of bad words restarts |
+// | `o_cf` | out | 1 | clock | channel failure (`o_hard` or `o_run`) |
+// | `o_hard` | out | 1 | clock | loss of signal, or a test signal while `i_tst_fail` |
+// | `o_run` | out | 1 | clock | 8 bad words in a row damaged on this fibre |
+// | `o_tst` | out | 1 | clock | test signal |
+// | `o_ack` | out | 1 | clock | ACK of the last TST |
+//
+// Latency: registered, one clock after the word or LOS that decides.
+//
+// ```text
+// words      TST   TST   TST   (idle ...............................)
+// o_tst      __/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\____   130 bit times after the last
+// o_cf       __/‾‾‾‾ ... (only with i_tst_fail) ‾‾‾‾‾‾‾‾‾‾‾‾\____
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marked,i_d12,i_compl,i_ptype,i_tst_fail,i_flush,o_cf,o_hard,o_run,o_tst,o_ack);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_los;
+    input wire  i_wvalid;
+    input wire  [1:0] i_kind;
+    input wire  i_ok;
+    input wire  i_void;
+    input wire  i_marked;
+    input wire  i_d12;
+    input wire  i_compl;
+    input wire  [1:0] i_ptype;
+    input wire  i_tst_fail;
+    input wire  i_flush;
+    output reg  o_cf;
+    output reg  o_hard;
+    output reg  o_run;
+    output reg  o_tst;
+    output reg  o_ack;
+
+    // Constant declarations
+    localparam  hold_start = 9'b100000011;
+    localparam  bad_max = 4'h8;
+
+    // Registers and child block ports
+    reg  [3:0] bad_d;
+    reg  [3:0] bad_q;
+    reg  [8:0] hold_d;
+    reg  [8:0] hold_q;
+    reg  tst_d;
+    reg  tst_q;
+    reg  ack_d;
+    reg  ack_q;
+    reg  hard_d;
+    reg  hard_q;
+    reg  run_d;
+    reg  run_q;
+
+    // Combinational logic
+    always @(*) begin
+        bad_d = bad_q;
+        hold_d = hold_q;
+        tst_d = tst_q;
+        ack_d = ack_q;
+        hard_d = hard_q;
+        run_d = run_q;
+        if (i_wvalid) begin
+            if (i_ok) begin
+                bad_d = 4'h0;
+            end
+            else if (~i_void & ~i_marked & (bad_q != bad_max)) begin
+                bad_d = bad_q + 4'h1;
+            end
+        end
+        if (i_flush) begin
+            bad_d = 4'h0;
+        end
+        if (hold_q != 9'h0) begin
+            hold_d = hold_q - 9'h1;
+        end
+        else begin
+            tst_d = 1'b0;
+        end
+        if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
+            tst_d = 1'b1;
+            ack_d = ~i_d12;
+            hold_d = hold_start;
+        end
+        hard_d = i_los | (tst_q & i_tst_fail);
+        run_d = (bad_q == bad_max) & ~i_flush;
+        o_cf = hard_q | run_q;
+        o_hard = hard_q;
+        o_run = run_q;
+        o_tst = tst_q;
+        o_ack = ack_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial bad_q = 4'h0;
+    always @(posedge clock) bad_q <= bad_d;
+    initial hold_q = 9'h0;
+    always @(posedge clock) hold_q <= hold_d;
+    initial tst_q = 1'h0;
+    always @(posedge clock) tst_q <= tst_d;
+    initial ack_q = 1'h0;
+    always @(posedge clock) ack_q <= ack_d;
+    initial hard_q = 1'h0;
+    always @(posedge clock) hard_q <= hard_d;
+    initial run_q = 1'h0;
+    always @(posedge clock) run_q <= run_d;
+endmodule // merkur_special_master__rx_bsr__ctrl
+// --------------------------------------------------------------------------
+// `mon`: Monitor, Fibre monitor / receive chain. (rtl/src/line/monitor.rs)
+//
+// # monitor — fibre monitor: decodes what a line carries (protocol §2–§5)
+//
+// Purpose: the receive chain of a node without the node: [`Cdr`] →
+// [`RxFramer`] → [`RxWord`]. Ring tops put one on every fibre; its word
+// outputs are what is compared with the model's trace (cycle, slot, data,
+// parity ok), and its packet and slot position is where a fault is placed at
+// a given (cycle, slot). It is also the receive half of every node.
+//
+// Parameters: the word format ([`WordFormat`]), as [`RxWord::new`].
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit), bit 0 first |
+// | `i_slots_m1`, `i_address` | in | 12 | static | as [`RxWord`] |
+// | `i_flush` | in | 1 | clock | the input was switched to another line: the packet ends, a held word is dropped |
+// | `o_los` | out | 1 | clock | loss of signal |
+// | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+// | `o_start` | out | 1 | clock | J K found |
+// | `o_inpkt` | out | 1 | clock | inside a packet |
+// | `o_wvalid` … `o_ptype` | out | | clock | as [`RxWord`] |
+//
+// **Confirmation.** A word is passed on only when the line shows an edge
+// (a code 1) after its last bit: every group that can follow a word (data,
+// S, idle) has a 1 in its first two bits. A word the line died in would
+// otherwise be completed by the zeros the clock recovery reads from a dark
+// line before it mutes, and could pass both parities with a foreign
+// value; with no recovered bit for [`DROP_CLOCKS`] clocks the held word is dropped
+// (not received, as the model's "missing") and the packet ends there. Upstream nodes keep their line
+// dark after such a stop ([`crate::line::retime::QUIET_BITS`]), so no idle can
+// confirm it either.
+//
+// The held word is not copied: the outputs are the word decoder's
+// registers, which keep it until the next group is complete — 3 bit
+// times or more after the confirming edge, which must come within the
+// next group's first two bits. Consumers take a word in the clock of
+// `o_wvalid` (issue 21: one copy of a word instead of three).
+//
+// Latency from a word's last line bit to `o_wvalid`: CDR 2–3 clocks +
+// framer 1 + word 1 + the registered outputs 1 ≈ 3 bit times, plus up to
+// 2 bit times until the confirming edge.
+//
+// ```text
+// line      ~~~| J K | H0 | H1 | slot 0 | ... | slot S-1 |~~~ idle
+// o_start        ^
+// o_wvalid            ^    ^     ^              ^   (each ~2.5 bit times after its word)
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_level,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] i_samples;
+    input wire  [11:0] i_slots_m1;
+    input wire  [11:0] i_address;
+    input wire  i_flush;
+    output reg  o_los;
+    output reg  o_bvalid;
+    output reg  o_level;
+    output reg  [1:0] o_phase;
+    output reg  o_start;
+    output reg  o_inpkt;
+    output reg  o_wvalid;
+    output reg  [1:0] o_kind;
+    output reg  [11:0] o_slot;
+    output reg  [15:0] o_data;
+    output reg  o_alive;
+    output reg  o_alarm;
+    output reg  [3:0] o_reason;
+    output reg  o_ok;
+    output reg  o_compl;
+    output reg  o_void;
+    output reg  o_marked;
+    output reg  o_own;
+    output reg  o_hdr_bad;
+    output reg  [1:0] o_ptype;
+
+    // Constant declarations
+    localparam  drop_after = 3'b100;
+
+    // Registers and child block ports
+    wire  cdr__o_valid;
+    wire  cdr__o_bit;
+    wire  cdr__o_los;
+    wire  [1:0] cdr__o_phase;
+    reg  framer__i_valid;
+    reg  framer__i_level;
+    reg  framer__i_end;
+    wire  framer__o_start;
+    wire  framer__o_gvalid;
+    wire  [4:0] framer__o_group;
+    wire  framer__o_idle;
+    wire  framer__o_inpkt;
+    reg  word__i_start;
+    reg  word__i_gvalid;
+    reg  [4:0] word__i_group;
+    reg  word__i_idle;
+    wire  word__o_end;
+    wire  word__o_wvalid;
+    wire  [1:0] word__o_kind;
+    wire  [11:0] word__o_slot;
+    wire  [15:0] word__o_data;
+    wire  word__o_alive;
+    wire  word__o_alarm;
+    wire  [3:0] word__o_reason;
+    wire  word__o_ok;
+    wire  word__o_compl;
+    wire  word__o_void;
+    wire  word__o_marked;
+    wire  word__o_own;
+    wire  word__o_hdr_bad;
+    wire  [1:0] word__o_ptype;
+    reg  last_lvl_d;
+    reg  last_lvl_q;
+    reg  [2:0] quiet_d;
+    reg  [2:0] quiet_q;
+    reg  emit_d;
+    reg  emit_q;
+    reg  p_valid_d;
+    reg  p_valid_q;
+
+    // Local signals
+    reg  conf_edge;
+
+    // Child blocks
+    merkur_special_master__rx_bsr__mon__cdr cdr(
+        .clock(clock),
+        .i_samples(i_samples),
+        .o_valid(cdr__o_valid),
+        .o_bit(cdr__o_bit),
+        .o_los(cdr__o_los),
+        .o_phase(cdr__o_phase)
+    );
+    merkur_special_master__rx_bsr__mon__framer framer(
+        .clock(clock),
+        .i_valid(framer__i_valid),
+        .i_level(framer__i_level),
+        .i_end(framer__i_end),
+        .o_start(framer__o_start),
+        .o_gvalid(framer__o_gvalid),
+        .o_group(framer__o_group),
+        .o_idle(framer__o_idle),
+        .o_inpkt(framer__o_inpkt)
+    );
+    merkur_special_master__rx_bsr__mon__word word(
+        .clock(clock),
+        .i_start(word__i_start),
+        .i_gvalid(word__i_gvalid),
+        .i_group(word__i_group),
+        .i_idle(word__i_idle),
+        .i_slots_m1(i_slots_m1),
+        .i_address(i_address),
+        .o_end(word__o_end),
+        .o_wvalid(word__o_wvalid),
+        .o_kind(word__o_kind),
+        .o_slot(word__o_slot),
+        .o_data(word__o_data),
+        .o_alive(word__o_alive),
+        .o_alarm(word__o_alarm),
+        .o_reason(word__o_reason),
+        .o_ok(word__o_ok),
+        .o_compl(word__o_compl),
+        .o_void(word__o_void),
+        .o_marked(word__o_marked),
+        .o_own(word__o_own),
+        .o_hdr_bad(word__o_hdr_bad),
+        .o_ptype(word__o_ptype)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        last_lvl_d = last_lvl_q;
+        quiet_d = quiet_q;
+        emit_d = emit_q;
+        p_valid_d = p_valid_q;
+        framer__i_valid = cdr__o_valid;
+        framer__i_level = cdr__o_bit;
+        framer__i_end = word__o_end | cdr__o_los | (quiet_q == drop_after) | i_flush;
+        word__i_start = framer__o_start;
+        word__i_gvalid = framer__o_gvalid;
+        word__i_group = framer__o_group;
+        word__i_idle = framer__o_idle;
+        o_los = cdr__o_los;
+        o_bvalid = cdr__o_valid;
+        o_level = cdr__o_bit;
+        o_phase = cdr__o_phase;
+        o_start = framer__o_start;
+        o_inpkt = framer__o_inpkt;
+        o_hdr_bad = word__o_hdr_bad;
+        conf_edge = cdr__o_valid & (cdr__o_bit != last_lvl_q);
+        if (cdr__o_valid) begin
+            last_lvl_d = cdr__o_bit;
+            quiet_d = 3'h0;
+        end
+        else if (quiet_q != 3'h7) begin
+            quiet_d = quiet_q + 3'h1;
+        end
+        emit_d = 1'b0;
+        o_wvalid = emit_q;
+        o_kind = word__o_kind;
+        o_slot = word__o_slot;
+        o_data = word__o_data;
+        o_alive = word__o_alive;
+        o_alarm = word__o_alarm;
+        o_reason = word__o_reason;
+        o_ok = word__o_ok;
+        o_compl = word__o_compl;
+        o_void = word__o_void;
+        o_marked = word__o_marked;
+        o_own = word__o_own;
+        o_ptype = word__o_ptype;
+        if (p_valid_q & conf_edge) begin
+            emit_d = 1'b1;
+            p_valid_d = 1'b0;
+        end
+        if (p_valid_q & ((quiet_q == drop_after) | i_flush)) begin
+            p_valid_d = 1'b0;
+        end
+        if (word__o_wvalid) begin
+            p_valid_d = ~conf_edge;
+            emit_d = conf_edge;
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial last_lvl_q = 1'h0;
+    always @(posedge clock) last_lvl_q <= last_lvl_d;
+    initial quiet_q = 3'h0;
+    always @(posedge clock) quiet_q <= quiet_d;
+    initial emit_q = 1'h0;
+    always @(posedge clock) emit_q <= emit_d;
+    initial p_valid_q = 1'h0;
+    always @(posedge clock) p_valid_q <= p_valid_d;
+endmodule // merkur_special_master__rx_bsr__mon
+// --------------------------------------------------------------------------
+// `cdr`: Cdr, Oversampling clock and data recovery. (rtl/src/line/cdr.rs)
+//
+// # cdr — clock and data recovery by oversampling (protocol §9)
+//
+// Purpose: recovers line bits from an asynchronous NRZI line sampled
+// [`SAMPLES_PER_BIT`] = 8 times per bit time. The core clock runs at 2× the
+// line rate and takes [`SAMPLES_PER_CLOCK`] = 4 samples per clock (quadrature
+// DDR capture in hardware: both edges of the core clock and of its 90°
+// copy; `i_samples[0]` is the earliest). Every transition restarts a sample
+// counter; the bit is taken 4 samples after the last transition (the first
+// sample showing the new level) and every 8 samples after that, so the
+// sampling point follows the incoming stream: clock offsets between the
+// sender and the receiver (±1000 ppm each) and edge jitter are absorbed
+// without slipping a bit. An edge interval of k bits is read as k bits when
+// it measures 8k − 3 … 8k + 4 samples: the sender's retimer
+// ([`crate::line::retime`]) moves an edge by at most 2 samples (one output half
+// clock), which leaves a sample of margin. Tested
+// (`sim/tests/cdr.rs`): 10^6 bits at ±2000 ppm relative offset with
+// every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
+// fail. At most one bit is recovered per clock.
+//
+// A dead line: after [`MUTE_SAMPLES`] (8 bit times) without a transition no
+// more bits are taken, so a break passes on a cut-short packet, not a run
+// of zeros. Legal streams toggle at least every 4 bit times, but one
+// line-bit error inverts two adjacent code bits and can leave up to 6 zero
+// code bits inside a packet (an edge interval of 7 bit times; tested,
+// `sim/tests/cdr.rs`): that must cost a word, not mute the receiver
+// for the rest of the frame (protocol §5). An interval of up to 8 bit
+// times is read whole. Loss of signal: no transition for [`LOS_SAMPLES`] =
+// 256 samples (32 bit times) raises `o_los` until the next transition.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_samples` | in | 4 | clock | line samples, bit 0 first in time |
+// | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
+// | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
+// | `o_los` | out | 1 | clock | loss of signal (no edge for 32 bit times) |
+// | `o_phase` | out | 2 | clock | which sample of its clock the bit was taken from (0 first) |
+//
+// Latency: `o_valid`/`o_bit`/`o_phase` are registered: a bit appears one
+// clock after the clock whose samples contained its centre (4 samples after
+// its edge), so 0.5–1 bit time after the edge.
+//
+// ```text
+// samples  0 0 0 0 0 0 0 0 | 1 1 1 1 1 1 1 1 | 1 1 1 1 1 1 1 1 | 0 0 ...   (8 per bit, 4 per clock)
+// count    . . . . 4 . . .   0 1 2 3 4 5 6 7   0 1 2 3 4 5 6 7   0         (restarts at each edge)
+// take             ^                 ^                 ^                   (count == 4)
+// o_valid  ________/‾‾\_____________/‾‾\_____________/‾‾\____              (one clock later)
+// o_bit             0                 1                 1
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,o_phase);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] i_samples;
+    output reg  o_valid;
+    output reg  o_bit;
+    output reg  o_los;
+    output reg  [1:0] o_phase;
+
+    // Constant declarations
+    localparam  quiet_last = 6'b111111;
+    localparam  mute_after = 6'b10000;
+
+    // Registers and child block ports
+    reg  last_d;
+    reg  last_q;
+    reg  [1:0] phase_d;
+    reg  [1:0] phase_q;
+    reg  [2:0] count_d;
+    reg  [2:0] count_q;
+    reg  [5:0] quiet_d;
+    reg  [5:0] quiet_q;
+    reg  rx_valid_d;
+    reg  rx_valid_q;
+    reg  rx_bit_d;
+    reg  rx_bit_q;
+    reg  los_flag_d;
+    reg  los_flag_q;
+
+    // Local signals
+    reg  [3:0] prior;
+    reg  [3:0] edges;
+    reg  live;
+    reg  clean;
+    reg  [1:0] take_at;
+
+    // Combinational logic
+    always @(*) begin
+        last_d = last_q;
+        phase_d = phase_q;
+        count_d = count_q;
+        quiet_d = quiet_q;
+        rx_valid_d = rx_valid_q;
+        rx_bit_d = rx_bit_q;
+        los_flag_d = los_flag_q;
+        prior = i_samples << 1;
+        if (last_q) begin
+            prior = (i_samples << 1) | 4'h1;
+        end
+        edges = i_samples ^ prior;
+        count_d = count_q ^ 3'h4;
+        if (edges[0]) begin
+            count_d = 3'h3;
+        end
+        if (edges[1]) begin
+            count_d = 3'h2;
+        end
+        if (edges[2]) begin
+            count_d = 3'h1;
+        end
+        if (edges[3]) begin
+            count_d = 3'h0;
+        end
+        last_d = i_samples[3];
+        live = quiet_q < mute_after;
+        clean = ~edges[0];
+        if (count_q[(0)+:(2)] == 2'h2) begin
+            clean = ~edges[0] & ~edges[1];
+        end
+        if (count_q[(0)+:(2)] == 2'h1) begin
+            clean = ~edges[0] & ~edges[1] & ~edges[2];
+        end
+        if (count_q[(0)+:(2)] == 2'h0) begin
+            clean = ~|edges;
+        end
+        take_at = ~count_q[(0)+:(2)];
+        rx_valid_d = 1'b0;
+        if (~count_q[2] & clean & live) begin
+            rx_valid_d = 1'b1;
+            rx_bit_d = i_samples[take_at];
+            phase_d = take_at;
+        end
+        if (|edges) begin
+            quiet_d = 6'h0;
+            los_flag_d = 1'b0;
+        end
+        else if (quiet_q == quiet_last) begin
+            los_flag_d = 1'b1;
+        end
+        else begin
+            quiet_d = quiet_q + 6'h1;
+        end
+        o_valid = rx_valid_q;
+        o_bit = rx_bit_q;
+        o_los = los_flag_q;
+        o_phase = phase_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial last_q = 1'h0;
+    always @(posedge clock) last_q <= last_d;
+    initial phase_q = 2'h0;
+    always @(posedge clock) phase_q <= phase_d;
+    initial count_q = 3'h0;
+    always @(posedge clock) count_q <= count_d;
+    initial quiet_q = 6'h0;
+    always @(posedge clock) quiet_q <= quiet_d;
+    initial rx_valid_q = 1'h0;
+    always @(posedge clock) rx_valid_q <= rx_valid_d;
+    initial rx_bit_q = 1'h0;
+    always @(posedge clock) rx_bit_q <= rx_bit_d;
+    initial los_flag_q = 1'h0;
+    always @(posedge clock) los_flag_q <= los_flag_d;
+endmodule // merkur_special_master__rx_bsr__mon__cdr
+// --------------------------------------------------------------------------
+// `framer`: RxFramer, NRZI decoder, J K hunter and group aligner. (rtl/src/line/rx_framer.rs)
+//
+// # rx_framer — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
+//
+// Purpose: turns recovered line levels into code groups. While hunting it
+// compares the last 10 code bits with J K at every bit position; on a match
+// it pulses `o_start` and from then on emits one 5-bit group every 5 code
+// bits, until the word layer says the packet has ended (`i_end`: after the
+// last slot, after a TST/SEC packet's two words, on a bad header, on loss of
+// signal). The end is not taken from the line: one flipped line bit can turn
+// two data groups into idles, and that must cost one word, not the frame.
+// J K inside a packet is not searched for, so data can never re-align a
+// packet (and §3 shows data cannot imitate J K anyway).
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock |
+// | `i_valid` | in | 1 | clock | `i_level` holds a recovered bit (from [`crate::line::cdr`]) |
+// | `i_level` | in | 1 | clock | recovered line level |
+// | `i_end` | in | 1 | clock | leave the packet, hunt for J K again |
+// | `o_start` | out | 1 | clock | J K found; the next group is the packet's first |
+// | `o_gvalid` | out | 1 | clock | `o_group` holds a group of the packet |
+// | `o_group` | out | 5 | clock | code group, bit 4 first on the line |
+// | `o_idle` | out | 1 | clock | `o_group` is the idle group 11111 (decided with it, so the word layer's packet-end check starts from a flip-flop) |
+// | `o_inpkt` | out | 1 | clock | aligned inside a packet |
+//
+// Latency: registered outputs, one clock after the `i_valid` that completes
+// the delimiter or group.
+//
+// ```text
+// code bits  1 1 1 1 1 | 1 1 0 0 0 | 1 0 0 0 1 | g g g g g | g g g g g | 1 1 1 1 1
+//                 I          J           K         group 0     group 1       I
+// o_start    ______________________/‾\_____________________________________________
+// o_gvalid   __________________________________/‾\_________/‾\_________/‾\________
+// i_end      ____________________________________________________/‾\__________
+// o_inpkt    ______________________/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\___________
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_valid;
+    input wire  i_level;
+    input wire  i_end;
+    output reg  o_start;
+    output reg  o_gvalid;
+    output reg  [4:0] o_group;
+    output reg  o_idle;
+    output reg  o_inpkt;
+
+    // Constant declarations
+    localparam  jk = 10'b1100010001;
+
+    // Registers and child block ports
+    reg  prev_d;
+    reg  prev_q;
+    reg  [9:0] window_d;
+    reg  [9:0] window_q;
+    reg  inpkt_d;
+    reg  inpkt_q;
+    reg  [2:0] count_d;
+    reg  [2:0] count_q;
+    reg  start_d;
+    reg  start_q;
+    reg  gvalid_d;
+    reg  gvalid_q;
+    reg  [4:0] group_d;
+    reg  [4:0] group_q;
+    reg  idle_d;
+    reg  idle_q;
+
+    // Local signals
+    reg  [9:0] shifted;
+
+    // Combinational logic
+    always @(*) begin
+        prev_d = prev_q;
+        window_d = window_q;
+        inpkt_d = inpkt_q;
+        count_d = count_q;
+        start_d = start_q;
+        gvalid_d = gvalid_q;
+        group_d = group_q;
+        idle_d = idle_q;
+        start_d = 1'b0;
+        gvalid_d = 1'b0;
+        shifted = window_q << 1;
+        if (i_level ^ prev_q) begin
+            shifted = (window_q << 1) | 10'h1;
+        end
+        if (i_valid) begin
+            prev_d = i_level;
+            window_d = shifted;
+            if (inpkt_q) begin
+                if (count_q == 3'h4) begin
+                    count_d = 3'h0;
+                    gvalid_d = 1'b1;
+                    group_d = shifted[(0)+:(5)];
+                    idle_d = shifted[(0)+:(5)] == 5'h1f;
+                end
+                else begin
+                    count_d = count_q + 3'h1;
+                end
+            end
+            else if (shifted == jk) begin
+                inpkt_d = 1'b1;
+                start_d = 1'b1;
+                count_d = 3'h0;
+            end
+        end
+        if (i_end) begin
+            inpkt_d = 1'b0;
+        end
+        o_start = start_q;
+        o_gvalid = gvalid_q;
+        o_group = group_q;
+        o_idle = idle_q;
+        o_inpkt = inpkt_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial prev_q = 1'h0;
+    always @(posedge clock) prev_q <= prev_d;
+    initial window_q = 10'h0;
+    always @(posedge clock) window_q <= window_d;
+    initial inpkt_q = 1'h0;
+    always @(posedge clock) inpkt_q <= inpkt_d;
+    initial count_q = 3'h0;
+    always @(posedge clock) count_q <= count_d;
+    initial start_q = 1'h0;
+    always @(posedge clock) start_q <= start_d;
+    initial gvalid_q = 1'h0;
+    always @(posedge clock) gvalid_q <= gvalid_d;
+    initial group_q = 5'h0;
+    always @(posedge clock) group_q <= group_d;
+    initial idle_q = 1'h0;
+    always @(posedge clock) idle_q <= idle_d;
+endmodule // merkur_special_master__rx_bsr__mon__framer
+// --------------------------------------------------------------------------
+// `word`: RxWord, Word assembler and checker. (rtl/src/line/rx_word.rs)
+//
+// # rx_word — word assembler, parity check, slot counter (protocol §4, §5, §7)
+//
+// Purpose: the receive half of the paper's slot shift register. It collects
+// the code groups of a packet (from [`crate::line::rx_framer`]) into words,
+// decodes them (4B/5B), checks both odd parities, counts words into header
+// words and slots, checks the header (type, slot count), compares the slot
+// number with the node's address (DIP switches → `i_address`) and tells the
+// framer when the packet ends: after its last word, or at the third idle
+// group in a row (a packet cut short upstream: the word in progress and the
+// rest are not received; one line-bit error touches at most two groups, so
+// it costs a word, never the packet).
+//
+// Parameters (refused at build when invalid): `ext` — extended-alarm words
+// of 6 groups instead of 5 (protocol §6).
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock |
+// | `i_start` | in | 1 | clock | packet start (J K found) |
+// | `i_gvalid` | in | 1 | clock | `i_group` is valid |
+// | `i_group` | in | 5 | clock | code group |
+// | `i_idle` | in | 1 | clock | `i_group` is the idle group 11111 (from [`crate::line::rx_framer`]'s register) |
+// | `i_slots_m1` | in | 12 | static | configured slot count − 1 |
+// | `i_address` | in | 12 | static | node address (home slot) |
+// | `o_end` | out | 1 | clock | packet over (to the framer's `i_end`) |
+// | `o_wvalid` | out | 1 | clock | a word is complete |
+// | `o_kind` | out | 2 | clock | 0 H0, 1 H1, 2 slot |
+// | `o_slot` | out | 12 | clock | slot number (when `o_kind` = 2) |
+// | `o_data` | out | 16 | clock | data bits |
+// | `o_alive`, `o_alarm` | out | 1 | clock | flag bits |
+// | `o_reason` | out | 4 | clock | reason nibble (ext only, else 0) |
+// | `o_ok` | out | 1 | clock | all groups data, both parities odd |
+// | `o_compl` | out | 1 | clock | its 16 data bits are the complement of the previous word's (a TST's H1 = NOT H0, protocol §9; meaningful for a good word whose predecessor in the packet was good) |
+// | `o_void` | out | 1 | clock | all groups S (VOID word) |
+// | `o_marked` | out | 1 | clock | bad, its last group T: a forwarder marked it (damaged on an earlier fibre, protocol §4) |
+// | `o_own` | out | 1 | clock | slot word of `i_address` |
+// | `o_hdr_bad` | out | 1 | clock | DATA header rejected; packet dropped |
+// | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST) |
+//
+// Latency: outputs are registered, one clock after the word's last group;
+// the word's fields (`o_kind` … `o_ptype`) are the decoder's own registers,
+// not copies: they hold from `o_wvalid` until the next group arrives (on a
+// line at least 5 bit times later), and a consumer takes them before that
+// (issue 21: no second copy of a word in the slave);
+// `o_end` and `o_hdr_bad` one clock later (the header is checked on the
+// registered word).
+//
+// ```text
+// i_start   _/‾\__________________________________________________
+// i_gvalid  _____/‾\_/‾\_/‾\_/‾\_/‾\___ ... _/‾\_/‾\ ... _/‾\_______
+//                 H0 (5 groups)              H1        last slot
+// o_wvalid  _______________________/‾\_______/‾\______ ... __/‾\____
+// o_kind                            0         1               2
+// o_end     _____________________________________________ ... /‾\____
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_slots_m1,i_address,o_end,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_start;
+    input wire  i_gvalid;
+    input wire  [4:0] i_group;
+    input wire  i_idle;
+    input wire  [11:0] i_slots_m1;
+    input wire  [11:0] i_address;
+    output reg  o_end;
+    output reg  o_wvalid;
+    output reg  [1:0] o_kind;
+    output reg  [11:0] o_slot;
+    output reg  [15:0] o_data;
+    output reg  o_alive;
+    output reg  o_alarm;
+    output reg  [3:0] o_reason;
+    output reg  o_ok;
+    output reg  o_compl;
+    output reg  o_void;
+    output reg  o_marked;
+    output reg  o_own;
+    output reg  o_hdr_bad;
+    output reg  [1:0] o_ptype;
+
+    // Constant declarations
+    localparam  last_group = 3'b100;
+
+    // Registers and child block ports
+    wire  [3:0] dec__o_nibble;
+    wire  dec__o_data;
+    wire  dec__o_j;
+    wire  dec__o_k;
+    wire  dec__o_i;
+    wire  dec__o_s;
+    reg  [3:0] nib_top__address;
+    wire  [15:0] nib_top__data;
+    reg  [1:0] lo_top__address;
+    wire  [15:0] lo_top__data;
+    reg  [1:0] hi_top__address;
+    wire  [15:0] hi_top__data;
+    reg  [2:0] gcount_d;
+    reg  [2:0] gcount_q;
+    reg  [1:0] idles_d;
+    reg  [1:0] idles_q;
+    reg  [15:0] data_d;
+    reg  [15:0] data_q;
+    reg  [3:0] reason_d;
+    reg  [3:0] reason_q;
+    reg  alarm0_d;
+    reg  alarm0_q;
+    reg  alive0_d;
+    reg  alive0_q;
+    reg  par_a_d;
+    reg  par_a_q;
+    reg  par_b_d;
+    reg  par_b_q;
+    reg  all_data_d;
+    reg  all_data_q;
+    reg  all_s_d;
+    reg  all_s_q;
+    reg  active_d;
+    reg  active_q;
+    reg  [1:0] wcount_d;
+    reg  [1:0] wcount_q;
+    reg  [11:0] slot_d;
+    reg  [11:0] slot_q;
+    reg  [1:0] ptype_d;
+    reg  [1:0] ptype_q;
+    reg  check_d;
+    reg  check_q;
+    reg  end_r_d;
+    reg  end_r_q;
+    reg  wvalid_r_d;
+    reg  wvalid_r_q;
+    reg  [1:0] kind_r_d;
+    reg  [1:0] kind_r_q;
+    reg  adv_d;
+    reg  adv_q;
+    reg  [3:0] reason_r_d;
+    reg  [3:0] reason_r_q;
+    reg  ok_r_d;
+    reg  ok_r_q;
+    reg  compl_d;
+    reg  compl_q;
+    reg  compl_r_d;
+    reg  compl_r_q;
+    reg  void_r_d;
+    reg  void_r_q;
+    reg  marked_r_d;
+    reg  marked_r_q;
+    reg  own_r_d;
+    reg  own_r_q;
+    reg  hdr_bad_r_d;
+    reg  hdr_bad_r_q;
+
+    // Local signals
+    reg  [3:0] nib;
+    reg  [15:0] w_data;
+    reg  w_pa;
+    reg  w_pb;
+    reg  w_all_data;
+    reg  w_all_s;
+    reg  w_ok;
+    reg  w_compl;
+
+    // Child blocks
+    merkur_special_master__rx_bsr__mon__word__dec dec(
+        .i_code(i_group),
+        .o_nibble(dec__o_nibble),
+        .o_data(dec__o_data),
+        .o_j(dec__o_j),
+        .o_k(dec__o_k),
+        .o_i(dec__o_i),
+        .o_s(dec__o_s)
+    );
+    merkur_special_master__rx_bsr__mon__word__nib_top nib_top(
+        .address(nib_top__address),
+        .data(nib_top__data)
+    );
+    merkur_special_master__rx_bsr__mon__word__lo_top lo_top(
+        .address(lo_top__address),
+        .data(lo_top__data)
+    );
+    merkur_special_master__rx_bsr__mon__word__hi_top hi_top(
+        .address(hi_top__address),
+        .data(hi_top__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        gcount_d = gcount_q;
+        data_d = data_q;
+        reason_d = reason_q;
+        alarm0_d = alarm0_q;
+        alive0_d = alive0_q;
+        par_a_d = par_a_q;
+        par_b_d = par_b_q;
+        all_data_d = all_data_q;
+        all_s_d = all_s_q;
+        active_d = active_q;
+        wcount_d = wcount_q;
+        slot_d = slot_q;
+        ptype_d = ptype_q;
+        check_d = check_q;
+        end_r_d = end_r_q;
+        wvalid_r_d = wvalid_r_q;
+        kind_r_d = kind_r_q;
+        adv_d = adv_q;
+        reason_r_d = reason_r_q;
+        ok_r_d = ok_r_q;
+        compl_d = compl_q;
+        compl_r_d = compl_r_q;
+        void_r_d = void_r_q;
+        marked_r_d = marked_r_q;
+        own_r_d = own_r_q;
+        hdr_bad_r_d = hdr_bad_r_q;
+        idles_d = idles_q;
+        nib = dec__o_nibble;
+        nib_top__address = dec__o_nibble;
+        lo_top__address = dec__o_nibble[(0)+:(2)];
+        hi_top__address = dec__o_nibble[(1)+:(2)];
+        w_data = (data_q >> 4) | nib_top__data;
+        if (gcount_q == 3'h0) begin
+            w_data = (data_q >> 2) | lo_top__data;
+        end
+        if (gcount_q == last_group) begin
+            w_data = (data_q >> 2) | hi_top__data;
+        end
+        if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
+            w_data = data_q;
+        end
+        w_pa = par_a_q ^ nib[3] ^ nib[2];
+        w_pb = par_b_q ^ nib[2] ^ nib[1] ^ nib[0];
+        w_all_data = all_data_q & dec__o_data;
+        w_all_s = all_s_q & dec__o_s;
+        w_ok = w_all_data & w_pa & w_pb;
+        w_compl = compl_q & (nib == ~data_q[(0)+:(4)]);
+        if (gcount_q == 3'h0) begin
+            w_compl = nib[(0)+:(2)] == ~data_q[(0)+:(2)];
+        end
+        if (gcount_q == last_group) begin
+            w_compl = compl_q & (nib[(1)+:(2)] == ~data_q[(0)+:(2)]);
+        end
+        if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
+            w_compl = compl_q;
+        end
+        end_r_d = 1'b0;
+        wvalid_r_d = 1'b0;
+        hdr_bad_r_d = 1'b0;
+        check_d = 1'b0;
+        if (i_start) begin
+            active_d = 1'b1;
+            gcount_d = 3'h0;
+            wcount_d = 2'h0;
+            slot_d = 12'h0;
+            adv_d = 1'b0;
+            ptype_d = 2'h0;
+            par_a_d = 1'b0;
+            par_b_d = 1'b0;
+            all_data_d = 1'b1;
+            all_s_d = 1'b1;
+            idles_d = 2'h0;
+        end
+        else if (i_gvalid & active_q & i_idle & (idles_q == 2'h2)) begin
+            end_r_d = 1'b1;
+            active_d = 1'b0;
+            idles_d = 2'h0;
+        end
+        else if (i_gvalid & active_q) begin
+            idles_d = 2'h0;
+            if (i_idle) begin
+                idles_d = idles_q + 2'h1;
+            end
+            data_d = w_data;
+            if (gcount_q == 3'h0) begin
+                alarm0_d = nib[3];
+                alive0_d = nib[2];
+                if (adv_q) begin
+                    slot_d = slot_q + 12'h1;
+                    adv_d = 1'b0;
+                end
+            end
+            if (gcount_q == 3'h1) begin
+                reason_d = nib;
+            end
+            par_a_d = w_pa;
+            par_b_d = w_pb;
+            all_data_d = w_all_data;
+            all_s_d = w_all_s;
+            compl_d = w_compl;
+            gcount_d = gcount_q + 3'h1;
+            if (gcount_q == last_group) begin
+                gcount_d = 3'h0;
+                par_a_d = 1'b0;
+                par_b_d = 1'b0;
+                all_data_d = 1'b1;
+                all_s_d = 1'b1;
+                wvalid_r_d = 1'b1;
+                kind_r_d = wcount_q;
+                reason_r_d = 4'h0;
+                if (last_group == 3'h5) begin
+                    reason_r_d = reason_q;
+                end
+                ok_r_d = w_ok;
+                compl_r_d = w_compl;
+                void_r_d = w_all_s;
+                marked_r_d = i_group == 5'hd;
+                own_r_d = (wcount_q == 2'h2) & (slot_q == i_address);
+                check_d = 1'b1;
+                if (wcount_q == 2'h0) begin
+                    wcount_d = 2'h1;
+                    ptype_d = w_data[(14)+:(2)];
+                end
+                else if (wcount_q == 2'h1) begin
+                    wcount_d = 2'h2;
+                end
+                else begin
+                    adv_d = 1'b1;
+                end
+            end
+        end
+        if (check_q) begin
+            if (kind_r_q == 2'h0) begin
+                if (~ok_r_q | alarm0_q | ((data_q[(14)+:(2)] == 2'h0) & (data_q[(0)+:(12)] != i_slots_m1))) begin
+                    hdr_bad_r_d = 1'b1;
+                    end_r_d = 1'b1;
+                    active_d = 1'b0;
+                end
+            end
+            else if (kind_r_q == 2'h1) begin
+                if (~ok_r_q | alarm0_q) begin
+                    hdr_bad_r_d = ptype_q == 2'h0;
+                    end_r_d = 1'b1;
+                    active_d = 1'b0;
+                end
+                else if (ptype_q != 2'h0) begin
+                    end_r_d = 1'b1;
+                    active_d = 1'b0;
+                end
+            end
+            else if (slot_q == i_slots_m1) begin
+                end_r_d = 1'b1;
+                active_d = 1'b0;
+            end
+        end
+        o_end = end_r_q;
+        o_wvalid = wvalid_r_q;
+        o_kind = kind_r_q;
+        o_slot = slot_q;
+        o_data = data_q;
+        o_alive = alive0_q;
+        o_alarm = alarm0_q;
+        o_reason = reason_r_q;
+        o_ok = ok_r_q;
+        o_compl = compl_r_q;
+        o_void = void_r_q;
+        o_marked = marked_r_q;
+        o_own = own_r_q;
+        o_hdr_bad = hdr_bad_r_q;
+        o_ptype = ptype_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial gcount_q = 3'h0;
+    always @(posedge clock) gcount_q <= gcount_d;
+    initial idles_q = 2'h0;
+    always @(posedge clock) idles_q <= idles_d;
+    initial data_q = 16'h0;
+    always @(posedge clock) data_q <= data_d;
+    initial reason_q = 4'h0;
+    always @(posedge clock) reason_q <= reason_d;
+    initial alarm0_q = 1'h0;
+    always @(posedge clock) alarm0_q <= alarm0_d;
+    initial alive0_q = 1'h0;
+    always @(posedge clock) alive0_q <= alive0_d;
+    initial par_a_q = 1'h0;
+    always @(posedge clock) par_a_q <= par_a_d;
+    initial par_b_q = 1'h0;
+    always @(posedge clock) par_b_q <= par_b_d;
+    initial all_data_q = 1'h0;
+    always @(posedge clock) all_data_q <= all_data_d;
+    initial all_s_q = 1'h0;
+    always @(posedge clock) all_s_q <= all_s_d;
+    initial active_q = 1'h0;
+    always @(posedge clock) active_q <= active_d;
+    initial wcount_q = 2'h0;
+    always @(posedge clock) wcount_q <= wcount_d;
+    initial slot_q = 12'h0;
+    always @(posedge clock) slot_q <= slot_d;
+    initial ptype_q = 2'h0;
+    always @(posedge clock) ptype_q <= ptype_d;
+    initial check_q = 1'h0;
+    always @(posedge clock) check_q <= check_d;
+    initial end_r_q = 1'h0;
+    always @(posedge clock) end_r_q <= end_r_d;
+    initial wvalid_r_q = 1'h0;
+    always @(posedge clock) wvalid_r_q <= wvalid_r_d;
+    initial kind_r_q = 2'h0;
+    always @(posedge clock) kind_r_q <= kind_r_d;
+    initial adv_q = 1'h0;
+    always @(posedge clock) adv_q <= adv_d;
+    initial reason_r_q = 4'h0;
+    always @(posedge clock) reason_r_q <= reason_r_d;
+    initial ok_r_q = 1'h0;
+    always @(posedge clock) ok_r_q <= ok_r_d;
+    initial compl_q = 1'h0;
+    always @(posedge clock) compl_q <= compl_d;
+    initial compl_r_q = 1'h0;
+    always @(posedge clock) compl_r_q <= compl_r_d;
+    initial void_r_q = 1'h0;
+    always @(posedge clock) void_r_q <= void_r_d;
+    initial marked_r_q = 1'h0;
+    always @(posedge clock) marked_r_q <= marked_r_d;
+    initial own_r_q = 1'h0;
+    always @(posedge clock) own_r_q <= own_r_d;
+    initial hdr_bad_r_q = 1'h0;
+    always @(posedge clock) hdr_bad_r_q <= hdr_bad_r_d;
+endmodule // merkur_special_master__rx_bsr__mon__word
+// --------------------------------------------------------------------------
+// `dec`: Dec5b4b, 4B/5B decoder. (rtl/src/line/dec5b4b.rs)
+// Documented at module `merkur_special_master__g0` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__word__dec(i_code,o_nibble,o_data,o_j,o_k,o_i,o_s);
+
+    // Module arguments
+    input wire  [4:0] i_code;
+    output reg  [3:0] o_nibble;
+    output reg  o_data;
+    output reg  o_j;
+    output reg  o_k;
+    output reg  o_i;
+    output reg  o_s;
+
+    // Registers and child block ports
+    wire  [8:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__rx_bsr__mon__word__dec__rom rom(
+        .address(i_code),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_nibble = rom__data[(0)+:(4)];
+        o_data = rom__data[4];
+        o_j = rom__data[5];
+        o_k = rom__data[6];
+        o_i = rom__data[7];
+        o_s = rom__data[8];
+    end
+
+endmodule // merkur_special_master__rx_bsr__mon__word__dec
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__rx_bsr__mon__word__dec`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__word__dec__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [8:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 9'b0;
+      5'b1: data = 9'b0;
+      5'b10: data = 9'b0;
+      5'b11: data = 9'b0;
+      5'b100: data = 9'b0;
+      5'b101: data = 9'b0;
+      5'b110: data = 9'b0;
+      5'b111: data = 9'b0;
+      5'b1000: data = 9'b0;
+      5'b1001: data = 9'b10001;
+      5'b1010: data = 9'b10100;
+      5'b1011: data = 9'b10101;
+      5'b1100: data = 9'b0;
+      5'b1101: data = 9'b0;
+      5'b1110: data = 9'b10110;
+      5'b1111: data = 9'b10111;
+      5'b10000: data = 9'b0;
+      5'b10001: data = 9'b1000000;
+      5'b10010: data = 9'b11000;
+      5'b10011: data = 9'b11001;
+      5'b10100: data = 9'b10010;
+      5'b10101: data = 9'b10011;
+      5'b10110: data = 9'b11010;
+      5'b10111: data = 9'b11011;
+      5'b11000: data = 9'b100000;
+      5'b11001: data = 9'b100000000;
+      5'b11010: data = 9'b11100;
+      5'b11011: data = 9'b11101;
+      5'b11100: data = 9'b11110;
+      5'b11101: data = 9'b11111;
+      5'b11110: data = 9'b10000;
+      5'b11111: data = 9'b10000000;
+      default: data = 9'b0;
+    endcase
+
+endmodule // merkur_special_master__rx_bsr__mon__word__dec__rom
+// --------------------------------------------------------------------------
+// `hi_top` of `merkur_special_master__rx_bsr__mon__word`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__word__hi_top(address,data);
+
+    // Module arguments
+    input wire  [1:0] address;
+    output reg  [15:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        2'b0: data = 16'h0;
+      2'b1: data = 16'h4000;
+      2'b10: data = 16'h8000;
+      2'b11: data = 16'hc000;
+      default: data = 16'h0;
+    endcase
+
+endmodule // merkur_special_master__rx_bsr__mon__word__hi_top
+// --------------------------------------------------------------------------
+// `lo_top` of `merkur_special_master__rx_bsr__mon__word`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__word__lo_top(address,data);
+
+    // Module arguments
+    input wire  [1:0] address;
+    output reg  [15:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        2'b0: data = 16'h0;
+      2'b1: data = 16'h4000;
+      2'b10: data = 16'h8000;
+      2'b11: data = 16'hc000;
+      default: data = 16'h0;
+    endcase
+
+endmodule // merkur_special_master__rx_bsr__mon__word__lo_top
+// --------------------------------------------------------------------------
+// `nib_top` of `merkur_special_master__rx_bsr__mon__word`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_bsr__mon__word__nib_top(address,data);
+
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [15:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 16'h0;
+      4'h1: data = 16'h1000;
+      4'h2: data = 16'h2000;
+      4'h3: data = 16'h3000;
+      4'h4: data = 16'h4000;
+      4'h5: data = 16'h5000;
+      4'h6: data = 16'h6000;
+      4'h7: data = 16'h7000;
+      4'h8: data = 16'h8000;
+      4'h9: data = 16'h9000;
+      4'ha: data = 16'ha000;
+      4'hb: data = 16'hb000;
+      4'hc: data = 16'hc000;
+      4'hd: data = 16'hd000;
+      4'he: data = 16'he000;
+      4'hf: data = 16'hf000;
+      default: data = 16'h0;
+    endcase
+
+endmodule // merkur_special_master__rx_bsr__mon__word__nib_top
+// --------------------------------------------------------------------------
+// `rx_in`: PortRx, Supervised receive port. (rtl/src/node/port_rx.rs)
+// Documented at module `merkur_special_master__rx_bsr` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_level,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] i_samples;
+    input wire  [11:0] i_slots_m1;
+    input wire  [11:0] i_address;
+    input wire  i_tst_fail;
+    input wire  i_flush;
+    output reg  o_start;
+    output reg  o_inpkt;
+    output reg  o_wvalid;
+    output reg  [1:0] o_kind;
+    output reg  [11:0] o_slot;
+    output reg  [15:0] o_data;
+    output reg  o_alive;
+    output reg  o_alarm;
+    output reg  [3:0] o_reason;
+    output reg  o_ok;
+    output reg  o_void;
+    output reg  o_marked;
+    output reg  o_own;
+    output reg  o_hdr_bad;
+    output reg  [1:0] o_ptype;
+    output reg  o_los;
+    output reg  o_bvalid;
+    output reg  o_level;
+    output reg  [1:0] o_phase;
+    output reg  o_cf;
+    output reg  o_hard;
+    output reg  o_run;
+    output reg  o_tst;
+    output reg  o_ack;
+
+    // Registers and child block ports
+    wire  mon__o_los;
+    wire  mon__o_bvalid;
+    wire  mon__o_level;
+    wire  [1:0] mon__o_phase;
+    wire  mon__o_start;
+    wire  mon__o_inpkt;
+    wire  mon__o_wvalid;
+    wire  [1:0] mon__o_kind;
+    wire  [11:0] mon__o_slot;
+    wire  [15:0] mon__o_data;
+    wire  mon__o_alive;
+    wire  mon__o_alarm;
+    wire  [3:0] mon__o_reason;
+    wire  mon__o_ok;
+    wire  mon__o_compl;
+    wire  mon__o_void;
+    wire  mon__o_marked;
+    wire  mon__o_own;
+    wire  mon__o_hdr_bad;
+    wire  [1:0] mon__o_ptype;
+    reg  ctrl__i_los;
+    reg  ctrl__i_wvalid;
+    reg  [1:0] ctrl__i_kind;
+    reg  ctrl__i_ok;
+    reg  ctrl__i_void;
+    reg  ctrl__i_marked;
+    reg  ctrl__i_d12;
+    reg  ctrl__i_compl;
+    reg  [1:0] ctrl__i_ptype;
+    wire  ctrl__o_cf;
+    wire  ctrl__o_hard;
+    wire  ctrl__o_run;
+    wire  ctrl__o_tst;
+    wire  ctrl__o_ack;
+
+    // Child blocks
+    merkur_special_master__rx_in__mon mon(
+        .clock(clock),
+        .i_samples(i_samples),
+        .i_slots_m1(i_slots_m1),
+        .i_address(i_address),
+        .i_flush(i_flush),
+        .o_los(mon__o_los),
+        .o_bvalid(mon__o_bvalid),
+        .o_level(mon__o_level),
+        .o_phase(mon__o_phase),
+        .o_start(mon__o_start),
+        .o_inpkt(mon__o_inpkt),
+        .o_wvalid(mon__o_wvalid),
+        .o_kind(mon__o_kind),
+        .o_slot(mon__o_slot),
+        .o_data(mon__o_data),
+        .o_alive(mon__o_alive),
+        .o_alarm(mon__o_alarm),
+        .o_reason(mon__o_reason),
+        .o_ok(mon__o_ok),
+        .o_compl(mon__o_compl),
+        .o_void(mon__o_void),
+        .o_marked(mon__o_marked),
+        .o_own(mon__o_own),
+        .o_hdr_bad(mon__o_hdr_bad),
+        .o_ptype(mon__o_ptype)
+    );
+    merkur_special_master__rx_in__ctrl ctrl(
+        .clock(clock),
+        .i_los(ctrl__i_los),
+        .i_wvalid(ctrl__i_wvalid),
+        .i_kind(ctrl__i_kind),
+        .i_ok(ctrl__i_ok),
+        .i_void(ctrl__i_void),
+        .i_marked(ctrl__i_marked),
+        .i_d12(ctrl__i_d12),
+        .i_compl(ctrl__i_compl),
+        .i_ptype(ctrl__i_ptype),
+        .i_tst_fail(i_tst_fail),
+        .i_flush(i_flush),
+        .o_cf(ctrl__o_cf),
+        .o_hard(ctrl__o_hard),
+        .o_run(ctrl__o_run),
+        .o_tst(ctrl__o_tst),
+        .o_ack(ctrl__o_ack)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        ctrl__i_los = mon__o_los;
+        ctrl__i_wvalid = mon__o_wvalid;
+        ctrl__i_kind = mon__o_kind;
+        ctrl__i_ok = mon__o_ok;
+        ctrl__i_void = mon__o_void;
+        ctrl__i_marked = mon__o_marked;
+        ctrl__i_d12 = mon__o_data[12];
+        ctrl__i_compl = mon__o_compl;
+        ctrl__i_ptype = mon__o_ptype;
+        o_start = mon__o_start;
+        o_inpkt = mon__o_inpkt;
+        o_wvalid = mon__o_wvalid;
+        o_kind = mon__o_kind;
+        o_slot = mon__o_slot;
+        o_data = mon__o_data;
+        o_alive = mon__o_alive;
+        o_alarm = mon__o_alarm;
+        o_reason = mon__o_reason;
+        o_ok = mon__o_ok;
+        o_void = mon__o_void;
+        o_marked = mon__o_marked;
+        o_own = mon__o_own;
+        o_hdr_bad = mon__o_hdr_bad;
+        o_ptype = mon__o_ptype;
+        o_los = mon__o_los;
+        o_bvalid = mon__o_bvalid;
+        o_level = mon__o_level;
+        o_phase = mon__o_phase;
+        o_cf = ctrl__o_cf;
+        o_hard = ctrl__o_hard;
+        o_run = ctrl__o_run;
+        o_tst = ctrl__o_tst;
+        o_ack = ctrl__o_ack;
+    end
+
+endmodule // merkur_special_master__rx_in
+// --------------------------------------------------------------------------
+// `ctrl`: StreamCtrl, Stream controller. (rtl/src/node/stream_ctrl.rs)
+// Documented at module `merkur_special_master__rx_bsr__ctrl` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marked,i_d12,i_compl,i_ptype,i_tst_fail,i_flush,o_cf,o_hard,o_run,o_tst,o_ack);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_los;
+    input wire  i_wvalid;
+    input wire  [1:0] i_kind;
+    input wire  i_ok;
+    input wire  i_void;
+    input wire  i_marked;
+    input wire  i_d12;
+    input wire  i_compl;
+    input wire  [1:0] i_ptype;
+    input wire  i_tst_fail;
+    input wire  i_flush;
+    output reg  o_cf;
+    output reg  o_hard;
+    output reg  o_run;
+    output reg  o_tst;
+    output reg  o_ack;
+
+    // Constant declarations
+    localparam  hold_start = 9'b100000011;
+    localparam  bad_max = 4'h8;
+
+    // Registers and child block ports
+    reg  [3:0] bad_d;
+    reg  [3:0] bad_q;
+    reg  [8:0] hold_d;
+    reg  [8:0] hold_q;
+    reg  tst_d;
+    reg  tst_q;
+    reg  ack_d;
+    reg  ack_q;
+    reg  hard_d;
+    reg  hard_q;
+    reg  run_d;
+    reg  run_q;
+
+    // Combinational logic
+    always @(*) begin
+        bad_d = bad_q;
+        hold_d = hold_q;
+        tst_d = tst_q;
+        ack_d = ack_q;
+        hard_d = hard_q;
+        run_d = run_q;
+        if (i_wvalid) begin
+            if (i_ok) begin
+                bad_d = 4'h0;
+            end
+            else if (~i_void & ~i_marked & (bad_q != bad_max)) begin
+                bad_d = bad_q + 4'h1;
+            end
+        end
+        if (i_flush) begin
+            bad_d = 4'h0;
+        end
+        if (hold_q != 9'h0) begin
+            hold_d = hold_q - 9'h1;
+        end
+        else begin
+            tst_d = 1'b0;
+        end
+        if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
+            tst_d = 1'b1;
+            ack_d = ~i_d12;
+            hold_d = hold_start;
+        end
+        hard_d = i_los | (tst_q & i_tst_fail);
+        run_d = (bad_q == bad_max) & ~i_flush;
+        o_cf = hard_q | run_q;
+        o_hard = hard_q;
+        o_run = run_q;
+        o_tst = tst_q;
+        o_ack = ack_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial bad_q = 4'h0;
+    always @(posedge clock) bad_q <= bad_d;
+    initial hold_q = 9'h0;
+    always @(posedge clock) hold_q <= hold_d;
+    initial tst_q = 1'h0;
+    always @(posedge clock) tst_q <= tst_d;
+    initial ack_q = 1'h0;
+    always @(posedge clock) ack_q <= ack_d;
+    initial hard_q = 1'h0;
+    always @(posedge clock) hard_q <= hard_d;
+    initial run_q = 1'h0;
+    always @(posedge clock) run_q <= run_d;
+endmodule // merkur_special_master__rx_in__ctrl
+// --------------------------------------------------------------------------
+// `mon`: Monitor, Fibre monitor / receive chain. (rtl/src/line/monitor.rs)
+// Documented at module `merkur_special_master__rx_bsr__mon` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_level,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] i_samples;
+    input wire  [11:0] i_slots_m1;
+    input wire  [11:0] i_address;
+    input wire  i_flush;
+    output reg  o_los;
+    output reg  o_bvalid;
+    output reg  o_level;
+    output reg  [1:0] o_phase;
+    output reg  o_start;
+    output reg  o_inpkt;
+    output reg  o_wvalid;
+    output reg  [1:0] o_kind;
+    output reg  [11:0] o_slot;
+    output reg  [15:0] o_data;
+    output reg  o_alive;
+    output reg  o_alarm;
+    output reg  [3:0] o_reason;
+    output reg  o_ok;
+    output reg  o_compl;
+    output reg  o_void;
+    output reg  o_marked;
+    output reg  o_own;
+    output reg  o_hdr_bad;
+    output reg  [1:0] o_ptype;
+
+    // Constant declarations
+    localparam  drop_after = 3'b100;
+
+    // Registers and child block ports
+    wire  cdr__o_valid;
+    wire  cdr__o_bit;
+    wire  cdr__o_los;
+    wire  [1:0] cdr__o_phase;
+    reg  framer__i_valid;
+    reg  framer__i_level;
+    reg  framer__i_end;
+    wire  framer__o_start;
+    wire  framer__o_gvalid;
+    wire  [4:0] framer__o_group;
+    wire  framer__o_idle;
+    wire  framer__o_inpkt;
+    reg  word__i_start;
+    reg  word__i_gvalid;
+    reg  [4:0] word__i_group;
+    reg  word__i_idle;
+    wire  word__o_end;
+    wire  word__o_wvalid;
+    wire  [1:0] word__o_kind;
+    wire  [11:0] word__o_slot;
+    wire  [15:0] word__o_data;
+    wire  word__o_alive;
+    wire  word__o_alarm;
+    wire  [3:0] word__o_reason;
+    wire  word__o_ok;
+    wire  word__o_compl;
+    wire  word__o_void;
+    wire  word__o_marked;
+    wire  word__o_own;
+    wire  word__o_hdr_bad;
+    wire  [1:0] word__o_ptype;
+    reg  last_lvl_d;
+    reg  last_lvl_q;
+    reg  [2:0] quiet_d;
+    reg  [2:0] quiet_q;
+    reg  emit_d;
+    reg  emit_q;
+    reg  p_valid_d;
+    reg  p_valid_q;
+
+    // Local signals
+    reg  conf_edge;
+
+    // Child blocks
+    merkur_special_master__rx_in__mon__cdr cdr(
+        .clock(clock),
+        .i_samples(i_samples),
+        .o_valid(cdr__o_valid),
+        .o_bit(cdr__o_bit),
+        .o_los(cdr__o_los),
+        .o_phase(cdr__o_phase)
+    );
+    merkur_special_master__rx_in__mon__framer framer(
+        .clock(clock),
+        .i_valid(framer__i_valid),
+        .i_level(framer__i_level),
+        .i_end(framer__i_end),
+        .o_start(framer__o_start),
+        .o_gvalid(framer__o_gvalid),
+        .o_group(framer__o_group),
+        .o_idle(framer__o_idle),
+        .o_inpkt(framer__o_inpkt)
+    );
+    merkur_special_master__rx_in__mon__word word(
+        .clock(clock),
+        .i_start(word__i_start),
+        .i_gvalid(word__i_gvalid),
+        .i_group(word__i_group),
+        .i_idle(word__i_idle),
+        .i_slots_m1(i_slots_m1),
+        .i_address(i_address),
+        .o_end(word__o_end),
+        .o_wvalid(word__o_wvalid),
+        .o_kind(word__o_kind),
+        .o_slot(word__o_slot),
+        .o_data(word__o_data),
+        .o_alive(word__o_alive),
+        .o_alarm(word__o_alarm),
+        .o_reason(word__o_reason),
+        .o_ok(word__o_ok),
+        .o_compl(word__o_compl),
+        .o_void(word__o_void),
+        .o_marked(word__o_marked),
+        .o_own(word__o_own),
+        .o_hdr_bad(word__o_hdr_bad),
+        .o_ptype(word__o_ptype)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        last_lvl_d = last_lvl_q;
+        quiet_d = quiet_q;
+        emit_d = emit_q;
+        p_valid_d = p_valid_q;
+        framer__i_valid = cdr__o_valid;
+        framer__i_level = cdr__o_bit;
+        framer__i_end = word__o_end | cdr__o_los | (quiet_q == drop_after) | i_flush;
+        word__i_start = framer__o_start;
+        word__i_gvalid = framer__o_gvalid;
+        word__i_group = framer__o_group;
+        word__i_idle = framer__o_idle;
+        o_los = cdr__o_los;
+        o_bvalid = cdr__o_valid;
+        o_level = cdr__o_bit;
+        o_phase = cdr__o_phase;
+        o_start = framer__o_start;
+        o_inpkt = framer__o_inpkt;
+        o_hdr_bad = word__o_hdr_bad;
+        conf_edge = cdr__o_valid & (cdr__o_bit != last_lvl_q);
+        if (cdr__o_valid) begin
+            last_lvl_d = cdr__o_bit;
+            quiet_d = 3'h0;
+        end
+        else if (quiet_q != 3'h7) begin
+            quiet_d = quiet_q + 3'h1;
+        end
+        emit_d = 1'b0;
+        o_wvalid = emit_q;
+        o_kind = word__o_kind;
+        o_slot = word__o_slot;
+        o_data = word__o_data;
+        o_alive = word__o_alive;
+        o_alarm = word__o_alarm;
+        o_reason = word__o_reason;
+        o_ok = word__o_ok;
+        o_compl = word__o_compl;
+        o_void = word__o_void;
+        o_marked = word__o_marked;
+        o_own = word__o_own;
+        o_ptype = word__o_ptype;
+        if (p_valid_q & conf_edge) begin
+            emit_d = 1'b1;
+            p_valid_d = 1'b0;
+        end
+        if (p_valid_q & ((quiet_q == drop_after) | i_flush)) begin
+            p_valid_d = 1'b0;
+        end
+        if (word__o_wvalid) begin
+            p_valid_d = ~conf_edge;
+            emit_d = conf_edge;
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial last_lvl_q = 1'h0;
+    always @(posedge clock) last_lvl_q <= last_lvl_d;
+    initial quiet_q = 3'h0;
+    always @(posedge clock) quiet_q <= quiet_d;
+    initial emit_q = 1'h0;
+    always @(posedge clock) emit_q <= emit_d;
+    initial p_valid_q = 1'h0;
+    always @(posedge clock) p_valid_q <= p_valid_d;
+endmodule // merkur_special_master__rx_in__mon
+// --------------------------------------------------------------------------
+// `cdr`: Cdr, Oversampling clock and data recovery. (rtl/src/line/cdr.rs)
+// Documented at module `merkur_special_master__rx_bsr__mon__cdr` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,o_phase);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] i_samples;
+    output reg  o_valid;
+    output reg  o_bit;
+    output reg  o_los;
+    output reg  [1:0] o_phase;
+
+    // Constant declarations
+    localparam  quiet_last = 6'b111111;
+    localparam  mute_after = 6'b10000;
+
+    // Registers and child block ports
+    reg  last_d;
+    reg  last_q;
+    reg  [1:0] phase_d;
+    reg  [1:0] phase_q;
+    reg  [2:0] count_d;
+    reg  [2:0] count_q;
+    reg  [5:0] quiet_d;
+    reg  [5:0] quiet_q;
+    reg  rx_valid_d;
+    reg  rx_valid_q;
+    reg  rx_bit_d;
+    reg  rx_bit_q;
+    reg  los_flag_d;
+    reg  los_flag_q;
+
+    // Local signals
+    reg  [3:0] prior;
+    reg  [3:0] edges;
+    reg  live;
+    reg  clean;
+    reg  [1:0] take_at;
+
+    // Combinational logic
+    always @(*) begin
+        last_d = last_q;
+        phase_d = phase_q;
+        count_d = count_q;
+        quiet_d = quiet_q;
+        rx_valid_d = rx_valid_q;
+        rx_bit_d = rx_bit_q;
+        los_flag_d = los_flag_q;
+        prior = i_samples << 1;
+        if (last_q) begin
+            prior = (i_samples << 1) | 4'h1;
+        end
+        edges = i_samples ^ prior;
+        count_d = count_q ^ 3'h4;
+        if (edges[0]) begin
+            count_d = 3'h3;
+        end
+        if (edges[1]) begin
+            count_d = 3'h2;
+        end
+        if (edges[2]) begin
+            count_d = 3'h1;
+        end
+        if (edges[3]) begin
+            count_d = 3'h0;
+        end
+        last_d = i_samples[3];
+        live = quiet_q < mute_after;
+        clean = ~edges[0];
+        if (count_q[(0)+:(2)] == 2'h2) begin
+            clean = ~edges[0] & ~edges[1];
+        end
+        if (count_q[(0)+:(2)] == 2'h1) begin
+            clean = ~edges[0] & ~edges[1] & ~edges[2];
+        end
+        if (count_q[(0)+:(2)] == 2'h0) begin
+            clean = ~|edges;
+        end
+        take_at = ~count_q[(0)+:(2)];
+        rx_valid_d = 1'b0;
+        if (~count_q[2] & clean & live) begin
+            rx_valid_d = 1'b1;
+            rx_bit_d = i_samples[take_at];
+            phase_d = take_at;
+        end
+        if (|edges) begin
+            quiet_d = 6'h0;
+            los_flag_d = 1'b0;
+        end
+        else if (quiet_q == quiet_last) begin
+            los_flag_d = 1'b1;
+        end
+        else begin
+            quiet_d = quiet_q + 6'h1;
+        end
+        o_valid = rx_valid_q;
+        o_bit = rx_bit_q;
+        o_los = los_flag_q;
+        o_phase = phase_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial last_q = 1'h0;
+    always @(posedge clock) last_q <= last_d;
+    initial phase_q = 2'h0;
+    always @(posedge clock) phase_q <= phase_d;
+    initial count_q = 3'h0;
+    always @(posedge clock) count_q <= count_d;
+    initial quiet_q = 6'h0;
+    always @(posedge clock) quiet_q <= quiet_d;
+    initial rx_valid_q = 1'h0;
+    always @(posedge clock) rx_valid_q <= rx_valid_d;
+    initial rx_bit_q = 1'h0;
+    always @(posedge clock) rx_bit_q <= rx_bit_d;
+    initial los_flag_q = 1'h0;
+    always @(posedge clock) los_flag_q <= los_flag_d;
+endmodule // merkur_special_master__rx_in__mon__cdr
+// --------------------------------------------------------------------------
+// `framer`: RxFramer, NRZI decoder, J K hunter and group aligner. (rtl/src/line/rx_framer.rs)
+// Documented at module `merkur_special_master__rx_bsr__mon__framer` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_valid;
+    input wire  i_level;
+    input wire  i_end;
+    output reg  o_start;
+    output reg  o_gvalid;
+    output reg  [4:0] o_group;
+    output reg  o_idle;
+    output reg  o_inpkt;
+
+    // Constant declarations
+    localparam  jk = 10'b1100010001;
+
+    // Registers and child block ports
+    reg  prev_d;
+    reg  prev_q;
+    reg  [9:0] window_d;
+    reg  [9:0] window_q;
+    reg  inpkt_d;
+    reg  inpkt_q;
+    reg  [2:0] count_d;
+    reg  [2:0] count_q;
+    reg  start_d;
+    reg  start_q;
+    reg  gvalid_d;
+    reg  gvalid_q;
+    reg  [4:0] group_d;
+    reg  [4:0] group_q;
+    reg  idle_d;
+    reg  idle_q;
+
+    // Local signals
+    reg  [9:0] shifted;
+
+    // Combinational logic
+    always @(*) begin
+        prev_d = prev_q;
+        window_d = window_q;
+        inpkt_d = inpkt_q;
+        count_d = count_q;
+        start_d = start_q;
+        gvalid_d = gvalid_q;
+        group_d = group_q;
+        idle_d = idle_q;
+        start_d = 1'b0;
+        gvalid_d = 1'b0;
+        shifted = window_q << 1;
+        if (i_level ^ prev_q) begin
+            shifted = (window_q << 1) | 10'h1;
+        end
+        if (i_valid) begin
+            prev_d = i_level;
+            window_d = shifted;
+            if (inpkt_q) begin
+                if (count_q == 3'h4) begin
+                    count_d = 3'h0;
+                    gvalid_d = 1'b1;
+                    group_d = shifted[(0)+:(5)];
+                    idle_d = shifted[(0)+:(5)] == 5'h1f;
+                end
+                else begin
+                    count_d = count_q + 3'h1;
+                end
+            end
+            else if (shifted == jk) begin
+                inpkt_d = 1'b1;
+                start_d = 1'b1;
+                count_d = 3'h0;
+            end
+        end
+        if (i_end) begin
+            inpkt_d = 1'b0;
+        end
+        o_start = start_q;
+        o_gvalid = gvalid_q;
+        o_group = group_q;
+        o_idle = idle_q;
+        o_inpkt = inpkt_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial prev_q = 1'h0;
+    always @(posedge clock) prev_q <= prev_d;
+    initial window_q = 10'h0;
+    always @(posedge clock) window_q <= window_d;
+    initial inpkt_q = 1'h0;
+    always @(posedge clock) inpkt_q <= inpkt_d;
+    initial count_q = 3'h0;
+    always @(posedge clock) count_q <= count_d;
+    initial start_q = 1'h0;
+    always @(posedge clock) start_q <= start_d;
+    initial gvalid_q = 1'h0;
+    always @(posedge clock) gvalid_q <= gvalid_d;
+    initial group_q = 5'h0;
+    always @(posedge clock) group_q <= group_d;
+    initial idle_q = 1'h0;
+    always @(posedge clock) idle_q <= idle_d;
+endmodule // merkur_special_master__rx_in__mon__framer
+// --------------------------------------------------------------------------
+// `word`: RxWord, Word assembler and checker. (rtl/src/line/rx_word.rs)
+// Documented at module `merkur_special_master__rx_bsr__mon__word` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_slots_m1,i_address,o_end,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_start;
+    input wire  i_gvalid;
+    input wire  [4:0] i_group;
+    input wire  i_idle;
+    input wire  [11:0] i_slots_m1;
+    input wire  [11:0] i_address;
+    output reg  o_end;
+    output reg  o_wvalid;
+    output reg  [1:0] o_kind;
+    output reg  [11:0] o_slot;
+    output reg  [15:0] o_data;
+    output reg  o_alive;
+    output reg  o_alarm;
+    output reg  [3:0] o_reason;
+    output reg  o_ok;
+    output reg  o_compl;
+    output reg  o_void;
+    output reg  o_marked;
+    output reg  o_own;
+    output reg  o_hdr_bad;
+    output reg  [1:0] o_ptype;
+
+    // Constant declarations
+    localparam  last_group = 3'b100;
+
+    // Registers and child block ports
+    wire  [3:0] dec__o_nibble;
+    wire  dec__o_data;
+    wire  dec__o_j;
+    wire  dec__o_k;
+    wire  dec__o_i;
+    wire  dec__o_s;
+    reg  [3:0] nib_top__address;
+    wire  [15:0] nib_top__data;
+    reg  [1:0] lo_top__address;
+    wire  [15:0] lo_top__data;
+    reg  [1:0] hi_top__address;
+    wire  [15:0] hi_top__data;
+    reg  [2:0] gcount_d;
+    reg  [2:0] gcount_q;
+    reg  [1:0] idles_d;
+    reg  [1:0] idles_q;
+    reg  [15:0] data_d;
+    reg  [15:0] data_q;
+    reg  [3:0] reason_d;
+    reg  [3:0] reason_q;
+    reg  alarm0_d;
+    reg  alarm0_q;
+    reg  alive0_d;
+    reg  alive0_q;
+    reg  par_a_d;
+    reg  par_a_q;
+    reg  par_b_d;
+    reg  par_b_q;
+    reg  all_data_d;
+    reg  all_data_q;
+    reg  all_s_d;
+    reg  all_s_q;
+    reg  active_d;
+    reg  active_q;
+    reg  [1:0] wcount_d;
+    reg  [1:0] wcount_q;
+    reg  [11:0] slot_d;
+    reg  [11:0] slot_q;
+    reg  [1:0] ptype_d;
+    reg  [1:0] ptype_q;
+    reg  check_d;
+    reg  check_q;
+    reg  end_r_d;
+    reg  end_r_q;
+    reg  wvalid_r_d;
+    reg  wvalid_r_q;
+    reg  [1:0] kind_r_d;
+    reg  [1:0] kind_r_q;
+    reg  adv_d;
+    reg  adv_q;
+    reg  [3:0] reason_r_d;
+    reg  [3:0] reason_r_q;
+    reg  ok_r_d;
+    reg  ok_r_q;
+    reg  compl_d;
+    reg  compl_q;
+    reg  compl_r_d;
+    reg  compl_r_q;
+    reg  void_r_d;
+    reg  void_r_q;
+    reg  marked_r_d;
+    reg  marked_r_q;
+    reg  own_r_d;
+    reg  own_r_q;
+    reg  hdr_bad_r_d;
+    reg  hdr_bad_r_q;
+
+    // Local signals
+    reg  [3:0] nib;
+    reg  [15:0] w_data;
+    reg  w_pa;
+    reg  w_pb;
+    reg  w_all_data;
+    reg  w_all_s;
+    reg  w_ok;
+    reg  w_compl;
+
+    // Child blocks
+    merkur_special_master__rx_in__mon__word__dec dec(
+        .i_code(i_group),
+        .o_nibble(dec__o_nibble),
+        .o_data(dec__o_data),
+        .o_j(dec__o_j),
+        .o_k(dec__o_k),
+        .o_i(dec__o_i),
+        .o_s(dec__o_s)
+    );
+    merkur_special_master__rx_in__mon__word__nib_top nib_top(
+        .address(nib_top__address),
+        .data(nib_top__data)
+    );
+    merkur_special_master__rx_in__mon__word__lo_top lo_top(
+        .address(lo_top__address),
+        .data(lo_top__data)
+    );
+    merkur_special_master__rx_in__mon__word__hi_top hi_top(
+        .address(hi_top__address),
+        .data(hi_top__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        gcount_d = gcount_q;
+        data_d = data_q;
+        reason_d = reason_q;
+        alarm0_d = alarm0_q;
+        alive0_d = alive0_q;
+        par_a_d = par_a_q;
+        par_b_d = par_b_q;
+        all_data_d = all_data_q;
+        all_s_d = all_s_q;
+        active_d = active_q;
+        wcount_d = wcount_q;
+        slot_d = slot_q;
+        ptype_d = ptype_q;
+        check_d = check_q;
+        end_r_d = end_r_q;
+        wvalid_r_d = wvalid_r_q;
+        kind_r_d = kind_r_q;
+        adv_d = adv_q;
+        reason_r_d = reason_r_q;
+        ok_r_d = ok_r_q;
+        compl_d = compl_q;
+        compl_r_d = compl_r_q;
+        void_r_d = void_r_q;
+        marked_r_d = marked_r_q;
+        own_r_d = own_r_q;
+        hdr_bad_r_d = hdr_bad_r_q;
+        idles_d = idles_q;
+        nib = dec__o_nibble;
+        nib_top__address = dec__o_nibble;
+        lo_top__address = dec__o_nibble[(0)+:(2)];
+        hi_top__address = dec__o_nibble[(1)+:(2)];
+        w_data = (data_q >> 4) | nib_top__data;
+        if (gcount_q == 3'h0) begin
+            w_data = (data_q >> 2) | lo_top__data;
+        end
+        if (gcount_q == last_group) begin
+            w_data = (data_q >> 2) | hi_top__data;
+        end
+        if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
+            w_data = data_q;
+        end
+        w_pa = par_a_q ^ nib[3] ^ nib[2];
+        w_pb = par_b_q ^ nib[2] ^ nib[1] ^ nib[0];
+        w_all_data = all_data_q & dec__o_data;
+        w_all_s = all_s_q & dec__o_s;
+        w_ok = w_all_data & w_pa & w_pb;
+        w_compl = compl_q & (nib == ~data_q[(0)+:(4)]);
+        if (gcount_q == 3'h0) begin
+            w_compl = nib[(0)+:(2)] == ~data_q[(0)+:(2)];
+        end
+        if (gcount_q == last_group) begin
+            w_compl = compl_q & (nib[(1)+:(2)] == ~data_q[(0)+:(2)]);
+        end
+        if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
+            w_compl = compl_q;
+        end
+        end_r_d = 1'b0;
+        wvalid_r_d = 1'b0;
+        hdr_bad_r_d = 1'b0;
+        check_d = 1'b0;
+        if (i_start) begin
+            active_d = 1'b1;
+            gcount_d = 3'h0;
+            wcount_d = 2'h0;
+            slot_d = 12'h0;
+            adv_d = 1'b0;
+            ptype_d = 2'h0;
+            par_a_d = 1'b0;
+            par_b_d = 1'b0;
+            all_data_d = 1'b1;
+            all_s_d = 1'b1;
+            idles_d = 2'h0;
+        end
+        else if (i_gvalid & active_q & i_idle & (idles_q == 2'h2)) begin
+            end_r_d = 1'b1;
+            active_d = 1'b0;
+            idles_d = 2'h0;
+        end
+        else if (i_gvalid & active_q) begin
+            idles_d = 2'h0;
+            if (i_idle) begin
+                idles_d = idles_q + 2'h1;
+            end
+            data_d = w_data;
+            if (gcount_q == 3'h0) begin
+                alarm0_d = nib[3];
+                alive0_d = nib[2];
+                if (adv_q) begin
+                    slot_d = slot_q + 12'h1;
+                    adv_d = 1'b0;
+                end
+            end
+            if (gcount_q == 3'h1) begin
+                reason_d = nib;
+            end
+            par_a_d = w_pa;
+            par_b_d = w_pb;
+            all_data_d = w_all_data;
+            all_s_d = w_all_s;
+            compl_d = w_compl;
+            gcount_d = gcount_q + 3'h1;
+            if (gcount_q == last_group) begin
+                gcount_d = 3'h0;
+                par_a_d = 1'b0;
+                par_b_d = 1'b0;
+                all_data_d = 1'b1;
+                all_s_d = 1'b1;
+                wvalid_r_d = 1'b1;
+                kind_r_d = wcount_q;
+                reason_r_d = 4'h0;
+                if (last_group == 3'h5) begin
+                    reason_r_d = reason_q;
+                end
+                ok_r_d = w_ok;
+                compl_r_d = w_compl;
+                void_r_d = w_all_s;
+                marked_r_d = i_group == 5'hd;
+                own_r_d = (wcount_q == 2'h2) & (slot_q == i_address);
+                check_d = 1'b1;
+                if (wcount_q == 2'h0) begin
+                    wcount_d = 2'h1;
+                    ptype_d = w_data[(14)+:(2)];
+                end
+                else if (wcount_q == 2'h1) begin
+                    wcount_d = 2'h2;
+                end
+                else begin
+                    adv_d = 1'b1;
+                end
+            end
+        end
+        if (check_q) begin
+            if (kind_r_q == 2'h0) begin
+                if (~ok_r_q | alarm0_q | ((data_q[(14)+:(2)] == 2'h0) & (data_q[(0)+:(12)] != i_slots_m1))) begin
+                    hdr_bad_r_d = 1'b1;
+                    end_r_d = 1'b1;
+                    active_d = 1'b0;
+                end
+            end
+            else if (kind_r_q == 2'h1) begin
+                if (~ok_r_q | alarm0_q) begin
+                    hdr_bad_r_d = ptype_q == 2'h0;
+                    end_r_d = 1'b1;
+                    active_d = 1'b0;
+                end
+                else if (ptype_q != 2'h0) begin
+                    end_r_d = 1'b1;
+                    active_d = 1'b0;
+                end
+            end
+            else if (slot_q == i_slots_m1) begin
+                end_r_d = 1'b1;
+                active_d = 1'b0;
+            end
+        end
+        o_end = end_r_q;
+        o_wvalid = wvalid_r_q;
+        o_kind = kind_r_q;
+        o_slot = slot_q;
+        o_data = data_q;
+        o_alive = alive0_q;
+        o_alarm = alarm0_q;
+        o_reason = reason_r_q;
+        o_ok = ok_r_q;
+        o_compl = compl_r_q;
+        o_void = void_r_q;
+        o_marked = marked_r_q;
+        o_own = own_r_q;
+        o_hdr_bad = hdr_bad_r_q;
+        o_ptype = ptype_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial gcount_q = 3'h0;
+    always @(posedge clock) gcount_q <= gcount_d;
+    initial idles_q = 2'h0;
+    always @(posedge clock) idles_q <= idles_d;
+    initial data_q = 16'h0;
+    always @(posedge clock) data_q <= data_d;
+    initial reason_q = 4'h0;
+    always @(posedge clock) reason_q <= reason_d;
+    initial alarm0_q = 1'h0;
+    always @(posedge clock) alarm0_q <= alarm0_d;
+    initial alive0_q = 1'h0;
+    always @(posedge clock) alive0_q <= alive0_d;
+    initial par_a_q = 1'h0;
+    always @(posedge clock) par_a_q <= par_a_d;
+    initial par_b_q = 1'h0;
+    always @(posedge clock) par_b_q <= par_b_d;
+    initial all_data_q = 1'h0;
+    always @(posedge clock) all_data_q <= all_data_d;
+    initial all_s_q = 1'h0;
+    always @(posedge clock) all_s_q <= all_s_d;
+    initial active_q = 1'h0;
+    always @(posedge clock) active_q <= active_d;
+    initial wcount_q = 2'h0;
+    always @(posedge clock) wcount_q <= wcount_d;
+    initial slot_q = 12'h0;
+    always @(posedge clock) slot_q <= slot_d;
+    initial ptype_q = 2'h0;
+    always @(posedge clock) ptype_q <= ptype_d;
+    initial check_q = 1'h0;
+    always @(posedge clock) check_q <= check_d;
+    initial end_r_q = 1'h0;
+    always @(posedge clock) end_r_q <= end_r_d;
+    initial wvalid_r_q = 1'h0;
+    always @(posedge clock) wvalid_r_q <= wvalid_r_d;
+    initial kind_r_q = 2'h0;
+    always @(posedge clock) kind_r_q <= kind_r_d;
+    initial adv_q = 1'h0;
+    always @(posedge clock) adv_q <= adv_d;
+    initial reason_r_q = 4'h0;
+    always @(posedge clock) reason_r_q <= reason_r_d;
+    initial ok_r_q = 1'h0;
+    always @(posedge clock) ok_r_q <= ok_r_d;
+    initial compl_q = 1'h0;
+    always @(posedge clock) compl_q <= compl_d;
+    initial compl_r_q = 1'h0;
+    always @(posedge clock) compl_r_q <= compl_r_d;
+    initial void_r_q = 1'h0;
+    always @(posedge clock) void_r_q <= void_r_d;
+    initial marked_r_q = 1'h0;
+    always @(posedge clock) marked_r_q <= marked_r_d;
+    initial own_r_q = 1'h0;
+    always @(posedge clock) own_r_q <= own_r_d;
+    initial hdr_bad_r_q = 1'h0;
+    always @(posedge clock) hdr_bad_r_q <= hdr_bad_r_d;
+endmodule // merkur_special_master__rx_in__mon__word
+// --------------------------------------------------------------------------
+// `dec`: Dec5b4b, 4B/5B decoder. (rtl/src/line/dec5b4b.rs)
+// Documented at module `merkur_special_master__g0` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__word__dec(i_code,o_nibble,o_data,o_j,o_k,o_i,o_s);
+
+    // Module arguments
+    input wire  [4:0] i_code;
+    output reg  [3:0] o_nibble;
+    output reg  o_data;
+    output reg  o_j;
+    output reg  o_k;
+    output reg  o_i;
+    output reg  o_s;
+
+    // Registers and child block ports
+    wire  [8:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__rx_in__mon__word__dec__rom rom(
+        .address(i_code),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_nibble = rom__data[(0)+:(4)];
+        o_data = rom__data[4];
+        o_j = rom__data[5];
+        o_k = rom__data[6];
+        o_i = rom__data[7];
+        o_s = rom__data[8];
+    end
+
+endmodule // merkur_special_master__rx_in__mon__word__dec
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__rx_in__mon__word__dec`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__word__dec__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [8:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 9'b0;
+      5'b1: data = 9'b0;
+      5'b10: data = 9'b0;
+      5'b11: data = 9'b0;
+      5'b100: data = 9'b0;
+      5'b101: data = 9'b0;
+      5'b110: data = 9'b0;
+      5'b111: data = 9'b0;
+      5'b1000: data = 9'b0;
+      5'b1001: data = 9'b10001;
+      5'b1010: data = 9'b10100;
+      5'b1011: data = 9'b10101;
+      5'b1100: data = 9'b0;
+      5'b1101: data = 9'b0;
+      5'b1110: data = 9'b10110;
+      5'b1111: data = 9'b10111;
+      5'b10000: data = 9'b0;
+      5'b10001: data = 9'b1000000;
+      5'b10010: data = 9'b11000;
+      5'b10011: data = 9'b11001;
+      5'b10100: data = 9'b10010;
+      5'b10101: data = 9'b10011;
+      5'b10110: data = 9'b11010;
+      5'b10111: data = 9'b11011;
+      5'b11000: data = 9'b100000;
+      5'b11001: data = 9'b100000000;
+      5'b11010: data = 9'b11100;
+      5'b11011: data = 9'b11101;
+      5'b11100: data = 9'b11110;
+      5'b11101: data = 9'b11111;
+      5'b11110: data = 9'b10000;
+      5'b11111: data = 9'b10000000;
+      default: data = 9'b0;
+    endcase
+
+endmodule // merkur_special_master__rx_in__mon__word__dec__rom
+// --------------------------------------------------------------------------
+// `hi_top` of `merkur_special_master__rx_in__mon__word`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__word__hi_top(address,data);
+
+    // Module arguments
+    input wire  [1:0] address;
+    output reg  [15:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        2'b0: data = 16'h0;
+      2'b1: data = 16'h4000;
+      2'b10: data = 16'h8000;
+      2'b11: data = 16'hc000;
+      default: data = 16'h0;
+    endcase
+
+endmodule // merkur_special_master__rx_in__mon__word__hi_top
+// --------------------------------------------------------------------------
+// `lo_top` of `merkur_special_master__rx_in__mon__word`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__word__lo_top(address,data);
+
+    // Module arguments
+    input wire  [1:0] address;
+    output reg  [15:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        2'b0: data = 16'h0;
+      2'b1: data = 16'h4000;
+      2'b10: data = 16'h8000;
+      2'b11: data = 16'hc000;
+      default: data = 16'h0;
+    endcase
+
+endmodule // merkur_special_master__rx_in__mon__word__lo_top
+// --------------------------------------------------------------------------
+// `nib_top` of `merkur_special_master__rx_in__mon__word`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__rx_in__mon__word__nib_top(address,data);
+
+    // Module arguments
+    input wire  [3:0] address;
+    output reg  [15:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        4'h0: data = 16'h0;
+      4'h1: data = 16'h1000;
+      4'h2: data = 16'h2000;
+      4'h3: data = 16'h3000;
+      4'h4: data = 16'h4000;
+      4'h5: data = 16'h5000;
+      4'h6: data = 16'h6000;
+      4'h7: data = 16'h7000;
+      4'h8: data = 16'h8000;
+      4'h9: data = 16'h9000;
+      4'ha: data = 16'ha000;
+      4'hb: data = 16'hb000;
+      4'hc: data = 16'hc000;
+      4'hd: data = 16'hd000;
+      4'he: data = 16'he000;
+      4'hf: data = 16'hf000;
+      default: data = 16'h0;
+    endcase
+
+endmodule // merkur_special_master__rx_in__mon__word__nib_top
+// --------------------------------------------------------------------------
+// `sbox`: Switchbox, Table 1 multiplexer. (rtl/src/node/switchbox.rs)
+//
+// # switchbox — the paper's Table 1 (protocol §10)
+//
+// Purpose: connects the physical ports PI, SI, PO, SO to the logical
+// streams INPUT, BSR (receive) and OUTPUT, BSS (send) by the node's mode.
+// Inputs are carried as 4-sample words (quadrature DDR capture, one word
+// per core clock), outputs as DDR pairs (two halves per core clock).
+//
+// | mode | code | INPUT | OUTPUT | BSR | BSS |
+// |---|---|---|---|---|---|
+// | N (all 4 ports ok) | 0 | PI | PO | SI | SO |
+// | WU (SO or PI defective) | 1 | SI | PO | PI | SO |
+// | WD (SI or PO defective) | 2 | PI | SO | SI | PO |
+// | (unused) | 3 | as N | | | |
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `i_mode` | in | 2 | clock (static between changes) | mode code |
+// | `i_pi`, `i_si` | in | 4 | clock | physical inputs (samples) |
+// | `i_output`, `i_bss` | in | 2 | clock | logical outputs of the node |
+// | `o_input`, `o_bsr` | out | 4 | clock | logical inputs of the node |
+// | `o_po`, `o_so` | out | 2 | clock | physical outputs |
+//
+// Latency: combinational (0 clocks); the node registers its I/O.
+//
+// ```text
+// i_mode   == N ==X== WU ==========
+// o_input  == PI =X== SI ==========
+// o_bsr    == SI =X== PI ==========
+// o_po     == OUTPUT ==============
+// o_so     == BSS =================
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__sbox(i_mode,i_pi,i_si,i_output,i_bss,o_input,o_bsr,o_po,o_so);
+
+    // Module arguments
+    input wire  [1:0] i_mode;
+    input wire  [3:0] i_pi;
+    input wire  [3:0] i_si;
+    input wire  [1:0] i_output;
+    input wire  [1:0] i_bss;
+    output reg  [3:0] o_input;
+    output reg  [3:0] o_bsr;
+    output reg  [1:0] o_po;
+    output reg  [1:0] o_so;
+
+    // Combinational logic
+    always @(*) begin
+        o_input = i_pi;
+        o_bsr = i_si;
+        o_po = i_output;
+        o_so = i_bss;
+        if (i_mode == 2'h1) begin
+            o_input = i_si;
+            o_bsr = i_pi;
+        end
+        if (i_mode == 2'h2) begin
+            o_po = i_bss;
+            o_so = i_output;
+        end
+    end
+
+endmodule // merkur_special_master__sbox
+// --------------------------------------------------------------------------
+// `sent_alarm` of `merkur_special_master`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__sent_alarm(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[0:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {1{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__sent_alarm
+// --------------------------------------------------------------------------
+// `store` of `merkur_special_master`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__store(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  [21:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  [21:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[21:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {22{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__store
+// --------------------------------------------------------------------------
+// `stx`: PktTx, Packet generator. (rtl/src/node/pkt_tx.rs)
+// Documented at module `merkur_special_master__ftx` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h0_alive,i_word_data,i_word_alive,i_word_alarm,i_word_void,o_slot,o_take,o_busy,o_line);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_start;
+    input wire  i_slots;
+    input wire  [11:0] i_slots_m1;
+    input wire  [15:0] i_h0;
+    input wire  [15:0] i_h1;
+    input wire  i_h0_alive;
+    input wire  [15:0] i_word_data;
+    input wire  i_word_alive;
+    input wire  i_word_alarm;
+    input wire  i_word_void;
+    output reg  [11:0] o_slot;
+    output reg  o_take;
+    output reg  o_busy;
+    output reg  [1:0] o_line;
+
+    // Registers and child block ports
+    reg  [4:0] enc__i_sym;
+    wire  [4:0] enc__o_code;
+    reg  tx__i_bit_en;
+    reg  [4:0] tx__i_code;
+    wire  tx__o_take;
+    wire  tx__o_line;
+    reg  half_d;
+    reg  half_q;
+    reg  pend_d;
+    reg  pend_q;
+    reg  busy_d;
+    reg  busy_q;
+    reg  [1:0] wcnt_d;
+    reg  [1:0] wcnt_q;
+    reg  [2:0] grp_d;
+    reg  [2:0] grp_q;
+    reg  [11:0] slot_d;
+    reg  [11:0] slot_q;
+    reg  last_d;
+    reg  last_q;
+    reg  [15:0] w_data_d;
+    reg  [15:0] w_data_q;
+    reg  w_alive_d;
+    reg  w_alive_q;
+    reg  w_alarm_d;
+    reg  w_alarm_q;
+    reg  w_void_d;
+    reg  w_void_q;
+
+    // Local signals
+    reg  [3:0] nib;
+    reg  p_a;
+    reg  p_b;
+    reg  [4:0] sym;
+
+    // Child blocks
+    merkur_special_master__stx__enc enc(
+        .i_sym(enc__i_sym),
+        .o_code(enc__o_code)
+    );
+    merkur_special_master__stx__tx tx(
+        .clock(clock),
+        .i_bit_en(tx__i_bit_en),
+        .i_code(tx__i_code),
+        .o_take(tx__o_take),
+        .o_line(tx__o_line)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        half_d = half_q;
+        pend_d = pend_q;
+        busy_d = busy_q;
+        wcnt_d = wcnt_q;
+        grp_d = grp_q;
+        slot_d = slot_q;
+        last_d = last_q;
+        w_data_d = w_data_q;
+        w_alive_d = w_alive_q;
+        w_alarm_d = w_alarm_q;
+        w_void_d = w_void_q;
+        half_d = ~half_q;
+        tx__i_bit_en = half_q;
+        if (i_start & ~busy_q) begin
+            pend_d = 1'b1;
+        end
+        p_a = ~(w_alarm_q ^ w_alive_q ^ w_data_q[5] ^ w_data_q[4] ^ w_data_q[9] ^ w_data_q[8] ^ w_data_q[13] ^ w_data_q[12] ^ w_data_q[15]);
+        p_b = ~(w_alive_q ^ w_data_q[1] ^ w_data_q[0] ^ w_data_q[4] ^ w_data_q[3] ^ w_data_q[2] ^ w_data_q[8] ^ w_data_q[7] ^ w_data_q[6] ^ w_data_q[12] ^ w_data_q[11] ^ w_data_q[10] ^ w_data_q[15] ^ w_data_q[14]);
+        nib = w_data_q[(0)+:(4)] & 4'h3;
+        if (w_alarm_q) begin
+            nib = nib | 4'h8;
+        end
+        if (w_alive_q) begin
+            nib = nib | 4'h4;
+        end
+        if (grp_q == 3'h1) begin
+            nib = w_data_q[(2)+:(4)];
+        end
+        if (grp_q == 3'h2) begin
+            nib = w_data_q[(6)+:(4)];
+        end
+        if (grp_q == 3'h3) begin
+            nib = w_data_q[(10)+:(4)];
+        end
+        if (grp_q == 3'h4) begin
+            nib = (w_data_q[(12)+:(4)] >> 1) & 4'h6;
+            if (p_a) begin
+                nib = nib | 4'h8;
+            end
+            if (p_b) begin
+                nib = nib | 4'h1;
+            end
+        end
+        sym = 5'h0;
+        if (nib[0]) begin
+            sym = sym | 5'h1;
+        end
+        if (nib[1]) begin
+            sym = sym | 5'h2;
+        end
+        if (nib[2]) begin
+            sym = sym | 5'h4;
+        end
+        if (nib[3]) begin
+            sym = sym | 5'h8;
+        end
+        if (w_void_q) begin
+            sym = 5'h13;
+        end
+        if (wcnt_q == 2'h0) begin
+            sym = 5'h11;
+        end
+        if (~busy_q) begin
+            sym = 5'h12;
+            if (pend_q) begin
+                sym = 5'h10;
+            end
+        end
+        enc__i_sym = sym;
+        tx__i_code = enc__o_code;
+        o_take = 1'b0;
+        if (tx__o_take) begin
+            if (~busy_q) begin
+                if (pend_q) begin
+                    busy_d = 1'b1;
+                    pend_d = 1'b0;
+                    wcnt_d = 2'h0;
+                    grp_d = 3'h4;
+                    slot_d = 12'h0;
+                    last_d = 1'b0;
+                end
+            end
+            else if (grp_q == 3'h4) begin
+                grp_d = 3'h0;
+                w_alive_d = 1'b0;
+                w_alarm_d = 1'b0;
+                w_void_d = 1'b0;
+                if (wcnt_q == 2'h0) begin
+                    wcnt_d = 2'h1;
+                    w_data_d = i_h0;
+                    w_alive_d = i_h0_alive;
+                end
+                else if (wcnt_q == 2'h1) begin
+                    wcnt_d = 2'h2;
+                    w_data_d = i_h1;
+                end
+                else if (((wcnt_q == 2'h2) & ~i_slots) | ((wcnt_q == 2'h3) & last_q)) begin
+                    busy_d = 1'b0;
+                end
+                else begin
+                    slot_d = slot_q + 12'h1;
+                    last_d = slot_q == i_slots_m1;
+                    wcnt_d = 2'h3;
+                    w_data_d = i_word_data;
+                    w_alive_d = i_word_alive;
+                    w_alarm_d = i_word_alarm;
+                    w_void_d = i_word_void;
+                    o_take = 1'b1;
+                end
+            end
+            else begin
+                grp_d = grp_q + 3'h1;
+            end
+        end
+        o_slot = slot_q;
+        o_busy = busy_q | pend_q;
+        o_line = 2'h0;
+        if (tx__o_line) begin
+            o_line = 2'h3;
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial half_q = 1'h0;
+    always @(posedge clock) half_q <= half_d;
+    initial pend_q = 1'h0;
+    always @(posedge clock) pend_q <= pend_d;
+    initial busy_q = 1'h0;
+    always @(posedge clock) busy_q <= busy_d;
+    initial wcnt_q = 2'h0;
+    always @(posedge clock) wcnt_q <= wcnt_d;
+    initial grp_q = 3'h0;
+    always @(posedge clock) grp_q <= grp_d;
+    initial slot_q = 12'h0;
+    always @(posedge clock) slot_q <= slot_d;
+    initial last_q = 1'h0;
+    always @(posedge clock) last_q <= last_d;
+    initial w_data_q = 16'h0;
+    always @(posedge clock) w_data_q <= w_data_d;
+    initial w_alive_q = 1'h0;
+    always @(posedge clock) w_alive_q <= w_alive_d;
+    initial w_alarm_q = 1'h0;
+    always @(posedge clock) w_alarm_q <= w_alarm_d;
+    initial w_void_q = 1'h0;
+    always @(posedge clock) w_void_q <= w_void_d;
+endmodule // merkur_special_master__stx
+// --------------------------------------------------------------------------
+// `enc`: Enc4b5b, 4B/5B encoder. (rtl/src/line/enc4b5b.rs)
+// Documented at module `merkur_special_master__ftx__enc` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__stx__enc(i_sym,o_code);
+
+    // Module arguments
+    input wire  [4:0] i_sym;
+    output reg  [4:0] o_code;
+
+    // Registers and child block ports
+    wire  [4:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__stx__enc__rom rom(
+        .address(i_sym),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_code = rom__data;
+    end
+
+endmodule // merkur_special_master__stx__enc
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__stx__enc`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__stx__enc__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [4:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 5'b11110;
+      5'b1: data = 5'b1001;
+      5'b10: data = 5'b10100;
+      5'b11: data = 5'b10101;
+      5'b100: data = 5'b1010;
+      5'b101: data = 5'b1011;
+      5'b110: data = 5'b1110;
+      5'b111: data = 5'b1111;
+      5'b1000: data = 5'b10010;
+      5'b1001: data = 5'b10011;
+      5'b1010: data = 5'b10110;
+      5'b1011: data = 5'b10111;
+      5'b1100: data = 5'b11010;
+      5'b1101: data = 5'b11011;
+      5'b1110: data = 5'b11100;
+      5'b1111: data = 5'b11101;
+      5'b10000: data = 5'b11000;
+      5'b10001: data = 5'b10001;
+      5'b10010: data = 5'b11111;
+      5'b10011: data = 5'b11001;
+      5'b10100: data = 5'b11111;
+      5'b10101: data = 5'b11111;
+      5'b10110: data = 5'b11111;
+      5'b10111: data = 5'b11111;
+      5'b11000: data = 5'b11111;
+      5'b11001: data = 5'b11111;
+      5'b11010: data = 5'b11111;
+      5'b11011: data = 5'b11111;
+      5'b11100: data = 5'b11111;
+      5'b11101: data = 5'b11111;
+      5'b11110: data = 5'b11111;
+      5'b11111: data = 5'b11111;
+      default: data = 5'b0;
+    endcase
+
+endmodule // merkur_special_master__stx__enc__rom
+// --------------------------------------------------------------------------
+// `tx`: NrziTx, Serializer + NRZI modulator. (rtl/src/line/nrzi_tx.rs)
+// Documented at module `merkur_special_master__ftx__tx` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__stx__tx(clock,i_bit_en,i_code,o_take,o_line);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_bit_en;
+    input wire  [4:0] i_code;
+    output reg  o_take;
+    output reg  o_line;
+
+    // Registers and child block ports
+    reg  [4:0] shift_d;
+    reg  [4:0] shift_q;
+    reg  [2:0] count_d;
+    reg  [2:0] count_q;
+    reg  level_d;
+    reg  level_q;
+
+    // Combinational logic
+    always @(*) begin
+        shift_d = shift_q;
+        count_d = count_q;
+        level_d = level_q;
+        o_take = i_bit_en & (count_q == 3'h0);
+        o_line = level_q;
+        if (i_bit_en) begin
+            if (count_q == 3'h0) begin
+                level_d = level_q ^ i_code[4];
+                shift_d = i_code << 1;
+            end
+            else begin
+                level_d = level_q ^ shift_q[4];
+                shift_d = shift_q << 1;
+            end
+            if (count_q == 3'h4) begin
+                count_d = 3'h0;
+            end
+            else begin
+                count_d = count_q + 3'h1;
+            end
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial shift_q = 5'h0;
+    always @(posedge clock) shift_q <= shift_d;
+    initial count_q = 3'h0;
+    always @(posedge clock) count_q <= count_d;
+    initial level_q = 1'h0;
+    always @(posedge clock) level_q <= level_d;
+endmodule // merkur_special_master__stx__tx
+// --------------------------------------------------------------------------
+// `swc`: SwitchPipe, [`SwitchCtl`] between two rows of flip-flops, as the nodes use it: the receivers' reports (loss of signal, channel failures, ACKed TST, frame boundaries, DATA headers on BSR) are registered on the way in and the decisions on the way out, so that a recovered bit, the decision it leads to and what the node does with it (switchbox, dark time, TST generator, failsafe, RECONFIG alarm) are three clocks, not one long path (issue 20). The mode, the change and its companions leave together, so the node sees one consistent decision, two clocks (one bit time) after the report that caused it. Ports as [`SwitchCtl`]; `i_armed`, `i_rw`, `i_fs` and `i_cs_timeout` (node registers and a static value) go in directly. (rtl/src/node/switch_ctl.rs)
+//
+// # switch_ctl — a node's switchbox decisions (protocol §10, §12)
+//
+// Purpose: the local fault management of every node, the special master
+// included: from its two stream controllers it decides the switchbox mode
+// (Table 1), the failsafe of a second fault, and reintegration when a
+// repaired link's partner acknowledges its TST. No central station: each
+// node runs one of these on what it sees.
+//
+// - mode N: INPUT fails → WU; else BSR fails → WD. A structural failure
+//   (`i_hard_*`: loss of signal, a TST where DATA is expected) while the
+//   node knows the ring is wrapped is the second fault: failsafe, and so is
+//   loss of signal on both at once. A run of bad words (`i_run_*`, a
+//   transient) counts only while the ring is not known wrapped (a soft
+//   wrap), and never for failsafe (protocol §9, §12);
+// - wrapped: loss of signal on INPUT → failsafe; the partner's TST with
+//   ACK heard on BSR → a WD node unwraps at the next frame start after
+//   [`REINTEGRATE_CLOCKS`] of it, a WU node when a DATA
+//   header arrives on BSR after it and no packet is arriving on INPUT (if
+//   one is — the frame that went the long way round — when it ends, so it
+//   is not cut into the new one); in failsafe too (issue 28: that is how a
+//   ring that failed safe becomes whole again), where a WU node takes a
+//   DATA header on BSR for the ACK (its upstream neighbour forwards the
+//   ring's frames to it, so it is not wrapped towards it: the special
+//   master's downstream neighbour, cut off with it, hears no TST);
+// - stream controllers act only once the node is armed (its first good
+//   frame) and not for [`SETTLE_CLOCKS`] after a change (the
+//   receivers lock to their new lines); after unwrapping, a TST where DATA
+//   is expected is not a failure for half a CS timeout (`o_grace_over`);
+// - restart and rejoin (§12): an unarmed node in mode N wraps up (WU) on a
+//   TST where DATA is expected on a lit INPUT (a restarted node between
+//   wrapped neighbours), and unwraps like an armed one; a node that is
+//   still rejoining (from power-up until, at a frame boundary, it is in
+//   mode N, armed, with no TST on INPUT or BSR: `joined`) turns round at
+//   its WU unwrap (WU → WD) when a TST arrives on INPUT (its downstream
+//   neighbour is wrapped towards it), so the ring stays closed.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock |
+// | `i_armed` | in | 1 | clock | the node has received its first good frame |
+// | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctrl`]) |
+// | `i_run_in`, `i_run_bsr` | in | 1 | clock | a run of bad words on INPUT, on BSR |
+// | `i_los_in`, `i_los_bsr` | in | 1 | clock | loss of signal on INPUT, on BSR |
+// | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
+// | `i_fs` | in | 1 | clock | the node is in failsafe |
+// | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
+// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
+// | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
+// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+// | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctrl`] `o_tst`) |
+// | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
+// | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
+// | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
+// | `o_relink` | out | 1 | clock | … and INPUT and BSR move to other lines (into or out of WU) |
+// | `o_tst_start` | out | 1 | clock | … and the TST generator goes onto an output (N → WU, WD) |
+// | `o_fs_set` | out | 1 | clock | enter failsafe (combinational) |
+// | `o_grace_over` | out | 1 | clock | a TST on a mode-N input counts as failure again |
+//
+// Latency: a decision takes effect at the next clock edge (`o_mode`).
+//
+// ```text
+// i_hard_in ____/‾‾‾‾‾‾‾‾‾
+// o_change  ____/‾\________        (mode N, ring not known wrapped)
+// o_mode    ==N===X==WU====
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_armed;
+    input wire  i_hard_in;
+    input wire  i_hard_bsr;
+    input wire  i_run_in;
+    input wire  i_run_bsr;
+    input wire  i_los_in;
+    input wire  i_los_bsr;
+    input wire  i_rw;
+    input wire  i_fs;
+    input wire  i_tst_ack;
+    input wire  i_frame_start;
+    input wire  i_bsr_data;
+    input wire  i_in_pkt;
+    input wire  i_tst_in;
+    input wire  i_tst_bsr;
+    input wire  [19:0] i_cs_timeout;
+    output reg  [1:0] o_mode;
+    output reg  o_change;
+    output reg  o_relink;
+    output reg  o_tst_start;
+    output reg  o_fs_set;
+    output reg  o_grace_over;
+
+    // Registers and child block ports
+    reg  ctl__i_hard_in;
+    reg  ctl__i_hard_bsr;
+    reg  ctl__i_run_in;
+    reg  ctl__i_run_bsr;
+    reg  ctl__i_los_in;
+    reg  ctl__i_los_bsr;
+    reg  ctl__i_tst_ack;
+    reg  ctl__i_frame_start;
+    reg  ctl__i_bsr_data;
+    reg  ctl__i_in_pkt;
+    reg  ctl__i_tst_in;
+    reg  ctl__i_tst_bsr;
+    wire  [1:0] ctl__o_mode;
+    wire  ctl__o_change;
+    wire  ctl__o_relink;
+    wire  ctl__o_tst_start;
+    wire  ctl__o_fs_set;
+    wire  ctl__o_grace_over;
+    reg  hard_in_d;
+    reg  hard_in_q;
+    reg  hard_bsr_d;
+    reg  hard_bsr_q;
+    reg  run_in_d;
+    reg  run_in_q;
+    reg  run_bsr_d;
+    reg  run_bsr_q;
+    reg  los_in_d;
+    reg  los_in_q;
+    reg  los_bsr_d;
+    reg  los_bsr_q;
+    reg  tst_ack_d;
+    reg  tst_ack_q;
+    reg  frame_start_d;
+    reg  frame_start_q;
+    reg  bsr_data_d;
+    reg  bsr_data_q;
+    reg  in_pkt_d;
+    reg  in_pkt_q;
+    reg  tst_in_d;
+    reg  tst_in_q;
+    reg  tst_bsr_d;
+    reg  tst_bsr_q;
+    reg  [1:0] mode_d;
+    reg  [1:0] mode_q;
+    reg  change_d;
+    reg  change_q;
+    reg  relink_d;
+    reg  relink_q;
+    reg  tst_start_d;
+    reg  tst_start_q;
+    reg  fs_set_d;
+    reg  fs_set_q;
+    reg  grace_over_d;
+    reg  grace_over_q;
+
+    // Child blocks
+    merkur_special_master__swc__ctl ctl(
+        .clock(clock),
+        .i_armed(i_armed),
+        .i_hard_in(ctl__i_hard_in),
+        .i_hard_bsr(ctl__i_hard_bsr),
+        .i_run_in(ctl__i_run_in),
+        .i_run_bsr(ctl__i_run_bsr),
+        .i_los_in(ctl__i_los_in),
+        .i_los_bsr(ctl__i_los_bsr),
+        .i_rw(i_rw),
+        .i_fs(i_fs),
+        .i_tst_ack(ctl__i_tst_ack),
+        .i_frame_start(ctl__i_frame_start),
+        .i_bsr_data(ctl__i_bsr_data),
+        .i_in_pkt(ctl__i_in_pkt),
+        .i_tst_in(ctl__i_tst_in),
+        .i_tst_bsr(ctl__i_tst_bsr),
+        .i_cs_timeout(i_cs_timeout),
+        .o_mode(ctl__o_mode),
+        .o_change(ctl__o_change),
+        .o_relink(ctl__o_relink),
+        .o_tst_start(ctl__o_tst_start),
+        .o_fs_set(ctl__o_fs_set),
+        .o_grace_over(ctl__o_grace_over)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        hard_in_d = hard_in_q;
+        hard_bsr_d = hard_bsr_q;
+        run_in_d = run_in_q;
+        run_bsr_d = run_bsr_q;
+        los_in_d = los_in_q;
+        los_bsr_d = los_bsr_q;
+        tst_ack_d = tst_ack_q;
+        frame_start_d = frame_start_q;
+        bsr_data_d = bsr_data_q;
+        in_pkt_d = in_pkt_q;
+        tst_in_d = tst_in_q;
+        tst_bsr_d = tst_bsr_q;
+        mode_d = mode_q;
+        change_d = change_q;
+        relink_d = relink_q;
+        tst_start_d = tst_start_q;
+        fs_set_d = fs_set_q;
+        grace_over_d = grace_over_q;
+        hard_in_d = i_hard_in;
+        hard_bsr_d = i_hard_bsr;
+        run_in_d = i_run_in;
+        run_bsr_d = i_run_bsr;
+        los_in_d = i_los_in;
+        los_bsr_d = i_los_bsr;
+        tst_ack_d = i_tst_ack;
+        frame_start_d = i_frame_start;
+        bsr_data_d = i_bsr_data;
+        in_pkt_d = i_in_pkt;
+        tst_in_d = i_tst_in;
+        tst_bsr_d = i_tst_bsr;
+        ctl__i_hard_in = hard_in_q;
+        ctl__i_hard_bsr = hard_bsr_q;
+        ctl__i_run_in = run_in_q;
+        ctl__i_run_bsr = run_bsr_q;
+        ctl__i_los_in = los_in_q;
+        ctl__i_los_bsr = los_bsr_q;
+        ctl__i_tst_ack = tst_ack_q;
+        ctl__i_frame_start = frame_start_q;
+        ctl__i_bsr_data = bsr_data_q;
+        ctl__i_in_pkt = in_pkt_q;
+        ctl__i_tst_in = tst_in_q;
+        ctl__i_tst_bsr = tst_bsr_q;
+        mode_d = ctl__o_mode;
+        change_d = ctl__o_change;
+        relink_d = ctl__o_relink;
+        tst_start_d = ctl__o_tst_start;
+        fs_set_d = ctl__o_fs_set;
+        grace_over_d = ctl__o_grace_over;
+        o_mode = mode_q;
+        o_change = change_q;
+        o_relink = relink_q;
+        o_tst_start = tst_start_q;
+        o_fs_set = fs_set_q;
+        o_grace_over = grace_over_q;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial hard_in_q = 1'h0;
+    always @(posedge clock) hard_in_q <= hard_in_d;
+    initial hard_bsr_q = 1'h0;
+    always @(posedge clock) hard_bsr_q <= hard_bsr_d;
+    initial run_in_q = 1'h0;
+    always @(posedge clock) run_in_q <= run_in_d;
+    initial run_bsr_q = 1'h0;
+    always @(posedge clock) run_bsr_q <= run_bsr_d;
+    initial los_in_q = 1'h0;
+    always @(posedge clock) los_in_q <= los_in_d;
+    initial los_bsr_q = 1'h0;
+    always @(posedge clock) los_bsr_q <= los_bsr_d;
+    initial tst_ack_q = 1'h0;
+    always @(posedge clock) tst_ack_q <= tst_ack_d;
+    initial frame_start_q = 1'h0;
+    always @(posedge clock) frame_start_q <= frame_start_d;
+    initial bsr_data_q = 1'h0;
+    always @(posedge clock) bsr_data_q <= bsr_data_d;
+    initial in_pkt_q = 1'h0;
+    always @(posedge clock) in_pkt_q <= in_pkt_d;
+    initial tst_in_q = 1'h0;
+    always @(posedge clock) tst_in_q <= tst_in_d;
+    initial tst_bsr_q = 1'h0;
+    always @(posedge clock) tst_bsr_q <= tst_bsr_d;
+    initial mode_q = 2'h0;
+    always @(posedge clock) mode_q <= mode_d;
+    initial change_q = 1'h0;
+    always @(posedge clock) change_q <= change_d;
+    initial relink_q = 1'h0;
+    always @(posedge clock) relink_q <= relink_d;
+    initial tst_start_q = 1'h0;
+    always @(posedge clock) tst_start_q <= tst_start_d;
+    initial fs_set_q = 1'h0;
+    always @(posedge clock) fs_set_q <= fs_set_d;
+    initial grace_over_q = 1'h0;
+    always @(posedge clock) grace_over_q <= grace_over_d;
+endmodule // merkur_special_master__swc
+// --------------------------------------------------------------------------
+// `ctl`: SwitchCtl, Switchbox decision logic. (rtl/src/node/switch_ctl.rs)
+//
+// # switch_ctl — a node's switchbox decisions (protocol §10, §12)
+//
+// Purpose: the local fault management of every node, the special master
+// included: from its two stream controllers it decides the switchbox mode
+// (Table 1), the failsafe of a second fault, and reintegration when a
+// repaired link's partner acknowledges its TST. No central station: each
+// node runs one of these on what it sees.
+//
+// - mode N: INPUT fails → WU; else BSR fails → WD. A structural failure
+//   (`i_hard_*`: loss of signal, a TST where DATA is expected) while the
+//   node knows the ring is wrapped is the second fault: failsafe, and so is
+//   loss of signal on both at once. A run of bad words (`i_run_*`, a
+//   transient) counts only while the ring is not known wrapped (a soft
+//   wrap), and never for failsafe (protocol §9, §12);
+// - wrapped: loss of signal on INPUT → failsafe; the partner's TST with
+//   ACK heard on BSR → a WD node unwraps at the next frame start after
+//   [`REINTEGRATE_CLOCKS`] of it, a WU node when a DATA
+//   header arrives on BSR after it and no packet is arriving on INPUT (if
+//   one is — the frame that went the long way round — when it ends, so it
+//   is not cut into the new one); in failsafe too (issue 28: that is how a
+//   ring that failed safe becomes whole again), where a WU node takes a
+//   DATA header on BSR for the ACK (its upstream neighbour forwards the
+//   ring's frames to it, so it is not wrapped towards it: the special
+//   master's downstream neighbour, cut off with it, hears no TST);
+// - stream controllers act only once the node is armed (its first good
+//   frame) and not for [`SETTLE_CLOCKS`] after a change (the
+//   receivers lock to their new lines); after unwrapping, a TST where DATA
+//   is expected is not a failure for half a CS timeout (`o_grace_over`);
+// - restart and rejoin (§12): an unarmed node in mode N wraps up (WU) on a
+//   TST where DATA is expected on a lit INPUT (a restarted node between
+//   wrapped neighbours), and unwraps like an armed one; a node that is
+//   still rejoining (from power-up until, at a frame boundary, it is in
+//   mode N, armed, with no TST on INPUT or BSR: `joined`) turns round at
+//   its WU unwrap (WU → WD) when a TST arrives on INPUT (its downstream
+//   neighbour is wrapped towards it), so the ring stays closed.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock |
+// | `i_armed` | in | 1 | clock | the node has received its first good frame |
+// | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctrl`]) |
+// | `i_run_in`, `i_run_bsr` | in | 1 | clock | a run of bad words on INPUT, on BSR |
+// | `i_los_in`, `i_los_bsr` | in | 1 | clock | loss of signal on INPUT, on BSR |
+// | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
+// | `i_fs` | in | 1 | clock | the node is in failsafe |
+// | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
+// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
+// | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
+// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+// | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctrl`] `o_tst`) |
+// | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
+// | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
+// | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
+// | `o_relink` | out | 1 | clock | … and INPUT and BSR move to other lines (into or out of WU) |
+// | `o_tst_start` | out | 1 | clock | … and the TST generator goes onto an output (N → WU, WD) |
+// | `o_fs_set` | out | 1 | clock | enter failsafe (combinational) |
+// | `o_grace_over` | out | 1 | clock | a TST on a mode-N input counts as failure again |
+//
+// Latency: a decision takes effect at the next clock edge (`o_mode`).
+//
+// ```text
+// i_hard_in ____/‾‾‾‾‾‾‾‾‾
+// o_change  ____/‾\________        (mode N, ring not known wrapped)
+// o_mode    ==N===X==WU====
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_armed;
+    input wire  i_hard_in;
+    input wire  i_hard_bsr;
+    input wire  i_run_in;
+    input wire  i_run_bsr;
+    input wire  i_los_in;
+    input wire  i_los_bsr;
+    input wire  i_rw;
+    input wire  i_fs;
+    input wire  i_tst_ack;
+    input wire  i_frame_start;
+    input wire  i_bsr_data;
+    input wire  i_in_pkt;
+    input wire  i_tst_in;
+    input wire  i_tst_bsr;
+    input wire  [19:0] i_cs_timeout;
+    output reg  [1:0] o_mode;
+    output reg  o_change;
+    output reg  o_relink;
+    output reg  o_tst_start;
+    output reg  o_fs_set;
+    output reg  o_grace_over;
+
+    // Constant declarations
+    localparam  reintegrate = 9'b100000100;
+    localparam  reint_m1 = 9'b100000011;
+    localparam  settle_start = 7'b1100100;
+
+    // Registers and child block ports
+    reg  [1:0] mode_d;
+    reg  [1:0] mode_q;
+    reg  [6:0] settle_d;
+    reg  [6:0] settle_q;
+    reg  busy_d;
+    reg  busy_q;
+    reg  [19:0] grace_d;
+    reg  [19:0] grace_q;
+    reg  [8:0] ack_time_d;
+    reg  [8:0] ack_time_q;
+    reg  ack_done_d;
+    reg  ack_done_q;
+    reg  seen_ack_d;
+    reg  seen_ack_q;
+    reg  pend_up_d;
+    reg  pend_up_q;
+    reg  joined_d;
+    reg  joined_q;
+
+    // Local signals
+    reg  [1:0] new_mode;
+    reg  fail_in;
+    reg  fail_bsr;
+    reg  up_ok;
+    reg  acting;
+    reg  live;
+    reg  wake;
+    reg  turn;
+    reg  in_n;
+    reg  go_wu;
+    reg  go_wd;
+    reg  unwrap;
+    reg  bsr_ok;
+    reg  ack_inc;
+
+    // Combinational logic
+    always @(*) begin
+        mode_d = mode_q;
+        settle_d = settle_q;
+        busy_d = busy_q;
+        grace_d = grace_q;
+        ack_time_d = ack_time_q;
+        ack_done_d = ack_done_q;
+        seen_ack_d = seen_ack_q;
+        pend_up_d = pend_up_q;
+        joined_d = joined_q;
+        if (grace_q != 20'h0) begin
+            grace_d = grace_q - 20'h1;
+        end
+        if (settle_q != 7'h0) begin
+            settle_d = settle_q - 7'h1;
+        end
+        busy_d = settle_q > 7'h1;
+        live = ~busy_q;
+        acting = i_armed & live;
+        up_ok = seen_ack_q | i_fs;
+        fail_in = i_hard_in | (i_run_in & ~i_rw);
+        fail_bsr = i_hard_bsr | (i_run_bsr & ~i_rw);
+        in_n = mode_q == 2'h0;
+        wake = ~i_armed & live & i_tst_in & ~i_los_in;
+        go_wu = in_n & ((acting & fail_in) | wake);
+        go_wd = acting & in_n & ~fail_in & fail_bsr;
+        bsr_ok = up_ok & i_bsr_data;
+        unwrap = live & (((mode_q == 2'h2) & ack_done_q & i_frame_start) | ((mode_q == 2'h1) & (pend_up_q | bsr_ok) & ~i_in_pkt));
+        turn = unwrap & (mode_q == 2'h1) & ~joined_q & i_tst_in;
+        new_mode = mode_q;
+        if (unwrap) begin
+            new_mode = 2'h0;
+        end
+        if (turn) begin
+            new_mode = 2'h2;
+        end
+        if (go_wd) begin
+            new_mode = 2'h2;
+        end
+        if (go_wu) begin
+            new_mode = 2'h1;
+        end
+        o_change = go_wu | go_wd | unwrap;
+        o_relink = go_wu | (unwrap & (mode_q == 2'h1));
+        o_tst_start = go_wu | go_wd | turn;
+        o_fs_set = acting & ((in_n & (((i_hard_in | i_hard_bsr) & i_rw) | (i_los_in & i_los_bsr))) | (~in_n & i_los_in));
+        ack_inc = live & ~in_n & i_tst_ack & (ack_time_q != 9'h1ff);
+        if (live & ~in_n & i_tst_ack) begin
+            seen_ack_d = 1'b1;
+        end
+        if (ack_inc) begin
+            ack_time_d = ack_time_q + 9'h1;
+        end
+        if (live & (mode_q == 2'h1) & bsr_ok) begin
+            pend_up_d = 1'b1;
+        end
+        ack_done_d = (ack_time_q >= reintegrate) | ((ack_time_q == reint_m1) & ack_inc);
+        if (i_armed & in_n & i_frame_start & ~i_tst_in & ~i_tst_bsr) begin
+            joined_d = 1'b1;
+        end
+        if (o_change) begin
+            mode_d = new_mode;
+            settle_d = settle_start;
+            busy_d = 1'b1;
+            ack_time_d = 9'h0;
+            ack_done_d = 1'b0;
+            seen_ack_d = 1'b0;
+            pend_up_d = 1'b0;
+            if (unwrap & ~turn) begin
+                grace_d = i_cs_timeout >> 1;
+            end
+        end
+        o_mode = mode_q;
+        o_grace_over = grace_q == 20'h0;
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial mode_q = 2'h0;
+    always @(posedge clock) mode_q <= mode_d;
+    initial settle_q = 7'h0;
+    always @(posedge clock) settle_q <= settle_d;
+    initial busy_q = 1'h0;
+    always @(posedge clock) busy_q <= busy_d;
+    initial grace_q = 20'h0;
+    always @(posedge clock) grace_q <= grace_d;
+    initial ack_time_q = 9'h0;
+    always @(posedge clock) ack_time_q <= ack_time_d;
+    initial ack_done_q = 1'h0;
+    always @(posedge clock) ack_done_q <= ack_done_d;
+    initial seen_ack_q = 1'h0;
+    always @(posedge clock) seen_ack_q <= seen_ack_d;
+    initial pend_up_q = 1'h0;
+    always @(posedge clock) pend_up_q <= pend_up_d;
+    initial joined_q = 1'h0;
+    always @(posedge clock) joined_q <= joined_d;
+endmodule // merkur_special_master__swc__ctl
+// --------------------------------------------------------------------------
+// `tst`: TstTx, TST generator. (rtl/src/node/tst_tx.rs)
+//
+// # tst_tx — link test (TST) packet generator (protocol §5, §9, §12)
+//
+// Purpose: what a wrapped node sends on BSS: a TST packet every 65 bit
+// times on its own clock: J K, H0 = `{10, 0, ACK, ADDR}`, H1 = NOT H0, one
+// idle group. ACK tells the partner that its TST is heard.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate |
+// | `i_ack` | in | 1 | clock | ACK bit (partner's TST heard), taken at each packet start |
+// | `i_address` | in | 12 | static | node address |
+// | `i_restart` | in | 1 | clock | the output is switched to this generator: a dark lead-in of 12 bit times, an idle group, then TST |
+// | `o_line` | out | 2 | clock | line, DDR pair |
+//
+// Latency: free running; one bit every 2 clocks, a packet every 130 clocks.
+// After `i_restart` the line holds its level for 12 bit times, the dark
+// time of every switchbox change ([`crate::node::sw_dark`]: a receiver that was
+// inside a word of the stream this replaces mutes and drops it,
+// [`crate::line::monitor`], rather than completing it with TST bits), then one
+// idle group and the next TST.
+//
+// ```text
+// o_line   | J K | H0 (25) | H1 = ~H0 (25) | I | J K | ...      65 bit times each
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__tst(clock,i_ack,i_address,i_restart,o_line);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_ack;
+    input wire  [11:0] i_address;
+    input wire  i_restart;
+    output reg  [1:0] o_line;
+
+    // Registers and child block ports
+    reg  [4:0] enc__i_sym;
+    wire  [4:0] enc__o_code;
+    reg  tx__i_bit_en;
+    reg  [4:0] tx__i_code;
+    wire  tx__o_take;
+    wire  tx__o_line;
+    reg  half_d;
+    reg  half_q;
+    reg  [4:0] dark_d;
+    reg  [4:0] dark_q;
+    reg  [3:0] gnum_d;
+    reg  [3:0] gnum_q;
+    reg  ack_d;
+    reg  ack_q;
+
+    // Local signals
+    reg  [15:0] word;
+    reg  [3:0] nib;
+    reg  p_a;
+    reg  p_b;
+    reg  [4:0] sym;
+
+    // Child blocks
+    merkur_special_master__tst__enc enc(
+        .i_sym(enc__i_sym),
+        .o_code(enc__o_code)
+    );
+    merkur_special_master__tst__tx tx(
+        .clock(clock),
+        .i_bit_en(tx__i_bit_en),
+        .i_code(tx__i_code),
+        .o_take(tx__o_take),
+        .o_line(tx__o_line)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        half_d = half_q;
+        gnum_d = gnum_q;
+        ack_d = ack_q;
+        dark_d = dark_q;
+        half_d = ~half_q;
+        tx__i_bit_en = half_q & (dark_q == 5'h0);
+        if (dark_q != 5'h0) begin
+            dark_d = dark_q - 5'h1;
+        end
+        word = ({4'h0, i_address}) | 16'h8000;
+        if (ack_q) begin
+            word = word | 16'h1000;
+        end
+        if (gnum_q >= 4'h7) begin
+            word = ~word;
+        end
+        p_a = ~(word[5] ^ word[4] ^ word[9] ^ word[8] ^ word[13] ^ word[12] ^ word[15]);
+        p_b = ~(word[1] ^ word[0] ^ word[4] ^ word[3] ^ word[2] ^ word[8] ^ word[7] ^ word[6] ^ word[12] ^ word[11] ^ word[10] ^ word[15] ^ word[14]);
+        nib = word[(0)+:(4)] & 4'h3;
+        if ((gnum_q == 4'h3) | (gnum_q == 4'h8)) begin
+            nib = word[(2)+:(4)];
+        end
+        if ((gnum_q == 4'h4) | (gnum_q == 4'h9)) begin
+            nib = word[(6)+:(4)];
+        end
+        if ((gnum_q == 4'h5) | (gnum_q == 4'ha)) begin
+            nib = word[(10)+:(4)];
+        end
+        if ((gnum_q == 4'h6) | (gnum_q == 4'hb)) begin
+            nib = (word[(12)+:(4)] >> 1) & 4'h6;
+            if (p_a) begin
+                nib = nib | 4'h8;
+            end
+            if (p_b) begin
+                nib = nib | 4'h1;
+            end
+        end
+        sym = 5'h0;
+        if (nib[0]) begin
+            sym = sym | 5'h1;
+        end
+        if (nib[1]) begin
+            sym = sym | 5'h2;
+        end
+        if (nib[2]) begin
+            sym = sym | 5'h4;
+        end
+        if (nib[3]) begin
+            sym = sym | 5'h8;
+        end
+        if (gnum_q == 4'h0) begin
+            sym = 5'h10;
+        end
+        if (gnum_q == 4'h1) begin
+            sym = 5'h11;
+        end
+        if (gnum_q == 4'hc) begin
+            sym = 5'h12;
+        end
+        enc__i_sym = sym;
+        tx__i_code = enc__o_code;
+        if (tx__o_take) begin
+            gnum_d = gnum_q + 4'h1;
+            if (gnum_q == 4'hc) begin
+                gnum_d = 4'h0;
+                ack_d = i_ack;
+            end
+        end
+        if (i_restart) begin
+            dark_d = 5'h18;
+            gnum_d = 4'hc;
+        end
+        o_line = 2'h0;
+        if (tx__o_line) begin
+            o_line = 2'h3;
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial half_q = 1'h0;
+    always @(posedge clock) half_q <= half_d;
+    initial dark_q = 5'h0;
+    always @(posedge clock) dark_q <= dark_d;
+    initial gnum_q = 4'h0;
+    always @(posedge clock) gnum_q <= gnum_d;
+    initial ack_q = 1'h0;
+    always @(posedge clock) ack_q <= ack_d;
+endmodule // merkur_special_master__tst
+// --------------------------------------------------------------------------
+// `enc`: Enc4b5b, 4B/5B encoder. (rtl/src/line/enc4b5b.rs)
+// Documented at module `merkur_special_master__ftx__enc` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__tst__enc(i_sym,o_code);
+
+    // Module arguments
+    input wire  [4:0] i_sym;
+    output reg  [4:0] o_code;
+
+    // Registers and child block ports
+    wire  [4:0] rom__data;
+
+    // Child blocks
+    merkur_special_master__tst__enc__rom rom(
+        .address(i_sym),
+        .data(rom__data)
+    );
+
+    // Combinational logic
+    always @(*) begin
+        o_code = rom__data;
+    end
+
+endmodule // merkur_special_master__tst__enc
+// --------------------------------------------------------------------------
+// `rom` of `merkur_special_master__tst__enc`: a table (rust-hdl ROM), read combinationally.
+// --------------------------------------------------------------------------
+module merkur_special_master__tst__enc__rom(address,data);
+
+    // Module arguments
+    input wire  [4:0] address;
+    output reg  [4:0] data;
+
+    // Update code (custom)
+    always @*
+    case (address)
+        5'b0: data = 5'b11110;
+      5'b1: data = 5'b1001;
+      5'b10: data = 5'b10100;
+      5'b11: data = 5'b10101;
+      5'b100: data = 5'b1010;
+      5'b101: data = 5'b1011;
+      5'b110: data = 5'b1110;
+      5'b111: data = 5'b1111;
+      5'b1000: data = 5'b10010;
+      5'b1001: data = 5'b10011;
+      5'b1010: data = 5'b10110;
+      5'b1011: data = 5'b10111;
+      5'b1100: data = 5'b11010;
+      5'b1101: data = 5'b11011;
+      5'b1110: data = 5'b11100;
+      5'b1111: data = 5'b11101;
+      5'b10000: data = 5'b11000;
+      5'b10001: data = 5'b10001;
+      5'b10010: data = 5'b11111;
+      5'b10011: data = 5'b11001;
+      5'b10100: data = 5'b11111;
+      5'b10101: data = 5'b11111;
+      5'b10110: data = 5'b11111;
+      5'b10111: data = 5'b11111;
+      5'b11000: data = 5'b11111;
+      5'b11001: data = 5'b11111;
+      5'b11010: data = 5'b11111;
+      5'b11011: data = 5'b11111;
+      5'b11100: data = 5'b11111;
+      5'b11101: data = 5'b11111;
+      5'b11110: data = 5'b11111;
+      5'b11111: data = 5'b11111;
+      default: data = 5'b0;
+    endcase
+
+endmodule // merkur_special_master__tst__enc__rom
+// --------------------------------------------------------------------------
+// `tx`: NrziTx, Serializer + NRZI modulator. (rtl/src/line/nrzi_tx.rs)
+// Documented at module `merkur_special_master__ftx__tx` above.
+// --------------------------------------------------------------------------
+module merkur_special_master__tst__tx(clock,i_bit_en,i_code,o_take,o_line);
+
+    // Module arguments
+    input wire  clock;
+    input wire  i_bit_en;
+    input wire  [4:0] i_code;
+    output reg  o_take;
+    output reg  o_line;
+
+    // Registers and child block ports
+    reg  [4:0] shift_d;
+    reg  [4:0] shift_q;
+    reg  [2:0] count_d;
+    reg  [2:0] count_q;
+    reg  level_d;
+    reg  level_q;
+
+    // Combinational logic
+    always @(*) begin
+        shift_d = shift_q;
+        count_d = count_q;
+        level_d = level_q;
+        o_take = i_bit_en & (count_q == 3'h0);
+        o_line = level_q;
+        if (i_bit_en) begin
+            if (count_q == 3'h0) begin
+                level_d = level_q ^ i_code[4];
+                shift_d = i_code << 1;
+            end
+            else begin
+                level_d = level_q ^ shift_q[4];
+                shift_d = shift_q << 1;
+            end
+            if (count_q == 3'h4) begin
+                count_d = 3'h0;
+            end
+            else begin
+                count_d = count_q + 3'h1;
+            end
+        end
+    end
+
+    // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
+    initial shift_q = 5'h0;
+    always @(posedge clock) shift_q <= shift_d;
+    initial count_q = 3'h0;
+    always @(posedge clock) count_q <= count_d;
+    initial level_q = 1'h0;
+    always @(posedge clock) level_q <= level_d;
+endmodule // merkur_special_master__tst__tx
+// --------------------------------------------------------------------------
+// `txs`: SlotSel, The slot whose memories a backup's send side reads (the database's and the actuator Alive memory's read address): the frame generator's once the node is the clock base, else the forwarder's. A block of its own so that the address is not computed in [`SpecialMaster`]'s logic, which reads the database's outputs: Verilator orders a block's combinational logic as one piece, and the database's outputs depend on its inputs there, so the mux inside the node would be a combinational loop (UNOPTFLAT). (rtl/src/node/special_master.rs)
+//
+// # special_master — the ring's clock base, and a backup that can become it (protocol §5, §8)
+//
+// Purpose: the one master per ring that starts every cycle, and the
+// flying special master's backups (protocol §8): with `i_prio` = 0 the
+// node is the clock base from power-up (everything below); with `i_prio`
+// = p ≥ 1 it is a **backup**: a master like [`crate::node::master`] (its
+// forwarder [`Fwd`] in master mode on OUTPUT, BSR repeated on BSS in mode
+// N, alarms through the forwarder and read back at INPUT, failsafe left at
+// a CLR header) whose clock base waits for its election. Its election
+// timer counts bit times since the last packet started on INPUT (J K, or
+// [`START_BITS`] code bits that show a DATA frame's start with one line-bit
+// error); when it reaches
+// `i_elect` ((1.5 + p) periods) while the node is armed, not in failsafe
+// and did not know the ring wrapped at its last good header, the node
+// becomes the clock base for good (`o_base`): [`TAKEOVER_LEAD_BITS`] of
+// idles on OUTPUT, then a frame every period with CYC continuing the count
+// (the last good header's + 1 + p), an empty return store, and what a
+// clock base learns from returning frames started afresh. A backup's
+// clock-base logic is this block's; the forwarder is unused (and removed
+// by synthesis) where `i_prio` is tied to 0.
+//
+// As the clock base: every
+// `i_period` bit times of its own clock it sends a DATA frame on PO (J K,
+// H0 = `{00, FS, RWC, S−1}`, H1 = `{RWP, CYC, HOP = 0}`, S slot words) and a
+// SEC packet on SO (H0 = `{01, 00, CYC[11:0]}`, H1 = NOT H0). The frame that
+// returns on PI fills the **return store**, a slot-indexed memory (S words
+// with the cycle they returned in), from which the next frame is built
+// (protocol §8: the paper's FIFO; it cannot overflow, and a slot that did
+// not return last cycle is sent as VOID). An entry is sent once: it is
+// marked not valid in the clock after its word is taken, so a slot whose
+// frame came back with a bad header, or not at all, is VOID however many
+// cycles ago it last returned (CYC has only 3 bits). Per slot of the outgoing frame:
+// - LOCAL: `{data memory, Alive}`, or an alarm in the home slot (§11, with
+//   alternation and SEQ in `D[11]`; the alarm stays in flight until the
+//   frame returns with it good, and is sent again otherwise);
+// - ACT: the returned word with the data memory's value and the actuator's
+//   Alive; a VOID is regenerated with the Alive the actuator would send;
+//   an alarm passes;
+// - otherwise the returned word; an alarm that returns after the SM already
+//   retransmitted an alarm in that slot is not sent again (VOID).
+//
+// Like every master it has the real-time database [`Mdb`] (data memory,
+// configuration, Alive check, interrupts, Wishbone host port): frames start
+// once the host has loaded the configuration and set the start bit.
+//
+// Secondary relay: a DATA frame arriving on SI (the ring is wrapped) is
+// passed on to SO like in every node in mode N, held back [`RELAY_BITS`]
+// bits until its H1 shows it is DATA; every other packet is dropped there
+// (the SM's own SEC coming back, the remains of a TST that a node in mode
+// N cut, a fragment), so nothing but frames circulates on the secondary
+// ring, a closed loop through the pass-throughs; a SEC is sent at the
+// cycle's start only when the last returned frame had RWC = 0 (protocol
+// §8).
+//
+// Failsafe (protocol §12): it enters failsafe like every node (FS in a
+// returned header without CLR, a second structural fault, its CS timeout:
+// 3.5 periods without a returned packet other than a TST, a FAILSAFE
+// alarm), and it alone brings the ring out: it keeps `hop_ref`, the HOP of
+// the last good header back with FS = 0 outside failsafe; in failsafe,
+// after 2 frames back in a row with HOP ≥ `hop_ref` (every node reached
+// again: the ring is no longer split) — and its host's FS_CLEAR where
+// FS_HOST is set or a FAILSAFE request came back — it leaves failsafe at a
+// period tick and sends CLR frames (H0's ALIVE bit) until one comes back
+// with FS = 0; if the 4th does not, it enters failsafe again.
+//
+// Switchbox: like every node ([`crate::node::slave`]; protocol §10) it wraps
+// when its INPUT or BSR fails (frames then leave on OUTPUT and return on
+// INPUT of its row of Table 1, headers carry RWC, no SEC is sent, BSS
+// carries TST), reintegrates ([`UNWRAP_LEAD_BITS`] before a period tick
+// when it is the WD end), and sends RECONFIG alarms in its home slot; after
+// every change its outputs are dark for 12 bit times ([`crate::node::sw_dark`]) —
+// but for PO between N and WU, where PO carries its own frame generator
+// before and after, so a wrap never cuts the frame it is sending (issue
+// 19) — and a packet the relay was holding from the old BSR line is
+// dropped.
+//
+// | port | dir | width | clock domain | meaning |
+// |---|---|---|---|---|
+// | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
+// | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
+// | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
+// | `i_address` | in | 12 | static | home slot |
+// | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
+// | `i_period` | in | 20 | static | cycle period P in bit times (protocol §8) |
+// | `i_cs_timeout` | in | 20 | static | clocks without a returned packet other than a TST before failsafe (3.5 periods; 2.5 + the highest backup priority in a ring with backups, §8) |
+// | `i_prio` | in | 3 | static | 0: the clock base from power-up; 1–7: a backup of this priority |
+// | `i_elect` | in | 20 | static | a backup's election time in bit times ((1.5 + `i_prio`) periods) |
+// | `i_flying` | in | 1 | static | the ring has backups: a priority-0 node that its host starts with JOIN after a restart ([`Mdb`], protocol §12) rejoins as a master and never starts a clock base (0: a ring without backups, whose special master's restart restarts the ring: its host starts it with bit 0; synthesis removes the forwarder) |
+// | `i_wb_*`, `o_wb_*` | | | clock | Wishbone B4 classic host port, see [`Mdb`] |
+// | `i_irq1`, `i_irq2`, `i_fs_req` | in | 1 | clock | user requests (alarms in the home slot) |
+// | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word; each also goes into the alarm queue, `mdb`) |
+// | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
+// | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD) |
+// | `o_failsafe` | out | 1 | clock | failsafe (left by the special master itself, protocol §12) |
+// | `o_irq_fsc` | out | 1 | clock | failsafe entered or left (one clock) |
+// | `o_perr`, `o_ferr`, `o_aerr`, `o_serr` | out | 16 | clock | error counters (`serr`: SEC packets that did not return) |
+// | `o_hop` | out | 12 | clock | HOP of the last returned frame (N − 1 in a healthy ring) |
+// | `o_cycles` | out | 16 | clock | frames sent |
+// | `o_running` | out | 1 | clock | the host started the ring |
+// | `o_base` | out | 1 | clock | the node is the clock base (priority 0, or elected) |
+//
+// Latency: a frame's J starts 1–5 bit times after its period tick; a
+// returned word is in the store ≈ 3.5 bit times after its last line bit.
+//
+// ```text
+// period     |<------------------------- P bit times ------------------------>|
+// PO         | J K | H0 | H1 | slot 0 | ... | slot S-1 |~~~~~~ idle ~~~~~~~~~~~| J K ...
+// SO         | J K | H0 | H1 |~~~~~~~~~~~~~~~~~~~~~ idle ~~~~~~~~~~~~~~~~~~~~~| J K ...
+// PI (back)        ...L later...  | J K | H0 | H1 | slot 0 | ... -> return store
+// ```
+// --------------------------------------------------------------------------
+module merkur_special_master__txs(i_ftx,i_fwd,i_cb,i_prio,i_join,o_slot);
+
+    // Module arguments
+    input wire  [11:0] i_ftx;
+    input wire  [11:0] i_fwd;
+    input wire  i_cb;
+    input wire  [2:0] i_prio;
+    input wire  i_join;
+    output reg  [11:0] o_slot;
+
+    // Combinational logic
+    always @(*) begin
+        o_slot = i_ftx;
+        if (~i_cb & ((i_prio != 3'h0) | i_join)) begin
+            o_slot = i_fwd;
+        end
+    end
+
+endmodule // merkur_special_master__txs
