@@ -1606,13 +1606,30 @@ pub fn write(report: &Report, dir: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// Default base rings: tb-data's 8-node ring, or 8, 32 and 100 nodes.
+/// The campaign's default rings, built into the binary (an installed
+/// `merkur campaign` runs from any folder): their names (as in the
+/// checkout, where the same files are) and texts.
+pub const EMBEDDED_RINGS: [(&str, &str); 3] = [
+    (
+        "tb-data/ring8.toml",
+        include_str!("../../tb-data/ring8.toml"),
+    ),
+    (
+        "tb-data/ring32.toml",
+        include_str!("../../tb-data/ring32.toml"),
+    ),
+    (
+        "tb-data/ring100.toml",
+        include_str!("../../tb-data/ring100.toml"),
+    ),
+];
+
+/// Default base rings: the 8-node ring, or 8, 32 and 100 nodes
+/// ([`EMBEDDED_RINGS`]).
 pub fn default_rings(full: bool) -> Vec<PathBuf> {
-    let root = merkur_sim::repo_root().join("tb-data");
-    let names: &[&str] = if full {
-        &["ring8.toml", "ring32.toml", "ring100.toml"]
-    } else {
-        &["ring8.toml"]
-    };
-    names.iter().map(|n| root.join(n)).collect()
+    let k = if full { EMBEDDED_RINGS.len() } else { 1 };
+    EMBEDDED_RINGS[..k]
+        .iter()
+        .map(|(name, _)| PathBuf::from(name))
+        .collect()
 }

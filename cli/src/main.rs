@@ -22,6 +22,10 @@ mod synth;
     long_about = "MERKUR fault-tolerant ring fieldbus.\n\nScenario files are TOML (docs/scenarios.md); the protocol is docs/protocol.md."
 )]
 struct Cli {
+    /// Folder of the built Verilator models (default: $MERKUR_VERILATOR_CACHE, else
+    /// $XDG_CACHE_HOME/merkur/verilator or ~/.cache/merkur/verilator)
+    #[arg(long, global = true, value_name = "DIR")]
+    cache_dir: Option<PathBuf>,
     #[command(subcommand)]
     cmd: Cmd,
 }
@@ -236,9 +240,20 @@ fn default_demo_wave() -> PathBuf {
         .join("demo_8_break.fst")
 }
 
+/// A scenario file's text. The campaign's default rings
+/// ([`campaign::EMBEDDED_RINGS`]) are built in: a `tb-data/ring*.toml` of
+/// theirs that is not in the current folder (an installed `merkur` run
+/// outside the checkout) reads the embedded copy.
 fn read_text(path: &Path) -> Result<String, String> {
-    std::fs::read_to_string(path)
-        .map_err(|e| format!("error: cannot read scenario {}: {e}", path.display()))
+    match std::fs::read_to_string(path) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => campaign::EMBEDDED_RINGS
+            .iter()
+            .find(|(name, _)| Path::new(name) == path)
+            .map(|(_, text)| text.to_string())
+            .ok_or(e),
+        r => r,
+    }
+    .map_err(|e| format!("error: cannot read scenario {}: {e}", path.display()))
 }
 
 /// A ring scenario (token-bus scenarios are refused with a clear error:
@@ -518,6 +533,11 @@ fn main() -> ExitCode {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
     let cli = Cli::parse();
+    if let Some(d) = &cli.cache_dir {
+        // Read by merkur_sim::verilator::cache_root; set before any thread
+        // exists.
+        std::env::set_var("MERKUR_VERILATOR_CACHE", d);
+    }
     let r = match &cli.cmd {
         Cmd::Check {
             scenario,

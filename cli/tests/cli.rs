@@ -896,3 +896,48 @@ fn prove_lists_runs_and_refuses() {
         "--only \"nope\": no such proof; proofs: codec",
     );
 }
+
+/// An installed `merkur` (the binary alone, copied out of the build) works
+/// from any folder: `demo` builds its Verilator model in the user's cache
+/// directory (`$XDG_CACHE_HOME/merkur/verilator`, not the checkout), and
+/// the campaign's default rings are built in (`check tb-data/ring32.toml`
+/// in a folder without it reads the embedded copy).
+#[test]
+fn installed_binary_runs_outside_the_checkout() {
+    let tmp = std::env::temp_dir().join(format!("merkur-installed-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&tmp);
+    let (bin, work, cache) = (tmp.join("bin"), tmp.join("work"), tmp.join("cache"));
+    for d in [&bin, &work, &cache] {
+        std::fs::create_dir_all(d).unwrap();
+    }
+    let exe = bin.join("merkur");
+    std::fs::copy(env!("CARGO_BIN_EXE_merkur"), &exe).unwrap();
+    let run = |args: &[&str]| {
+        Command::new(&exe)
+            .args(args)
+            .current_dir(&work)
+            .env_remove("MERKUR_VERILATOR_CACHE")
+            .env("XDG_CACHE_HOME", &cache)
+            .env("HOME", &tmp)
+            .output()
+            .expect("merkur runs")
+    };
+    let o = run(&["check", "tb-data/ring32.toml"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(text(&o.stdout).contains("32 nodes"), "{}", text(&o.stdout));
+    let o = run(&["check", "tb-data/ring999.toml"]);
+    assert_eq!(o.status.code(), Some(2), "not embedded: refused");
+    let o = run(&["demo", "--wave", "demo.fst"]);
+    let out = text(&o.stdout);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    assert!(
+        out.contains("RTL agrees with the model: every word, header and node state."),
+        "{out}"
+    );
+    assert!(work.join("demo.fst").is_file());
+    let models = std::fs::read_dir(cache.join("merkur/verilator"))
+        .expect("the model cache is in the user's cache directory")
+        .count();
+    assert!(models >= 2, "a model and the shared runtime: {models}");
+    let _ = std::fs::remove_dir_all(&tmp);
+}

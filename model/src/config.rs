@@ -752,9 +752,70 @@ pub fn load(file: &str, text: &str) -> Result<Config, ScenarioError> {
     validate(file, text, &raw)
 }
 
-/// Validates a parsed scenario.
+/// Validates a parsed scenario: the ring, the nodes and who writes which
+/// slot, the frame's timing, the stimulus, the faults, in that order (the
+/// first error is reported).
 pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, ScenarioError> {
     let m = SourceMap::new(file, text);
+    let (n, cycles, sm) = check_ring(&m, raw)?;
+    let own = check_nodes(&m, raw)?;
+    let slots = own.writer.len();
+    let ext = raw.frame.alarm_bits;
+    let critical = critical_slots(&m, raw, slots)?;
+    let (period, line_rate_mbps) = check_timing(&m, raw, &own.nodes, slots, ext, &critical)?;
+    let at = Fields {
+        m: &m,
+        n,
+        cycles,
+        slots,
+    };
+    let stim = check_stimulus(&at, raw, &own)?;
+    let rtx_words = critical
+        .iter()
+        .rposition(|&c| c)
+        .map_or(0, |c| 2 * rtx_capacity(period, slots, n, ext, c, false));
+    let mut faults = vec![];
+    for (j, f) in raw.fault.iter().enumerate() {
+        let c = at.cycle(&f.cycle, format!("fault[{j}].cycle"))?;
+        let ctx = FaultCtx {
+            at: &at,
+            f,
+            j,
+            sm,
+            nodes: &own.nodes,
+            ext,
+            rtx_words,
+            seed: raw.seed,
+        };
+        let fault = ctx.check(c, &faults)?;
+        faults.push((c, fault));
+    }
+    Ok(Config {
+        name: raw.name.clone().unwrap_or_else(|| file.to_string()),
+        seed: raw.seed,
+        cycles,
+        ext,
+        period,
+        line_rate_mbps,
+        nodes: own.nodes,
+        slots,
+        writer: own.writer,
+        slot_kind: own.slot_kind,
+        sm,
+        generator: raw.stimulus.generator,
+        values: stim.values,
+        host_writes: stim.host_writes,
+        irqs: stim.irqs,
+        fs_clears: stim.fs_clears,
+        faults,
+        critical,
+    })
+}
+
+/// The ring as a whole: 2 to [`MAX_NODES`] nodes, 1 to [`MAX_CYCLES`]
+/// cycles, exactly one special master. Returns (nodes, cycles, the special
+/// master).
+fn check_ring(m: &SourceMap, raw: &RawScenario) -> Result<(usize, u32, usize), ScenarioError> {
     let n = raw.node.len();
     if n < 2 {
         return Err(m.error(
@@ -775,7 +836,6 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             format!("cycles = {cycles} must be between 1 and {MAX_CYCLES}"),
         ));
     }
-    // Special master.
     let sms: Vec<usize> = (0..n)
         .filter(|&i| *raw.node[i].kind.get_ref() == Kind::SpecialMaster)
         .collect();
@@ -794,142 +854,72 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             ),
         ));
     }
-    // Slot ownership.
+    Ok((n, cycles, sms[0]))
+}
+
+/// The nodes and who writes which slot.
+struct Ownership {
+    nodes: Vec<NodeCfg>,
+    /// Per slot, its writer.
+    writer: Vec<usize>,
+    /// Per slot, its kind.
+    slot_kind: Vec<SlotKind>,
+}
+
+/// A slot number of the scenario (`field` names it in the message).
+fn check_slot(m: &SourceMap, s: &Spanned<u32>, field: String) -> Result<usize, ScenarioError> {
+    let v = *s.get_ref() as usize;
+    if v >= MAX_SLOTS {
+        Err(m.at(
+            s,
+            format!(
+                "{field} = {v} is out of range: slots are 0..{}",
+                MAX_SLOTS - 1
+            ),
+        ))
+    } else {
+        Ok(v)
+    }
+}
+
+/// Node `node` writes `slot` (named `field`, at `at`): refused when the
+/// slot has a writer already.
+fn claim(
+    m: &SourceMap,
+    raw: &RawScenario,
+    writer: &mut BTreeMap<usize, usize>,
+    (slot, at, field): (usize, &Spanned<u32>, String),
+    node: usize,
+) -> Result<(), ScenarioError> {
+    if let Some(other) = writer.get(&slot) {
+        return Err(m.at(
+            at,
+            format!(
+                "{field} = {slot}: slot {slot} already has a writer, node[{other}] ({}); every slot has exactly one",
+                raw.node[*other].kind.get_ref().name()
+            ),
+        ));
+    }
+    writer.insert(slot, node);
+    Ok(())
+}
+
+/// Every node's settings and the slots it writes: a sensor its address, a
+/// master its `slots` and the actuator slots it `serves`; every actuator
+/// served, every slot 0..S−1 with exactly one writer.
+fn check_nodes(m: &SourceMap, raw: &RawScenario) -> Result<Ownership, ScenarioError> {
     let mut writer: BTreeMap<usize, usize> = BTreeMap::new();
     let mut kinds: BTreeMap<usize, SlotKind> = BTreeMap::new();
-    let mut nodes = Vec::with_capacity(n);
-    let check_slot = |s: &Spanned<u32>, field: String| -> Result<usize, ScenarioError> {
-        let v = *s.get_ref() as usize;
-        if v >= MAX_SLOTS {
-            Err(m.at(
-                s,
-                format!(
-                    "{field} = {v} is out of range: slots are 0..{}",
-                    MAX_SLOTS - 1
-                ),
-            ))
-        } else {
-            Ok(v)
-        }
-    };
-    let claim = |slot: usize,
-                 at: &Spanned<u32>,
-                 node: usize,
-                 field: String,
-                 writer: &mut BTreeMap<usize, usize>|
-     -> Result<(), ScenarioError> {
-        if let Some(other) = writer.get(&slot) {
-            return Err(m.at(
-                at,
-                format!(
-                    "{field} = {slot}: slot {slot} already has a writer, node[{other}] ({}); every slot has exactly one",
-                    raw.node[*other].kind.get_ref().name()
-                ),
-            ));
-        }
-        writer.insert(slot, node);
-        Ok(())
-    };
+    let mut nodes = Vec::with_capacity(raw.node.len());
     // Actuators first so that `serves` can be matched against them.
     let mut actuator_of: BTreeMap<usize, usize> = BTreeMap::new();
     for (i, rn) in raw.node.iter().enumerate() {
-        let kind = *rn.kind.get_ref();
-        let address = check_slot(&rn.address, format!("node[{i}].address"))?;
-        let ppm = rn.ppm.as_ref().map(|p| *p.get_ref()).unwrap_or(0.0);
-        if let Some(p) = &rn.ppm {
-            if !ppm.is_finite() || ppm.abs() > MAX_PPM {
-                return Err(m.at(
-                    p,
-                    format!("node[{i}].ppm = {ppm} is out of range: clock offsets are within ±{MAX_PPM} ppm"),
-                ));
-            }
-        }
-        if !kind.is_master() {
-            for (f, v) in [("slots", &rn.slots), ("serves", &rn.serves)] {
-                if let Some(v) = v {
-                    return Err(m.at(
-                        v,
-                        format!(
-                            "node[{i}].{f}: a {} owns exactly its address slot; `{f}` is for masters",
-                            kind.name()
-                        ),
-                    ));
-                }
-            }
-            if rn.alive_check.is_some() {
-                return Err(m.error(
-                    Some(rn.kind.span().start),
-                    format!("node[{i}].alive_check: only masters check Alive bits"),
-                ));
-            }
-        }
-        let backup = match &rn.backup {
-            None => None,
-            Some(b) => {
-                if kind != Kind::Master {
-                    return Err(m.at(
-                        b,
-                        format!(
-                            "node[{i}].backup = {}: only a master can be a backup clock base (this node is a {}){}",
-                            b.get_ref(),
-                            kind.name(),
-                            if kind == Kind::SpecialMaster {
-                                ", and the special master is the clock base already"
-                            } else {
-                                ""
-                            }
-                        ),
-                    ));
-                }
-                let p = *b.get_ref();
-                if !(1..=MAX_BACKUP).contains(&p) {
-                    return Err(m.at(
-                        b,
-                        format!("node[{i}].backup = {p} is out of range: priorities are 1..{MAX_BACKUP} (1 takes over first)"),
-                    ));
-                }
-                if let Some(other) = (0..i).find(|&o| {
-                    raw.node[o].backup.as_ref().map(|x| *x.get_ref()) == Some(p)
-                        && raw.node[o].kind.get_ref() == &Kind::Master
-                }) {
-                    return Err(m.at(
-                        b,
-                        format!("node[{i}].backup = {p}: node[{other}] already has priority {p}; backup priorities are distinct"),
-                    ));
-                }
-                Some(p as u8)
-            }
-        };
-        if let Some(x) = &rn.fs_exit {
-            if kind != Kind::SpecialMaster && backup.is_none() {
-                return Err(m.at(
-                    x,
-                    format!(
-                        "node[{i}].fs_exit: a {} does not decide when the ring leaves failsafe; only the special master (or a backup, once it is the clock base) does",
-                        kind.name()
-                    ),
-                ));
-            }
-        }
-        let mut cfg = NodeCfg {
-            kind,
-            address,
-            slots: vec![],
-            serves: vec![],
-            ppm,
-            alive_check: rn.alive_check.unwrap_or(true),
-            fs_exit_host: rn.fs_exit.as_ref().map(|x| *x.get_ref()) == Some(FsExit::Host),
-            backup,
-        };
-        match kind {
+        let mut cfg = node_cfg(m, raw, i)?;
+        let address = cfg.address;
+        match cfg.kind {
             Kind::Sensor => {
-                claim(
-                    address,
-                    &rn.address,
-                    i,
-                    format!("node[{i}].address"),
-                    &mut writer,
-                )?;
+                let field = format!("node[{i}].address");
+                claim(m, raw, &mut writer, (address, &rn.address, field), i)?;
                 kinds.insert(address, SlotKind::Sensor);
             }
             Kind::Actuator => {
@@ -942,15 +932,15 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 actuator_of.insert(address, i);
             }
             Kind::Master | Kind::SpecialMaster => {
-                let Some(list) = &rn.slots else {
+                if rn.slots.is_none() {
                     return Err(m.at(
                         &rn.kind,
                         format!("node[{i}].slots is missing: a master lists the slots its host writes (at least its address {address})"),
                     ));
-                };
+                }
                 for s in slot_list(&rn.slots) {
-                    let v = check_slot(s, format!("node[{i}].slots"))?;
-                    claim(v, s, i, format!("node[{i}].slots"), &mut writer)?;
+                    let v = check_slot(m, s, format!("node[{i}].slots"))?;
+                    claim(m, raw, &mut writer, (v, s, format!("node[{i}].slots")), i)?;
                     kinds.insert(v, SlotKind::Local);
                     cfg.slots.push(v);
                 }
@@ -960,9 +950,8 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                         format!("node[{i}].address = {address} is not one of node[{i}].slots: a master's alarms go in a slot it writes"),
                     ));
                 }
-                let _ = list;
                 for s in slot_list(&rn.serves) {
-                    let v = check_slot(s, format!("node[{i}].serves"))?;
+                    let v = check_slot(m, s, format!("node[{i}].serves"))?;
                     cfg.serves.push(v);
                 }
             }
@@ -979,7 +968,7 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                     format!("node[{i}].serves = {v}: no actuator has address {v}"),
                 ));
             };
-            claim(v, s, i, format!("node[{i}].serves"), &mut writer)?;
+            claim(m, raw, &mut writer, (v, s, format!("node[{i}].serves")), i)?;
             kinds.insert(v, SlotKind::Act { actuator: act });
         }
     }
@@ -1001,8 +990,129 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             ),
         ));
     }
-    let ext = raw.frame.alarm_bits;
-    let critical = critical_slots(&m, raw, slots)?;
+    Ok(Ownership {
+        nodes,
+        writer: (0..slots).map(|s| writer[&s]).collect(),
+        slot_kind: (0..slots).map(|s| kinds[&s]).collect(),
+    })
+}
+
+/// Node `i`'s own settings (address, clock offset, the fields only masters
+/// have, backup priority, failsafe exit), its slot lists still empty.
+fn node_cfg(m: &SourceMap, raw: &RawScenario, i: usize) -> Result<NodeCfg, ScenarioError> {
+    let rn = &raw.node[i];
+    let kind = *rn.kind.get_ref();
+    let address = check_slot(m, &rn.address, format!("node[{i}].address"))?;
+    let ppm = rn.ppm.as_ref().map(|p| *p.get_ref()).unwrap_or(0.0);
+    if let Some(p) = &rn.ppm {
+        if !ppm.is_finite() || ppm.abs() > MAX_PPM {
+            return Err(m.at(
+                p,
+                format!("node[{i}].ppm = {ppm} is out of range: clock offsets are within ±{MAX_PPM} ppm"),
+            ));
+        }
+    }
+    if !kind.is_master() {
+        for (f, v) in [("slots", &rn.slots), ("serves", &rn.serves)] {
+            if let Some(v) = v {
+                return Err(m.at(
+                    v,
+                    format!(
+                        "node[{i}].{f}: a {} owns exactly its address slot; `{f}` is for masters",
+                        kind.name()
+                    ),
+                ));
+            }
+        }
+        if rn.alive_check.is_some() {
+            return Err(m.error(
+                Some(rn.kind.span().start),
+                format!("node[{i}].alive_check: only masters check Alive bits"),
+            ));
+        }
+    }
+    let backup = match &rn.backup {
+        None => None,
+        Some(b) => Some(check_backup(m, raw, i, b)?),
+    };
+    if let Some(x) = &rn.fs_exit {
+        if kind != Kind::SpecialMaster && backup.is_none() {
+            return Err(m.at(
+                x,
+                format!(
+                    "node[{i}].fs_exit: a {} does not decide when the ring leaves failsafe; only the special master (or a backup, once it is the clock base) does",
+                    kind.name()
+                ),
+            ));
+        }
+    }
+    Ok(NodeCfg {
+        kind,
+        address,
+        slots: vec![],
+        serves: vec![],
+        ppm,
+        alive_check: rn.alive_check.unwrap_or(true),
+        fs_exit_host: rn.fs_exit.as_ref().map(|x| *x.get_ref()) == Some(FsExit::Host),
+        backup,
+    })
+}
+
+/// Node `i`'s backup priority `b`: only masters, 1..[`MAX_BACKUP`], each
+/// priority once.
+fn check_backup(
+    m: &SourceMap,
+    raw: &RawScenario,
+    i: usize,
+    b: &Spanned<u32>,
+) -> Result<u8, ScenarioError> {
+    let kind = *raw.node[i].kind.get_ref();
+    if kind != Kind::Master {
+        return Err(m.at(
+            b,
+            format!(
+                "node[{i}].backup = {}: only a master can be a backup clock base (this node is a {}){}",
+                b.get_ref(),
+                kind.name(),
+                if kind == Kind::SpecialMaster {
+                    ", and the special master is the clock base already"
+                } else {
+                    ""
+                }
+            ),
+        ));
+    }
+    let p = *b.get_ref();
+    if !(1..=MAX_BACKUP).contains(&p) {
+        return Err(m.at(
+            b,
+            format!("node[{i}].backup = {p} is out of range: priorities are 1..{MAX_BACKUP} (1 takes over first)"),
+        ));
+    }
+    if let Some(other) = (0..i).find(|&o| {
+        raw.node[o].backup.as_ref().map(|x| *x.get_ref()) == Some(p)
+            && raw.node[o].kind.get_ref() == &Kind::Master
+    }) {
+        return Err(m.at(
+            b,
+            format!("node[{i}].backup = {p}: node[{other}] already has priority {p}; backup priorities are distinct"),
+        ));
+    }
+    Ok(p as u8)
+}
+
+/// The frame's timing: the cycle period (room for the frame, the wrapped
+/// ring and, with critical slots, one retransmission request; countable
+/// by the nodes, the backups' CS timeout included) and the line rate.
+fn check_timing(
+    m: &SourceMap,
+    raw: &RawScenario,
+    nodes: &[NodeCfg],
+    slots: usize,
+    ext: bool,
+    critical: &[bool],
+) -> Result<(u32, f64), ScenarioError> {
+    let n = nodes.len();
     let min = min_period(slots, n, ext);
     // With critical slots, room for one request in the healthy ring.
     let rtx_min = critical
@@ -1081,148 +1191,246 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
             v
         }
     };
-    let writer_v: Vec<usize> = (0..slots).map(|s| writer[&s]).collect();
-    let slot_kind: Vec<SlotKind> = (0..slots).map(|s| kinds[&s]).collect();
-    let sm = sms[0];
-    let check_cycle = |c: &Spanned<u32>, field: String| -> Result<u32, ScenarioError> {
+    Ok((period, line_rate_mbps))
+}
+
+/// The checks of a cycle, a data word or a node number in the stimulus and
+/// the faults.
+struct Fields<'a> {
+    m: &'a SourceMap<'a>,
+    n: usize,
+    cycles: u32,
+    slots: usize,
+}
+
+impl Fields<'_> {
+    fn cycle(&self, c: &Spanned<u32>, field: String) -> Result<u32, ScenarioError> {
         let v = *c.get_ref();
-        if v >= cycles {
-            Err(m.at(
+        if v >= self.cycles {
+            Err(self.m.at(
                 c,
-                format!("{field} = {v} is past the end of the run (cycles = {cycles})"),
+                format!(
+                    "{field} = {v} is past the end of the run (cycles = {})",
+                    self.cycles
+                ),
             ))
         } else {
             Ok(v)
         }
-    };
-    let check_data = |d: &Spanned<u32>, field: String| -> Result<u16, ScenarioError> {
+    }
+
+    fn data(&self, d: &Spanned<u32>, field: String) -> Result<u16, ScenarioError> {
         let v = *d.get_ref();
-        u16::try_from(v).map_err(|_| m.at(d, format!("{field} = {v} does not fit in 16 bits")))
-    };
-    let check_node = |d: &Spanned<u32>, field: String| -> Result<usize, ScenarioError> {
+        u16::try_from(v).map_err(|_| {
+            self.m
+                .at(d, format!("{field} = {v} does not fit in 16 bits"))
+        })
+    }
+
+    fn node(&self, d: &Spanned<u32>, field: String) -> Result<usize, ScenarioError> {
         let v = *d.get_ref() as usize;
-        if v >= n {
-            Err(m.at(d, format!("{field} = {v}: the ring has nodes 0..{}", n - 1)))
+        if v >= self.n {
+            Err(self.m.at(
+                d,
+                format!("{field} = {v}: the ring has nodes 0..{}", self.n - 1),
+            ))
         } else {
             Ok(v)
         }
-    };
+    }
+}
+
+/// The scenario's stimulus, checked.
+struct Stimulus {
+    values: BTreeMap<usize, BTreeMap<u32, u16>>,
+    host_writes: Vec<(u32, usize, usize, u16)>,
+    irqs: Vec<(u32, usize, IrqLine)>,
+    fs_clears: Vec<u32>,
+}
+
+/// Sensor values, host writes (only a master's, only to slots it writes),
+/// user requests and failsafe clear commands.
+fn check_stimulus(
+    at: &Fields,
+    raw: &RawScenario,
+    own: &Ownership,
+) -> Result<Stimulus, ScenarioError> {
+    let m = at.m;
     let mut values: BTreeMap<usize, BTreeMap<u32, u16>> = BTreeMap::new();
     for (j, v) in raw.stimulus.value.iter().enumerate() {
-        let c = check_cycle(&v.cycle, format!("stimulus.value[{j}].cycle"))?;
+        let c = at.cycle(&v.cycle, format!("stimulus.value[{j}].cycle"))?;
         let s = *v.slot.get_ref() as usize;
-        if s >= slots || slot_kind[s] != SlotKind::Sensor {
+        if s >= at.slots || own.slot_kind[s] != SlotKind::Sensor {
             return Err(m.at(
                 &v.slot,
                 format!("stimulus.value[{j}].slot = {s} is not a sensor slot"),
             ));
         }
-        let d = check_data(&v.data, format!("stimulus.value[{j}].data"))?;
+        let d = at.data(&v.data, format!("stimulus.value[{j}].data"))?;
         values.entry(s).or_default().insert(c, d);
     }
     let mut host_writes = vec![];
     for (j, w) in raw.host_write.iter().enumerate() {
-        let c = check_cycle(&w.cycle, format!("host_write[{j}].cycle"))?;
-        let nd = check_node(&w.node, format!("host_write[{j}].node"))?;
-        if !nodes[nd].kind.is_master() {
+        let c = at.cycle(&w.cycle, format!("host_write[{j}].cycle"))?;
+        let nd = at.node(&w.node, format!("host_write[{j}].node"))?;
+        if !own.nodes[nd].kind.is_master() {
             return Err(m.at(
                 &w.node,
                 format!(
                     "host_write[{j}].node = {nd} is a {}, only masters have a host",
-                    nodes[nd].kind.name()
+                    own.nodes[nd].kind.name()
                 ),
             ));
         }
         let s = *w.slot.get_ref() as usize;
-        if s >= slots || writer_v[s] != nd {
+        if s >= at.slots || own.writer[s] != nd {
             return Err(m.at(
                 &w.slot,
                 format!("host_write[{j}].slot = {s} is not written by node[{nd}]; a host writes only its LOCAL and served actuator slots"),
             ));
         }
-        let d = check_data(&w.data, format!("host_write[{j}].data"))?;
+        let d = at.data(&w.data, format!("host_write[{j}].data"))?;
         host_writes.push((c, nd, s, d));
     }
     let mut irqs = vec![];
     for (j, q) in raw.irq.iter().enumerate() {
-        let c = check_cycle(&q.cycle, format!("irq[{j}].cycle"))?;
-        let nd = check_node(&q.node, format!("irq[{j}].node"))?;
+        let c = at.cycle(&q.cycle, format!("irq[{j}].cycle"))?;
+        let nd = at.node(&q.node, format!("irq[{j}].node"))?;
         irqs.push((c, nd, *q.line.get_ref()));
     }
     let mut fs_clears = vec![];
     for (j, q) in raw.fs_clear.iter().enumerate() {
-        fs_clears.push(check_cycle(&q.cycle, format!("fs_clear[{j}].cycle"))?);
+        fs_clears.push(at.cycle(&q.cycle, format!("fs_clear[{j}].cycle"))?);
     }
-    let rtx_words = critical
-        .iter()
-        .rposition(|&c| c)
-        .map_or(0, |c| 2 * rtx_capacity(period, slots, n, ext, c, false));
-    let mut faults = vec![];
-    for (j, f) in raw.fault.iter().enumerate() {
-        let c = check_cycle(&f.cycle, format!("fault[{j}].cycle"))?;
-        let kind = *f.kind.get_ref();
-        let kname = match kind {
+    Ok(Stimulus {
+        values,
+        host_writes,
+        irqs,
+        fs_clears,
+    })
+}
+
+/// One `[[fault]]` entry (`fault[j]`) and what its check needs.
+struct FaultCtx<'a> {
+    at: &'a Fields<'a>,
+    f: &'a RawFault,
+    j: usize,
+    /// The special master.
+    sm: usize,
+    nodes: &'a [NodeCfg],
+    ext: bool,
+    /// Words a retransmission packet can carry (0 without critical slots).
+    rtx_words: usize,
+    seed: u64,
+}
+
+impl FaultCtx<'_> {
+    fn kind_name(&self) -> &'static str {
+        match *self.f.kind.get_ref() {
             FaultKind::Break => "break",
             FaultKind::Repair => "repair",
             FaultKind::Kill => "kill",
             FaultKind::Restart => "restart",
             FaultKind::Flip => "flip",
             FaultKind::Burst => "burst",
-        };
-        let need = |present: bool, field: &str| -> Result<(), ScenarioError> {
-            if present {
-                Ok(())
-            } else {
-                Err(m.at(
-                    &f.kind,
-                    format!("fault[{j}].{field} is missing: kind = \"{kname}\" needs it"),
-                ))
-            }
-        };
-        let forbid = |present: Option<usize>, field: &str| -> Result<(), ScenarioError> {
-            match present {
-                None => Ok(()),
-                Some(at) => Err(m.error(
-                    Some(at),
-                    format!("fault[{j}].{field} has no meaning for kind = \"{kname}\""),
-                )),
-            }
-        };
+        }
+    }
+
+    /// `field` must be there for this kind.
+    fn need(&self, present: bool, field: &str) -> Result<(), ScenarioError> {
+        if present {
+            Ok(())
+        } else {
+            Err(self.at.m.at(
+                &self.f.kind,
+                format!(
+                    "fault[{}].{field} is missing: kind = \"{}\" needs it",
+                    self.j,
+                    self.kind_name()
+                ),
+            ))
+        }
+    }
+
+    /// `field` (where it starts, if present) means nothing for this kind.
+    fn forbid(&self, present: Option<usize>, field: &str) -> Result<(), ScenarioError> {
+        match present {
+            None => Ok(()),
+            Some(at) => Err(self.at.m.error(
+                Some(at),
+                format!(
+                    "fault[{}].{field} has no meaning for kind = \"{}\"",
+                    self.j,
+                    self.kind_name()
+                ),
+            )),
+        }
+    }
+
+    /// Forbids each of the fields named (`node`, `fibre`, `word`, `slot`,
+    /// `bit`, `length`, `pattern`).
+    fn forbid_all(&self, fields: &[&str]) -> Result<(), ScenarioError> {
+        let f = self.f;
         let span = |o: &Option<Spanned<String>>| o.as_ref().map(|s| s.span().start);
         let spanu = |o: &Option<Spanned<u32>>| o.as_ref().map(|s| s.span().start);
-        let fibre = |j: usize| -> Result<Fibre, ScenarioError> {
-            let fs = f.fibre.as_ref().expect("checked by need");
-            Fibre::parse(fs.get_ref(), n).map_err(|e| m.at(fs, format!("fault[{j}].{e}")))
-        };
-        let slot_at = |o: &Option<Spanned<u32>>| -> Result<Option<usize>, ScenarioError> {
-            match o {
-                None => Ok(None),
-                Some(s) => {
-                    let v = *s.get_ref() as usize;
-                    if v >= slots {
-                        Err(m.at(
-                            s,
-                            format!(
-                                "fault[{j}].slot = {v}: the frame has slots 0..{}",
-                                slots - 1
-                            ),
-                        ))
-                    } else {
-                        Ok(Some(v))
-                    }
+        for &name in fields {
+            let at = match name {
+                "node" => spanu(&f.node),
+                "fibre" => span(&f.fibre),
+                "word" => span(&f.word),
+                "slot" => spanu(&f.slot),
+                "bit" => spanu(&f.bit),
+                "length" => spanu(&f.length),
+                "pattern" => spanu(&f.pattern),
+                _ => unreachable!("a fault field"),
+            };
+            self.forbid(at, name)?;
+        }
+        Ok(())
+    }
+
+    fn fibre(&self) -> Result<Fibre, ScenarioError> {
+        let fs = self.f.fibre.as_ref().expect("checked by need");
+        Fibre::parse(fs.get_ref(), self.at.n)
+            .map_err(|e| self.at.m.at(fs, format!("fault[{}].{e}", self.j)))
+    }
+
+    fn slot(&self) -> Result<Option<usize>, ScenarioError> {
+        match &self.f.slot {
+            None => Ok(None),
+            Some(s) => {
+                let v = *s.get_ref() as usize;
+                if v >= self.at.slots {
+                    Err(self.at.m.at(
+                        s,
+                        format!(
+                            "fault[{}].slot = {v}: the frame has slots 0..{}",
+                            self.j,
+                            self.at.slots - 1
+                        ),
+                    ))
+                } else {
+                    Ok(Some(v))
                 }
             }
-        };
-        let fault = match kind {
+        }
+    }
+
+    fn node(&self) -> Result<(usize, &Spanned<u32>), ScenarioError> {
+        let ns = self.f.node.as_ref().expect("checked by need");
+        Ok((self.at.node(ns, format!("fault[{}].node", self.j))?, ns))
+    }
+
+    /// The fault of cycle `c`, after the faults before it (`earlier`).
+    fn check(&self, c: u32, earlier: &[(u32, Fault)]) -> Result<Fault, ScenarioError> {
+        let (f, j, m) = (self.f, self.j, self.at.m);
+        let kind = *f.kind.get_ref();
+        Ok(match kind {
             FaultKind::Break | FaultKind::Repair => {
-                need(f.fibre.is_some(), "fibre")?;
-                forbid(spanu(&f.node), "node")?;
-                forbid(span(&f.word), "word")?;
-                forbid(spanu(&f.bit), "bit")?;
-                forbid(spanu(&f.length), "length")?;
-                forbid(spanu(&f.pattern), "pattern")?;
-                let fibre = fibre(j)?;
-                let slot = slot_at(&f.slot)?;
+                self.need(f.fibre.is_some(), "fibre")?;
+                self.forbid_all(&["node", "word", "bit", "length", "pattern"])?;
+                let fibre = self.fibre()?;
+                let slot = self.slot()?;
                 if kind == FaultKind::Break {
                     Fault::Break { fibre, slot }
                 } else {
@@ -1230,15 +1438,10 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 }
             }
             FaultKind::Kill => {
-                need(f.node.is_some(), "node")?;
-                forbid(span(&f.fibre), "fibre")?;
-                forbid(span(&f.word), "word")?;
-                forbid(spanu(&f.bit), "bit")?;
-                forbid(spanu(&f.length), "length")?;
-                forbid(spanu(&f.pattern), "pattern")?;
-                let ns = f.node.as_ref().expect("checked");
-                let node = check_node(ns, format!("fault[{j}].node"))?;
-                if node == sm && nodes.iter().all(|x: &NodeCfg| x.backup.is_none()) {
+                self.need(f.node.is_some(), "node")?;
+                self.forbid_all(&["fibre", "word", "bit", "length", "pattern"])?;
+                let (node, ns) = self.node()?;
+                if node == self.sm && self.nodes.iter().all(|x| x.backup.is_none()) {
                     return Err(m.at(
                         ns,
                         format!("fault[{j}].node = {node} is the special master, and no master is a backup clock base: its death would stop the ring (give a master `backup = 1`, protocol §8)"),
@@ -1246,33 +1449,14 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 }
                 Fault::Kill {
                     node,
-                    slot: slot_at(&f.slot)?,
+                    slot: self.slot()?,
                 }
             }
             FaultKind::Restart => {
-                need(f.node.is_some(), "node")?;
-                forbid(span(&f.fibre), "fibre")?;
-                forbid(span(&f.word), "word")?;
-                forbid(spanu(&f.slot), "slot")?;
-                forbid(spanu(&f.bit), "bit")?;
-                forbid(spanu(&f.length), "length")?;
-                forbid(spanu(&f.pattern), "pattern")?;
-                let ns = f.node.as_ref().expect("checked");
-                let node = check_node(ns, format!("fault[{j}].node"))?;
-                // Dead at this cycle: killed in an earlier cycle, not
-                // restarted since (faults in file order; kills and restarts
-                // of one node alternate in time).
-                let mut life: Vec<(u32, bool)> = faults
-                    .iter()
-                    .filter_map(|(fc, x): &(u32, Fault)| match *x {
-                        Fault::Kill { node: y, .. } if y == node => Some((*fc, false)),
-                        Fault::Restart { node: y } if y == node => Some((*fc, true)),
-                        _ => None,
-                    })
-                    .collect();
-                life.sort();
-                let dead = life.iter().rev().find(|x| x.0 < c).is_some_and(|x| !x.1);
-                if !dead {
+                self.need(f.node.is_some(), "node")?;
+                self.forbid_all(&["fibre", "word", "slot", "bit", "length", "pattern"])?;
+                let (node, ns) = self.node()?;
+                if !dead_before(earlier, node, c) {
                     return Err(m.at(
                         ns,
                         format!(
@@ -1283,69 +1467,68 @@ pub fn validate(file: &str, text: &str, raw: &RawScenario) -> Result<Config, Sce
                 Fault::Restart { node }
             }
             FaultKind::Burst => {
-                need(f.fibre.is_some(), "fibre")?;
-                need(f.bit.is_some(), "bit")?;
-                need(f.length.is_some(), "length")?;
-                forbid(spanu(&f.node), "node")?;
-                let fibre = fibre(j)?;
-                burst(&m, f, j, fibre, slots, ext, raw.seed)?
+                self.need(f.fibre.is_some(), "fibre")?;
+                self.need(f.bit.is_some(), "bit")?;
+                self.need(f.length.is_some(), "length")?;
+                self.forbid_all(&["node"])?;
+                let fibre = self.fibre()?;
+                burst(m, f, j, fibre, self.at.slots, self.ext, self.seed)?
             }
             FaultKind::Flip => {
-                need(f.fibre.is_some(), "fibre")?;
-                need(f.bit.is_some(), "bit")?;
-                forbid(spanu(&f.node), "node")?;
-                forbid(spanu(&f.length), "length")?;
-                forbid(spanu(&f.pattern), "pattern")?;
-                let fibre = fibre(j)?;
-                let target = fault_target(&m, f, j, slots, "flip", rtx_words)?;
-                let b = f.bit.as_ref().expect("checked");
-                let (max, what) = match target {
-                    FlipTarget::Cs => (JK_BITS, "start delimiter"),
-                    FlipTarget::RtxHead => (
-                        JK_BITS + 2 * word_bits(ext),
-                        "retransmission packet's head (J K, H0, H1)",
-                    ),
-                    _ => (word_bits(ext), "word"),
-                };
-                if *b.get_ref() >= max {
-                    return Err(m.at(
-                        b,
-                        format!(
-                            "fault[{j}].bit = {}: a {what} has line bits 0..{}",
-                            b.get_ref(),
-                            max - 1
-                        ),
-                    ));
-                }
-                Fault::Flip {
-                    fibre,
-                    target,
-                    bit: *b.get_ref(),
-                }
+                self.need(f.fibre.is_some(), "fibre")?;
+                self.need(f.bit.is_some(), "bit")?;
+                self.forbid_all(&["node", "length", "pattern"])?;
+                let fibre = self.fibre()?;
+                self.flip(fibre)?
             }
-        };
-        faults.push((c, fault));
+        })
     }
-    Ok(Config {
-        name: raw.name.clone().unwrap_or_else(|| file.to_string()),
-        seed: raw.seed,
-        cycles,
-        ext,
-        period,
-        line_rate_mbps,
-        nodes,
-        slots,
-        writer: writer_v,
-        slot_kind,
-        sm,
-        generator: raw.stimulus.generator,
-        values,
-        host_writes,
-        irqs,
-        fs_clears,
-        faults,
-        critical,
-    })
+
+    /// A flip on `fibre`: its target word and a line bit inside it.
+    fn flip(&self, fibre: Fibre) -> Result<Fault, ScenarioError> {
+        let (f, j, ext) = (self.f, self.j, self.ext);
+        let target = fault_target(self.at.m, f, j, self.at.slots, "flip", self.rtx_words)?;
+        let b = f.bit.as_ref().expect("checked");
+        let (max, what) = match target {
+            FlipTarget::Cs => (JK_BITS, "start delimiter"),
+            FlipTarget::RtxHead => (
+                JK_BITS + 2 * word_bits(ext),
+                "retransmission packet's head (J K, H0, H1)",
+            ),
+            _ => (word_bits(ext), "word"),
+        };
+        if *b.get_ref() >= max {
+            return Err(self.at.m.at(
+                b,
+                format!(
+                    "fault[{j}].bit = {}: a {what} has line bits 0..{}",
+                    b.get_ref(),
+                    max - 1
+                ),
+            ));
+        }
+        Ok(Fault::Flip {
+            fibre,
+            target,
+            bit: *b.get_ref(),
+        })
+    }
+}
+
+/// Whether `node` is dead at cycle `c` after the `earlier` faults: killed
+/// in an earlier cycle, not restarted since (faults in file order; kills
+/// and restarts of one node alternate in time).
+fn dead_before(earlier: &[(u32, Fault)], node: usize, c: u32) -> bool {
+    let mut life: Vec<(u32, bool)> = earlier
+        .iter()
+        .filter_map(|(fc, x)| match *x {
+            Fault::Kill { node: y, .. } if y == node => Some((*fc, false)),
+            Fault::Restart { node: y } if y == node => Some((*fc, true)),
+            _ => None,
+        })
+        .collect();
+    life.sort();
+    life.iter().rev().find(|x| x.0 < c).is_some_and(|x| !x.1)
 }
 
 /// `[frame] critical`: slots of the frame, each once (protocol §8).

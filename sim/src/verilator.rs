@@ -3,12 +3,12 @@
 //!
 //! `Model::build(verilog, top)` verilates the Verilog, compiles it with a
 //! generated `extern "C"` wrapper into a shared library, caches the library
-//! under `target/verilator-cache/<hash>/` (hash of the Verilog, the wrapper,
+//! under [`cache_root`]`/<hash>/` (hash of the Verilog, the wrapper,
 //! the Verilator version and the flags), and loads it with `libloading`.
 //! One build serves every test and scenario that uses the same Verilog:
 //! node addresses, slot configuration and fault points are ports. What
 //! every build shares (Verilator's runtime objects and a precompiled
-//! `verilated.h`) is built once into `target/verilator-cache/support-<hash>/`.
+//! `verilated.h`) is built once into [`cache_root`]`/support-<hash>/`.
 //!
 //! Ports up to 64 bits wide are supported; wider ones are refused at build.
 
@@ -174,11 +174,25 @@ fn build_gate(hash: &str) -> Arc<Mutex<()>> {
     gates.entry(hash.to_string()).or_default().clone()
 }
 
-fn cache_root() -> PathBuf {
-    if let Ok(d) = std::env::var("MERKUR_VERILATOR_CACHE") {
-        return PathBuf::from(d);
+/// Where the built models live: `$MERKUR_VERILATOR_CACHE` (which
+/// `merkur --cache-dir` and `./run` set), else the user's cache directory,
+/// `$XDG_CACHE_HOME/merkur/verilator` or `$HOME/.cache/merkur/verilator`,
+/// else the temporary directory. Never the checkout: an installed `merkur`
+/// runs from any folder.
+pub fn cache_root() -> PathBuf {
+    let env = |k: &str| {
+        std::env::var_os(k)
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from)
+    };
+    if let Some(d) = env("MERKUR_VERILATOR_CACHE") {
+        return d;
     }
-    crate::repo_root().join("target/verilator-cache")
+    match (env("XDG_CACHE_HOME"), env("HOME")) {
+        (Some(x), _) => x.join("merkur/verilator"),
+        (None, Some(h)) => h.join(".cache/merkur/verilator"),
+        (None, None) => std::env::temp_dir().join("merkur-verilator-cache"),
+    }
 }
 
 /// g++ flags of the Verilated model's objects (part of the cache key).

@@ -222,6 +222,8 @@ pub struct Chain8 {
 }
 
 impl Logic for Chain8 {
+    // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
+    // the block's Verilog and cannot call helper methods.
     #[hdl_gen]
     fn update(&mut self) {
         self.n0.clock.next = self.clock.val();

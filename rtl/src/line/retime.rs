@@ -205,6 +205,8 @@ impl Default for Retime {
 }
 
 impl Logic for Retime {
+    // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
+    // the block's Verilog and cannot call helper methods.
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, sr, cnt, rem, lvl, run, dark, since, hi, lo, gap, pair, slip);

@@ -250,6 +250,8 @@ impl RxWord {
 }
 
 impl Logic for RxWord {
+    // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
+    // the block's Verilog and cannot call helper methods.
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(

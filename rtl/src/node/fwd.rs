@@ -368,6 +368,8 @@ impl Fwd {
 }
 
 impl Logic for Fwd {
+    // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
+    // the block's Verilog and cannot call helper methods.
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(

@@ -352,6 +352,8 @@ pub struct Mdb {
 }
 
 impl Logic for Mdb {
+    // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
+    // the block's Verilog and cannot call helper methods.
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(

@@ -254,6 +254,8 @@ impl Slave {
 }
 
 impl Logic for Slave {
+    // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
+    // the block's Verilog and cannot call helper methods.
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(

@@ -385,6 +385,8 @@ pub struct SpecialMaster {
 }
 
 impl Default for SpecialMaster {
+    // One long field list: every signal and child block of the struct
+    // above, each at its power-up value.
     fn default() -> Self {
         Self {
             clock: Default::default(),
