@@ -951,14 +951,46 @@ fn returned(cfg: &Config, recs: &[CycleRecord], c: usize) -> Vec<bool> {
     }
 }
 
+/// Runs one case through the model (and, unless `model_only`, the RTL)
+/// and measures it against the same ring without faults.
 fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     let cfg = &case.cfg;
     let recs = ring::run(cfg);
+    let clean = ring::run(&clean_config(cfg, &recs));
+    let mut res = model_result(case, &recs, &clean, model_only);
+    if model_only {
+        return res;
+    }
+    if let Some(why) = ring_sim::unsupported(cfg) {
+        res.mismatches = 1;
+        res.first = vec![format!("not simulated in RTL: {why}")];
+        return res;
+    }
+    let opts = Options {
+        seed: case.seed,
+        wave: wave.map(Path::to_path_buf),
+        ..Default::default()
+    };
+    match ring_sim::run(cfg, &recs, &opts) {
+        Ok(rep) => {
+            rtl_result(&mut res, cfg, &recs, &clean, &rep);
+            fault_timing(&mut res, cfg, &recs, &rep);
+        }
+        Err(e) => {
+            res.mismatches = 1;
+            res.first = vec![format!("error: {e}")];
+        }
+    }
+    res
+}
+
+/// The case's ring without faults, the reference of what it should
+/// deliver. After a takeover, a fault-free ring with the new clock base
+/// (protocol §8, "Memories after the takeover": the retransmission point
+/// moved with it).
+fn clean_config(cfg: &Config, recs: &[CycleRecord]) -> Config {
     let mut clean_cfg = cfg.clone();
     clean_cfg.faults.clear();
-    // After a takeover, what the ring should deliver is what a fault-free
-    // ring with the new clock base delivers (protocol §8, "Memories after
-    // the takeover": the retransmission point moved with it).
     if let Some(e) = recs
         .iter()
         .flat_map(|x| &x.events)
@@ -966,13 +998,29 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     {
         clean_cfg.sm = e.node;
     }
-    let clean = ring::run(&clean_cfg);
-    let structural: Vec<(u32, Fault)> = cfg
-        .faults
+    clean_cfg
+}
+
+/// The structural faults of a case (breaks, repairs, deaths, restarts:
+/// not the flips and bursts), in order.
+fn structural_faults(cfg: &Config) -> Vec<(u32, Fault)> {
+    cfg.faults
         .iter()
         .copied()
         .filter(|(_, f)| !matches!(f, Fault::Flip { .. } | Fault::Burst { .. }))
-        .collect();
+        .collect()
+}
+
+/// The model's side of a case's result: failsafe, words and cycles lost
+/// against the clean ring `clean`, cycles to recover.
+fn model_result(
+    case: &Case,
+    recs: &[CycleRecord],
+    clean: &[CycleRecord],
+    model_only: bool,
+) -> CaseResult {
+    let cfg = &case.cfg;
+    let structural = structural_faults(cfg);
     let dead = cfg.killed();
     let last = recs.last().expect("cycles > 0");
     let failsafe = last
@@ -983,15 +1031,15 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     let mut words_lost = 0;
     let mut cycles_lost = 0;
     for c in 0..recs.len() {
-        let (a, b) = (returned(cfg, &recs, c), returned(cfg, &clean, c));
+        let (a, b) = (returned(cfg, recs, c), returned(cfg, clean, c));
         words_lost += a.iter().zip(&b).filter(|(x, y)| **y && !**x).count() as u64;
-        if returned_whole(cfg, &clean, c) && !returned_whole(cfg, &recs, c) {
+        if returned_whole(cfg, clean, c) && !returned_whole(cfg, recs, c) {
             cycles_lost += 1;
         }
     }
     let first_fault = cfg.faults.iter().map(|&(c, _)| c).min();
     let mut from = None;
-    for (x, y) in recs.iter().zip(&clean) {
+    for (x, y) in recs.iter().zip(clean) {
         if ring::delivered(cfg, x) == ring::delivered(cfg, y) {
             from.get_or_insert(x.cycle);
         } else {
@@ -1014,7 +1062,7 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
         .iter()
         .filter(|(_, f)| matches!(f, Fault::Flip { .. }))
         .count() as u32;
-    let mut res = CaseResult {
+    CaseResult {
         name: case.name.clone(),
         ring: case.ring.clone(),
         nodes: cfg.nodes.len(),
@@ -1047,31 +1095,22 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
         flips,
         accepted: 0,
         wall_s: 0.0,
-    };
-    if model_only {
-        return res;
     }
-    if let Some(why) = ring_sim::unsupported(cfg) {
-        res.mismatches = 1;
-        res.first = vec![format!("not simulated in RTL: {why}")];
-        return res;
-    }
-    let opts = Options {
-        seed: case.seed,
-        wave: wave.map(Path::to_path_buf),
-        ..Default::default()
-    };
-    let rep = match ring_sim::run(cfg, &recs, &opts) {
-        Ok(r) => r,
-        Err(e) => {
-            res.mismatches = 1;
-            res.first = vec![format!("error: {e}")];
-            return res;
-        }
-    };
+}
+
+/// The RTL run's side: its mismatches, the cycles whose frame did not
+/// come back whole, and every flipped word the RTL took as good where the
+/// model says bad.
+fn rtl_result(
+    res: &mut CaseResult,
+    cfg: &Config,
+    recs: &[CycleRecord],
+    clean: &[CycleRecord],
+    rep: &ring_sim::Report,
+) {
     res.wall_s = rep.wall.as_secs_f64();
     res.rtl_cycles_lost = (0..recs.len())
-        .filter(|&c| returned_whole(cfg, &clean, c) && !rep.returned_whole[c])
+        .filter(|&c| returned_whole(cfg, clean, c) && !rep.returned_whole[c])
         .count() as u32;
     res.words = rep.words;
     res.mismatches = rep.mismatches.len();
@@ -1081,7 +1120,6 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
         .take(5)
         .map(|m| m.to_string())
         .collect();
-    // A flipped word the RTL took as good where the model says bad.
     for (c, f) in &cfg.faults {
         if let Fault::Flip { fibre, target, .. } = f {
             let what = match target {
@@ -1097,6 +1135,16 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
                 .count() as u32;
         }
     }
+}
+
+/// The RTL's timing of the faults, in bit times: from the first
+/// structural fault to the first and the last switchbox change it caused
+/// (detection, switchover), from the clock base's death to the elected
+/// backup's first frame (takeover), from the last structural fault to the
+/// last live node in failsafe.
+fn fault_timing(res: &mut CaseResult, cfg: &Config, recs: &[CycleRecord], rep: &ring_sim::Report) {
+    let structural = structural_faults(cfg);
+    let dead = cfg.killed();
     let bits = |t: u64| t as f64 / TICKS_PER_BIT as f64;
     if let Some(Some(t0)) = structural
         .first()
@@ -1134,7 +1182,7 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
     if let (Some(t), Some(Some(t0))) = (takeover, death.map(|i| rep.fault_ticks[i])) {
         res.takeover_bits = rep.starts.get(t).map(|&s| bits(s.saturating_sub(t0)));
     }
-    if failsafe {
+    if res.failsafe {
         if let Some(Some(tl)) = cfg
             .faults
             .iter()
@@ -1154,7 +1202,6 @@ fn run_case(case: &Case, wave: Option<&Path>, model_only: bool) -> CaseResult {
             }
         }
     }
-    res
 }
 
 /// Parses `K/N` (1 ≤ K ≤ N).
@@ -1276,9 +1323,6 @@ pub fn export(plan: &Plan) -> Result<(), String> {
 
 /// Runs the campaign; returns the report.
 pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
-    if plan.wave.is_some() && plan.case.is_none() {
-        return Err("error: --wave needs --case: a waveform is written for one case".into());
-    }
     let cases = all_cases(plan)?;
     let total = cases.len();
     let (k, n) = plan.shard;

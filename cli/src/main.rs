@@ -19,7 +19,10 @@ mod synth;
     name = "merkur",
     version,
     about = "MERKUR fault-tolerant ring fieldbus: scenarios, golden traces, demo",
-    long_about = "MERKUR fault-tolerant ring fieldbus.\n\nScenario files are TOML (docs/scenarios.md); the protocol is docs/protocol.md."
+    long_about = "MERKUR fault-tolerant ring fieldbus.\n\nScenario files are TOML (docs/scenarios.md); the protocol is docs/protocol.md.",
+    after_long_help = "Exit status: 0 success (RTL and model agree, timing met); 1 a run that worked and found \
+a disagreement, an accepted bit error or a missed timing; 2 bad input (scenario, argument, target, a \
+configuration the device cannot hold) or a tool that cannot run."
 )]
 struct Cli {
     /// Folder of the built Verilator models (default: $MERKUR_VERILATOR_CACHE, else
@@ -134,17 +137,21 @@ enum Cmd {
         #[arg(long, value_name = "NAME")]
         case: Option<String>,
         /// With --case: write the case's RTL run as an FST waveform (GTKWave save file beside it).
-        #[arg(long, value_name = "FILE")]
+        #[arg(long, value_name = "FILE", requires = "case")]
         wave: Option<PathBuf>,
         /// With --case: write the case as a scenario file instead of running it; `merkur sim FILE
         /// --seed SEED` (the command is printed) then runs it as the campaign does.
-        #[arg(long, value_name = "FILE")]
+        #[arg(long, value_name = "FILE", requires = "case")]
         export: Option<PathBuf>,
         /// Write campaign.md and campaign.json into this directory (else the Markdown goes to stdout).
         #[arg(short, long, value_name = "DIR")]
         output: Option<PathBuf>,
-        /// Merge these JSON reports (from shards) instead of running.
-        #[arg(long, value_name = "FILE", num_args = 1..)]
+        /// Merge these JSON reports (from shards) instead of running (no option of a run goes
+        /// with it).
+        #[arg(long, value_name = "FILE", num_args = 1.., conflicts_with_all = [
+            "rings", "full", "singles", "doubles", "ber", "ber_runs", "bursts", "ppm", "repairs",
+            "seed", "jobs", "shard", "case", "wave", "export", "model_only", "only",
+        ])]
         merge: Vec<PathBuf>,
         /// Run the reference model only (the protocol's behaviour, cheaply, e.g. with many
         /// --ber-runs); no RTL, no comparison.
@@ -181,7 +188,8 @@ enum Cmd {
         /// xc2c32a, xc2c64a, xc2c128, xc2c256, xc2c384, xc2c512 (CoolRunner-II mapping against
         /// the device), xc6s (Spartan-6 resources) or xem6010 (board top, UCF, ISE script;
         /// bitstream with --features xem6010).
-        #[arg(long, value_name = "TARGET")]
+        #[arg(long, value_name = "TARGET",
+              value_parser = clap::builder::PossibleValuesParser::new(synth::all_targets()))]
         target: String,
         /// Build this node (ring index; repeatable). Default: the special master, the first
         /// master and the first slave (XEM6010: the special master and the first master).
@@ -202,8 +210,8 @@ enum Cmd {
         seeds: u64,
         /// Tool set of the FPGA targets: yowasp (pinned PyPI Yosys and nextpnr in
         /// .tools/venv, the default) or debian (Yosys 0.23, nextpnr-ice40 0.4; iCE40 only).
-        #[arg(long, default_value = "yowasp", value_name = "FLOW")]
-        flow: String,
+        #[arg(long, value_enum, default_value_t = synth::Flow::Yowasp, value_name = "FLOW")]
+        flow: synth::Flow,
         /// ECP5 speed grade: 6, 7 or 8 (default 8; 6 with --board ulx3s, the board's parts).
         #[arg(long, value_name = "GRADE")]
         speed: Option<u8>,
@@ -600,7 +608,7 @@ fn main() -> ExitCode {
                 output: output.as_deref(),
                 seed: *seed,
                 seeds: *seeds,
-                flow,
+                flow: *flow,
                 speed: *speed,
                 board: board.as_deref(),
                 diag: diag == "on",

@@ -400,13 +400,14 @@ fn campaign_refuses_bad_arguments() {
         (&["campaign", "--doubles", "some"][..], "--doubles some"),
         (&["campaign", "--jobs", "0"][..], "--jobs 0"),
         (&["campaign", "--case", "nope"][..], "--case nope"),
-        (
-            &["campaign", "--wave", "/tmp/x.fst"][..],
-            "--wave needs --case",
-        ),
+        (&["campaign", "--wave", "/tmp/x.fst"][..], "--case <NAME>"),
         (
             &["campaign", "--export", "/tmp/x.toml"][..],
-            "--export needs --case",
+            "--case <NAME>",
+        ),
+        (
+            &["campaign", "--merge", "a.json", "--full"][..],
+            "'--merge <FILE>...' cannot be used with '--full'",
         ),
         (&["campaign", "--ppm", "1500"][..], "--ppm 1500"),
     ] {
@@ -657,7 +658,10 @@ fn synth_fails_when_timing_is_not_met() {
 fn synth_refuses_bad_arguments() {
     // Each command's words are separated by spaces (no argument has one).
     for (cmd, want) in [
-        ("synth tb-data/ring8.toml --target gowin", "--target gowin"),
+        (
+            "synth tb-data/ring8.toml --target gowin",
+            "invalid value 'gowin' for '--target <TARGET>'",
+        ),
         (
             "synth tb-data/ring8.toml --target xc6s --jobs 0",
             "--jobs 0",
@@ -685,7 +689,7 @@ fn synth_refuses_bad_arguments() {
         ),
         (
             "synth tb-data/ring8.toml --target ecp5-85 --flow vivado",
-            "--flow vivado: unknown tool set",
+            "invalid value 'vivado' for '--flow <FLOW>'",
         ),
         (
             "synth tb-data/ring8.toml --target ecp5-45 --flow debian",

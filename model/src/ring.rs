@@ -176,17 +176,95 @@ impl Ring {
         }
     }
 
-    /// Runs one cycle and returns what happened.
+    /// Runs one cycle and returns what happened: the environment before
+    /// it, the cycle's faults, the DATA frame, the SEC and the
+    /// retransmission packet from the clock base, the link tests, frame
+    /// supervision, the faults that act at the end, and the stream
+    /// controllers' verdicts.
     pub fn step(&mut self) -> CycleRecord {
         let c = self.cycle;
         let n = self.n();
-        let s_count = self.cfg.slots;
         let mut ev = Vec::new();
         for nd in &mut self.nodes {
             nd.cf_words = [false; 2];
         }
-
         // 1. Host writes and interrupt requests land before the cycle.
+        self.before_cycle(c, &mut ev);
+        // 2. Faults of this cycle.
+        let (faults, cf) = self.cycle_faults(c);
+        let produced: Vec<u16> = (0..self.cfg.slots)
+            .map(|s| self.source_value(s, c))
+            .collect();
+        let mut fibres = self.idle_fibres();
+        let mut got_frame = vec![false; n];
+        let mut path = vec![];
+
+        // 3. The data frame, from the clock base (a backup takes over when
+        // it is dead, §8).
+        let base = self.clock_base(&mut ev);
+        // The SEC decision is made at the cycle's start, from the RWC of
+        // the last frame that returned before it (protocol §8).
+        let sec_rwc = self.returned_rwc;
+        let mut sec_with_data = vec![];
+        let mut rtx = None;
+        let mut rtx_acted = vec![false; n];
+        if let Some(sm) = base {
+            got_frame[sm] =
+                self.data_frame(sm, &cf, &mut fibres, &mut got_frame, &mut path, &mut ev);
+            // 4. The secondary test frame.
+            if self.nodes[sm].mode == Mode::N && !sec_rwc {
+                sec_with_data = self.sec_frame(sm, &cf, &mut fibres, &mut ev);
+            }
+            // 4b. The retransmission packet, after the frame (§8).
+            rtx = self.rtx_packet(sm, &cf, &mut rtx_acted, &mut ev);
+        }
+
+        // 5. Link tests from wrapped nodes.
+        self.link_tests(&mut fibres);
+        // 6. Frame supervision and the CS timeout.
+        let rtx_jk = rtx.as_ref().map_or(&[][..], |x| &x.jk[..]);
+        let packet_in = self.supervise(&got_frame, &fibres, rtx_jk, &mut ev);
+        // Faults that take effect at the end of the cycle.
+        self.end_faults(&cf, &faults);
+        // 7. Stream controllers and switchboxes.
+        let frame_in = self.inputs_carry(
+            &fibres,
+            |x| matches!(x, Carry::Data(f) if f.hdr != HeaderRx::NoCs),
+        );
+        let tst_in = self.inputs_carry(&fibres, |x| matches!(x, Carry::Tst { .. }));
+        self.resolve(
+            &mut ev,
+            &Inputs {
+                packet: &packet_in,
+                frame: &frame_in,
+                tst: &tst_in,
+            },
+        );
+        // Alive flip-flops toggle after each frame a node processed (the
+        // special master after each frame it sent), and in a node that
+        // missed the frame but wrote into the retransmission packet (§8).
+        for (k, nd) in self.nodes.iter_mut().enumerate() {
+            if got_frame[k] || base == Some(k) || rtx_acted[k] {
+                nd.toggle = !nd.toggle;
+            }
+        }
+        self.cycle += 1;
+        CycleRecord {
+            cycle: c,
+            fibres,
+            nodes: self.nodes.clone(),
+            events: ev,
+            produced,
+            path,
+            base: self.base,
+            sec_with_data,
+            rtx,
+        }
+    }
+
+    /// Before cycle `c`: its host writes and interrupt requests land, and
+    /// the host's failsafe clear command.
+    fn before_cycle(&mut self, c: u32, ev: &mut Vec<Event>) {
         for &(wc, node, slot, data) in &self.cfg.host_writes {
             if wc == c {
                 self.nodes[node].db[slot] = data;
@@ -214,9 +292,14 @@ impl Ring {
         if self.cfg.fs_clears.contains(&c) {
             self.exit.host_clear = true;
             let sm = self.base;
-            self.event(&mut ev, c, At::Hdr, sm, EventKind::FsClear);
+            self.event(ev, c, At::Hdr, sm, EventKind::FsClear);
         }
-        // 2. Faults of this cycle.
+    }
+
+    /// The faults of cycle `c`: breaks and deaths before the cycle act now
+    /// (a restart too: the node in its power-up state); the rest, inside
+    /// the cycle, are returned for the frame's way round.
+    fn cycle_faults(&mut self, c: u32) -> (Vec<Fault>, CycleFaults) {
         let faults: Vec<Fault> = self
             .cfg
             .faults
@@ -264,54 +347,36 @@ impl Ring {
             .copied()
             .filter(|f| matches!(f, Fault::Burst { .. }))
             .collect();
-        let produced: Vec<u16> = (0..s_count).map(|s| self.source_value(s, c)).collect();
-
-        let mut fibres: Vec<Carry> = Vec::with_capacity(2 * n);
-        for k in 0..n {
-            fibres.push(if self.lit(Fibre::P(k)) {
-                Carry::Idle
-            } else {
-                Carry::Silent
-            });
-        }
-        for k in 0..n {
-            fibres.push(if self.lit(Fibre::S(k)) {
-                Carry::Idle
-            } else {
-                Carry::Silent
-            });
-        }
-        let mut got_frame = vec![false; n];
-        let mut path = vec![];
         let cf = CycleFaults {
             cut_fibre,
             cut_node,
             flips,
             bursts,
         };
+        (faults, cf)
+    }
 
-        // 3. The data frame, from the clock base (a backup takes over when
-        // it is dead, §8).
-        let base = self.clock_base(&mut ev);
-        // The SEC decision is made at the cycle's start, from the RWC of
-        // the last frame that returned before it (protocol §8).
-        let sec_rwc = self.returned_rwc;
-        let mut sec_with_data = vec![];
-        let mut rtx = None;
-        let mut rtx_acted = vec![false; n];
-        if let Some(sm) = base {
-            got_frame[sm] =
-                self.data_frame(sm, &cf, &mut fibres, &mut got_frame, &mut path, &mut ev);
-            // 4. The secondary test frame.
-            if self.nodes[sm].mode == Mode::N && !sec_rwc {
-                sec_with_data = self.sec_frame(sm, &cf, &mut fibres, &mut ev);
-            }
-            // 4b. The retransmission packet, after the frame (§8).
-            rtx = self.rtx_packet(sm, &cf, &mut rtx_acted, &mut ev);
-        }
+    /// Every fibre at the cycle's start: idle where it carries light,
+    /// silent where not (P0…P(n−1), then S0…S(n−1)).
+    fn idle_fibres(&self) -> Vec<Carry> {
+        let n = self.n();
+        (0..n)
+            .map(Fibre::P)
+            .chain((0..n).map(Fibre::S))
+            .map(|f| {
+                if self.lit(f) {
+                    Carry::Idle
+                } else {
+                    Carry::Silent
+                }
+            })
+            .collect()
+    }
 
-        // 5. Link tests from wrapped nodes.
-        for k in 0..n {
+    /// Section 5: every wrapped node sends TST on its BSS, acknowledging
+    /// when its BSR hears TST.
+    fn link_tests(&mut self, fibres: &mut [Carry]) {
+        for k in 0..self.n() {
             if !self.nodes[k].up || self.nodes[k].mode == Mode::N {
                 continue;
             }
@@ -325,10 +390,22 @@ impl Ring {
                 self.nodes[r].bad_run[usize::from(port == Port::Si)] = 0;
             }
         }
+    }
 
-        // 6. Frame supervision and the CS timeout.
+    /// Section 6: every live node's frame supervision (frame errors, the
+    /// Alive check's memory), its CS timeout (rule 4, §12) and a backup's
+    /// election timer (§8). `rtx_jk`: the nodes that saw the
+    /// retransmission packet's J K. Returns per node whether a packet
+    /// other than a TST started on its INPUT.
+    fn supervise(
+        &mut self,
+        got_frame: &[bool],
+        fibres: &[Carry],
+        rtx_jk: &[usize],
+        ev: &mut Vec<Event>,
+    ) -> Vec<bool> {
         let cs_timeout = self.cfg.cs_timeout_cycles();
-        let mut packet_in = vec![false; n];
+        let mut packet_in = vec![false; self.n()];
         for (k, &got) in got_frame.iter().enumerate() {
             if !self.nodes[k].up {
                 continue;
@@ -363,7 +440,7 @@ impl Ring {
                 Carry::Tst { .. } | Carry::Silent | Carry::Idle => false,
             };
             // The retransmission packet's J K counts as well (§8).
-            let jk = jk || rtx.as_ref().is_some_and(|x| x.jk.contains(&k));
+            let jk = jk || rtx_jk.contains(&k);
             packet_in[k] = jk;
             // A backup's election timer (§8): any packet on INPUT, or the
             // body of a frame whose J K was destroyed, restarts it.
@@ -374,57 +451,26 @@ impl Ring {
             } else if self.nodes[k].armed {
                 self.nodes[k].no_cs += 1;
                 if self.nodes[k].no_cs >= cs_timeout {
-                    self.enter_failsafe(&mut ev, k, At::End, FsCause::Timeout);
+                    self.enter_failsafe(ev, k, At::End, FsCause::Timeout);
                 }
             }
         }
-        // Faults that take effect at the end of the cycle.
+        packet_in
+    }
+
+    /// The faults that take effect at the end of the cycle: breaks and
+    /// deaths inside it, and repairs (light again from the next cycle).
+    fn end_faults(&mut self, cf: &CycleFaults, faults: &[Fault]) {
         for (f, _) in &cf.cut_fibre {
             self.broken.insert(*f);
         }
         for (k, _) in &cf.cut_node {
             self.nodes[*k].up = false;
         }
-        for f in &faults {
+        for f in faults {
             if let Fault::Repair { fibre, .. } = *f {
                 self.broken.remove(&fibre);
             }
         }
-        // 7. Stream controllers and switchboxes.
-        let frame_in = self.inputs_carry(
-            &fibres,
-            |x| matches!(x, Carry::Data(f) if f.hdr != HeaderRx::NoCs),
-        );
-        let tst_in = self.inputs_carry(&fibres, |x| matches!(x, Carry::Tst { .. }));
-        self.resolve(
-            &mut ev,
-            &Inputs {
-                packet: &packet_in,
-                frame: &frame_in,
-                tst: &tst_in,
-            },
-        );
-        // Alive flip-flops toggle after each frame a node processed (the
-        // special master after each frame it sent), and in a node that
-        // missed the frame but wrote into the retransmission packet (§8).
-        for (k, nd) in self.nodes.iter_mut().enumerate() {
-            if got_frame[k] || base == Some(k) || rtx_acted[k] {
-                nd.toggle = !nd.toggle;
-            }
-        }
-        self.cycle += 1;
-        CycleRecord {
-            cycle: c,
-            fibres,
-            nodes: self.nodes.clone(),
-            events: ev,
-            produced,
-            path,
-            base: self.base,
-            sec_with_data,
-            rtx,
-        }
     }
 }
-
-impl Ring {}

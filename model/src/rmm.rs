@@ -387,6 +387,11 @@ impl Rmm {
 
     /// One octet time: computes every register's next value from the
     /// registers and `i`, then updates them all (docs/protocol.md §18–§21).
+    ///
+    /// One function of about 250 lines, as the RTL's `update` it is
+    /// checked against octet for octet: every next value in the order of
+    /// the hardware blocks (DCM, fault detection, status frame check, fault
+    /// correction machine), so that model and RTL read side by side.
     pub fn clock(&mut self, i: &RmmIn) {
         let cfg = self.cfg;
         // --- DCM: per-channel supervision (combinational) ---

@@ -130,6 +130,10 @@ impl Channel {
 
 /// Runs a scenario with the RMM of every station made by `hw` (called at
 /// every power-on of a station with its configuration).
+///
+/// One loop of about 230 lines: the four steps of a tick (the module doc)
+/// in their order, on state they all share (the stations, the channels,
+/// the frames in flight, the log of changes).
 pub fn run_with(
     cfg: &TbConfig,
     hw: &mut dyn FnMut(RmmConfig) -> Result<Box<dyn StationHw>, String>,

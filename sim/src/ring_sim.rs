@@ -428,7 +428,7 @@ pub fn ring_verilog_once(kinds: &[Kind], slots: usize, restarts: bool) -> std::s
 }
 
 /// Runs `cfg` (whose model records are `recs`) as RTL and compares: the
-/// phases are in [`drive`].
+/// phases are in `sim/src/ring_sim/drive.rs`.
 pub fn run(cfg: &Config, recs: &[CycleRecord], opts: &Options) -> Result<Report, String> {
     if let Some(why) = unsupported(cfg) {
         return Err(why);
@@ -675,7 +675,8 @@ type Span = Option<(u32, u32)>;
 
 /// Compares every fibre's capture of cycle `c` with the model. `spans`: the
 /// recovery window that holds cycle `c`, and the one whose repeat tail
-/// holds it (protocol §13).
+/// holds it (protocol §13). About 175 lines: one pass over the captures,
+/// with each window rule at the words it applies to.
 fn compare_cycle(
     r: &mut Ring,
     cfg: &Config,

@@ -64,6 +64,9 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
     }
 }
 
+/// One slave through wrap, link test, reintegration, a second fault,
+/// failsafe and CLR, step by step (about 170 lines: one story, each step's
+/// stimulus beside its check).
 #[test]
 fn wrap_reintegrate_and_failsafe() {
     let seed = Rng::seed(0x5a7e);

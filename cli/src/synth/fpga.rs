@@ -17,25 +17,21 @@ use serde::Serialize;
 use std::path::Path;
 use std::process::Command;
 
-/// Which tools run.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Which tools run (`--flow`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Flow {
-    /// YoWASP's Yosys and nextpnr (PyPI, WebAssembly).
+    /// YoWASP's Yosys and nextpnr (PyPI, WebAssembly): the pinned tools in .tools/venv.
     Yowasp,
-    /// Debian bookworm's Yosys and nextpnr-ice40.
+    /// Debian bookworm's Yosys 0.23 and nextpnr-ice40 0.4 (iCE40 only).
     Debian,
 }
 
 impl Flow {
-    /// From `--flow`.
-    pub fn parse(s: &str) -> Result<Flow, String> {
-        match s {
-            "yowasp" => Ok(Flow::Yowasp),
-            "debian" => Ok(Flow::Debian),
-            _ => Err(format!(
-                "error: --flow {s}: unknown tool set; flows: yowasp (the pinned PyPI tools in \
-                 .tools/venv), debian (Yosys 0.23 and nextpnr-ice40 0.4; iCE40 only)"
-            )),
+    /// Its `--flow` name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Flow::Yowasp => "yowasp",
+            Flow::Debian => "debian",
         }
     }
 

@@ -27,6 +27,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 mod fpga;
+pub use fpga::Flow;
 
 /// Synthesis targets besides the CoolRunner-IIs ([`CPLDS`]).
 pub const TARGETS: [&str; 7] = [
@@ -39,8 +40,8 @@ pub const TARGETS: [&str; 7] = [
     "xem6010",
 ];
 
-/// Every target name, the CPLDs' among them.
-fn all_targets() -> Vec<&'static str> {
+/// Every target name, the CPLDs' among them (the values `--target` takes).
+pub fn all_targets() -> Vec<&'static str> {
     let mut v = TARGETS.to_vec();
     v.splice(5..5, CPLDS.iter().map(|c| c.name));
     v
@@ -213,7 +214,7 @@ pub struct Opts<'a> {
     /// How many seeds (seed, seed + 1, …).
     pub seeds: u64,
     /// `--flow`.
-    pub flow: &'a str,
+    pub flow: Flow,
     /// `--speed` (ECP5).
     pub speed: Option<u8>,
     /// `--board`.
@@ -667,7 +668,7 @@ fn fpga_of(
     o: &Opts,
     board: Option<&boards::Board>,
 ) -> Result<(fpga::Flow, Option<fpga::Fpga>), String> {
-    let flow = fpga::Flow::parse(o.flow)?;
+    let flow = o.flow;
     if let Some(sp) = o.speed {
         if !o.target.starts_with("ecp5") {
             return Err(format!(
@@ -704,13 +705,6 @@ fn fpga_of(
 /// status 2, nothing written) for bad input, a missing tool or a node the
 /// device cannot hold.
 pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
-    if !all_targets().contains(&o.target) {
-        return Err(format!(
-            "error: --target {}: unknown target; targets: {}",
-            o.target,
-            all_targets().join(", ")
-        ));
-    }
     let (_, cfg) = crate::read_scenario(scenario)?;
     let rate = match o.line_rate {
         None => cfg.line_rate_mbps,
@@ -818,7 +812,7 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
         target: o.target.to_string(),
         line_rate_mbps: rate,
         clock_mhz: clock,
-        flow: o.flow.to_string(),
+        flow: o.flow.name().to_string(),
         tools,
         nodes: results,
     };

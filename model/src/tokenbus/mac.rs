@@ -223,7 +223,8 @@ impl Mac {
         }
     }
 
-    /// One tick. `rx` is the symbol the DCM delivers.
+    /// One tick. `rx` is the symbol the DCM delivers. One match over the
+    /// MAC's states (about 160 lines): the state machine in one place.
     pub(super) fn step(&mut self, hw: &RmmOut) -> MacOut {
         let mut o = MacOut::default();
         let rx = hw.rx;
