@@ -180,11 +180,12 @@ fn build_gate(hash: &str) -> Arc<Mutex<()>> {
 /// else the temporary directory. Never the checkout: an installed `merkur`
 /// runs from any folder.
 pub fn cache_root() -> PathBuf {
-    let env = |k: &str| {
-        std::env::var_os(k)
-            .filter(|v| !v.is_empty())
-            .map(PathBuf::from)
-    };
+    cache_root_in(|k| std::env::var_os(k))
+}
+
+/// [`cache_root`] in the environment `var`.
+fn cache_root_in(var: impl Fn(&str) -> Option<std::ffi::OsString>) -> PathBuf {
+    let env = |k: &str| var(k).filter(|v| !v.is_empty()).map(PathBuf::from);
     if let Some(d) = env("MERKUR_VERILATOR_CACHE") {
         return d;
     }
@@ -881,7 +882,45 @@ impl Drop for Model {
 
 #[cfg(test)]
 mod tests {
-    use super::no_inline_config;
+    use super::{cache_root_in, no_inline_config};
+    use std::path::PathBuf;
+
+    /// The model cache: the variable (`--cache-dir` sets it), else the
+    /// user's cache directory by XDG, else `~/.cache`; an empty variable
+    /// counts as unset.
+    #[test]
+    fn the_model_cache_is_in_the_users_cache_directory() {
+        let env = |vars: &'static [(&'static str, &'static str)]| {
+            move |k: &str| {
+                vars.iter()
+                    .find(|(n, _)| *n == k)
+                    .map(|(_, v)| std::ffi::OsString::from(v))
+            }
+        };
+        const ALL: &[(&str, &str)] = &[
+            ("MERKUR_VERILATOR_CACHE", "/c"),
+            ("XDG_CACHE_HOME", "/x"),
+            ("HOME", "/h"),
+        ];
+        assert_eq!(cache_root_in(env(ALL)), PathBuf::from("/c"));
+        const NO_VAR: &[(&str, &str)] = &[
+            ("MERKUR_VERILATOR_CACHE", ""),
+            ("XDG_CACHE_HOME", "/x"),
+            ("HOME", "/h"),
+        ];
+        assert_eq!(
+            cache_root_in(env(NO_VAR)),
+            PathBuf::from("/x/merkur/verilator")
+        );
+        assert_eq!(
+            cache_root_in(env(&[("HOME", "/h")])),
+            PathBuf::from("/h/.cache/merkur/verilator")
+        );
+        assert_eq!(
+            cache_root_in(env(&[])),
+            std::env::temp_dir().join("merkur-verilator-cache")
+        );
+    }
 
     /// A kept-apart module's own inputs become `public_flat_rd`, the shared
     /// ones and the clock do not; a node's submodules and other modules get
