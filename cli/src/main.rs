@@ -2,6 +2,8 @@
 //!
 //! Subcommands that exist work; nothing here is a placeholder.
 
+#![deny(missing_docs)]
+
 use clap::{Parser, Subcommand};
 use merkur_model::{config, ring, trace};
 use std::path::{Path, PathBuf};

@@ -18,6 +18,8 @@
 //! - [`emit`]: Verilog emission: rust-hdl's text made readable, literals sized, each module with a header, the per-block entry points
 //! - [`formal`]: the formal proofs of the control blocks (property wrappers in `rtl/formal/`)
 
+#![deny(missing_docs)]
+
 pub mod emit;
 pub mod formal;
 pub mod harness;

@@ -10,6 +10,8 @@
 //!
 //! The tests in `tests/` check every RTL block against the reference model.
 
+#![deny(missing_docs)]
+
 pub use merkur_rtl::line::cdr::{SAMPLES_PER_BIT, SAMPLES_PER_CLOCK};
 use std::path::PathBuf;
 
