@@ -878,7 +878,7 @@ fn prove_lists_runs_and_refuses() {
     let list = text(&o.stdout);
     for p in [
         "switch_ctl",
-        "stream_ctrl",
+        "stream_ctl",
         "rmm_fcm",
         "mdb",
         "special_master",

@@ -2296,7 +2296,7 @@ endmodule // merkur_slave__rep
 // --------------------------------------------------------------------------
 // `rx_bsr`: PortRx, Supervised receive port. (rtl/src/node/port_rx.rs)
 //
-// # port_rx — one supervised receive port: [`Monitor`] + [`StreamCtrl`]
+// # port_rx — one supervised receive port: [`Monitor`] + [`StreamCtl`]
 //
 // Purpose: what a node has on each logical input (INPUT and BSR): the receive
 // chain (CDR, framer, word decoder) and its stream controller.
@@ -2306,10 +2306,10 @@ endmodule // merkur_slave__rep
 // | `clock` | in | 1 | — | core clock, 2× line rate |
 // | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
 // | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::line::rx_word::RxWord`] |
-// | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
+// | `i_tst_fail` | in | 1 | static | as [`StreamCtl`] |
 // | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 // | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
-// | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
+// | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtl`] |
 // | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 //
 // Latency: as [`Monitor`]; stream-controller outputs one clock later.
@@ -2477,9 +2477,9 @@ module merkur_slave__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_fl
 
 endmodule // merkur_slave__rx_bsr
 // --------------------------------------------------------------------------
-// `ctrl`: StreamCtrl, Stream controller. (rtl/src/node/stream_ctrl.rs)
+// `ctrl`: StreamCtl, Stream controller. (rtl/src/node/stream_ctl.rs)
 //
-// # stream_ctrl — stream controller: channel failure and test signal (protocol §9)
+// # stream_ctl — stream controller: channel failure and test signal (protocol §9)
 //
 // Purpose: supervises one logical input (INPUT: the primary controller,
 // `pcf`/`ptst`; BSR: the secondary one, `scf`/`stst`) from the words its
@@ -3919,7 +3919,7 @@ module merkur_slave__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flu
 
 endmodule // merkur_slave__rx_in
 // --------------------------------------------------------------------------
-// `ctrl`: StreamCtrl, Stream controller. (rtl/src/node/stream_ctrl.rs)
+// `ctrl`: StreamCtl, Stream controller. (rtl/src/node/stream_ctl.rs)
 // Documented at module `merkur_slave__rx_bsr__ctrl` above.
 // --------------------------------------------------------------------------
 module merkur_slave__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marked,i_d12,i_compl,i_ptype,i_tst_fail,i_flush,o_cf,o_hard,o_run,o_tst,o_ack);
@@ -5055,7 +5055,7 @@ endmodule // merkur_slave__sbox
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock |
 // | `i_armed` | in | 1 | clock | the node has received its first good frame |
-// | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctrl`]) |
+// | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctl`]) |
 // | `i_run_in`, `i_run_bsr` | in | 1 | clock | a run of bad words on INPUT, on BSR |
 // | `i_los_in`, `i_los_bsr` | in | 1 | clock | loss of signal on INPUT, on BSR |
 // | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
@@ -5064,7 +5064,7 @@ endmodule // merkur_slave__sbox
 // | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
 // | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
 // | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
-// | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctrl`] `o_tst`) |
+// | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 // | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 // | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
 // | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |
@@ -5330,7 +5330,7 @@ endmodule // merkur_slave__swc
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock |
 // | `i_armed` | in | 1 | clock | the node has received its first good frame |
-// | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctrl`]) |
+// | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctl`]) |
 // | `i_run_in`, `i_run_bsr` | in | 1 | clock | a run of bad words on INPUT, on BSR |
 // | `i_los_in`, `i_los_bsr` | in | 1 | clock | loss of signal on INPUT, on BSR |
 // | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
@@ -5339,7 +5339,7 @@ endmodule // merkur_slave__swc
 // | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
 // | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
 // | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
-// | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctrl`] `o_tst`) |
+// | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 // | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 // | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
 // | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |

@@ -96,7 +96,7 @@ pub fn proofs() -> Vec<Proof> {
         codec(),
         nrzi_tx(),
         cdr(),
-        stream_ctrl(),
+        stream_ctl(),
         switchbox(),
         switch_ctl(),
         sw_dark(),
@@ -139,14 +139,14 @@ fn cdr() -> Proof {
     }
 }
 
-fn stream_ctrl() -> Proof {
-    let v = block_verilog(crate::node::stream_ctrl::StreamCtrl::default());
+fn stream_ctl() -> Proof {
+    let v = block_verilog(crate::node::stream_ctl::StreamCtl::default());
     Proof {
-        name: "stream_ctrl",
+        name: "stream_ctl",
         what: "channel failure: 8 bad words raise a run, 7 never; TST held 130 bit times",
-        duts: vec![dut("stream_ctrl", v)],
-        expose: ["bad_q", "hold_q"].map(|w| ("stream_ctrl", w)).to_vec(),
-        props: include_str!("../formal/stream_ctrl.sv"),
+        duts: vec![dut("stream_ctl", v)],
+        expose: ["bad_q", "hold_q"].map(|w| ("stream_ctl", w)).to_vec(),
+        props: include_str!("../formal/stream_ctl.sv"),
         // The longest cover: a TST (2 words) and its 260-clock hold.
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 266)],
     }

@@ -191,8 +191,8 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(switch_ctl::SwitchCtl::default()),
         ),
         (
-            "stream_ctrl",
-            block_verilog(stream_ctrl::StreamCtrl::default()),
+            "stream_ctl",
+            block_verilog(stream_ctl::StreamCtl::default()),
         ),
         (
             "port_rx",

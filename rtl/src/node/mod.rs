@@ -3,7 +3,7 @@
 //! The ring nodes and their blocks (the paper's Figures 6 and 7): receive ports, stream controller, switchbox and its control, forwarder, test and packet generators, the master's database, the three node tops.
 //!
 //! - [`port_rx`]: monitor + stream controller, one per logical input
-//! - [`stream_ctrl`]: channel failure (pcf/scf) and test signal (ptst/stst)
+//! - [`stream_ctl`]: channel failure (pcf/scf) and test signal (ptst/stst)
 //! - [`switchbox`]: the paper's Table 1
 //! - [`switch_ctl`]: a node's switchbox decisions (protocol §10, §12): wrap, failsafe, reintegration
 //! - [`sw_dark`]: both physical outputs dark for 12 bit times after a switchbox change
@@ -22,7 +22,7 @@ pub mod pkt_tx;
 pub mod port_rx;
 pub mod slave;
 pub mod special_master;
-pub mod stream_ctrl;
+pub mod stream_ctl;
 pub mod sw_dark;
 pub mod switch_ctl;
 pub mod switchbox;

@@ -1,4 +1,4 @@
-//! # port_rx — one supervised receive port: [`Monitor`] + [`StreamCtrl`]
+//! # port_rx — one supervised receive port: [`Monitor`] + [`StreamCtl`]
 //!
 //! Purpose: what a node has on each logical input (INPUT and BSR): the receive
 //! chain (CDR, framer, word decoder) and its stream controller.
@@ -8,10 +8,10 @@
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::line::rx_word::RxWord`] |
-//! | `i_tst_fail` | in | 1 | static | as [`StreamCtrl`] |
+//! | `i_tst_fail` | in | 1 | static | as [`StreamCtl`] |
 //! | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 //! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
-//! | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtrl`] |
+//! | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtl`] |
 //! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 //!
 //! Latency: as [`Monitor`]; stream-controller outputs one clock later.
@@ -24,7 +24,7 @@
 
 use crate::line::monitor::Monitor;
 use crate::line::rx_word::WordFormat;
-use crate::node::stream_ctrl::StreamCtrl;
+use crate::node::stream_ctl::StreamCtl;
 use rust_hdl::prelude::*;
 
 /// Supervised receive port.
@@ -91,7 +91,7 @@ pub struct PortRx {
     /// ACK of the last TST.
     pub o_ack: Signal<Out, Bit>,
     mon: Monitor,
-    ctrl: StreamCtrl,
+    ctrl: StreamCtl,
 }
 
 impl PortRx {

@@ -38,7 +38,7 @@
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock |
 //! | `i_armed` | in | 1 | clock | the node has received its first good frame |
-//! | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctrl`]) |
+//! | `i_hard_in`, `i_hard_bsr` | in | 1 | clock | structural channel failure on INPUT, on BSR ([`crate::node::stream_ctl`]) |
 //! | `i_run_in`, `i_run_bsr` | in | 1 | clock | a run of bad words on INPUT, on BSR |
 //! | `i_los_in`, `i_los_bsr` | in | 1 | clock | loss of signal on INPUT, on BSR |
 //! | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
@@ -47,7 +47,7 @@
 //! | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
 //! | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
 //! | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
-//! | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctrl`] `o_tst`) |
+//! | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 //! | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
 //! | `o_change` | out | 1 | clock | the mode changes at the next clock edge (combinational) |

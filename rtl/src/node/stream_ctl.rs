@@ -1,4 +1,4 @@
-//! # stream_ctrl — stream controller: channel failure and test signal (protocol §9)
+//! # stream_ctl — stream controller: channel failure and test signal (protocol §9)
 //!
 //! Purpose: supervises one logical input (INPUT: the primary controller,
 //! `pcf`/`ptst`; BSR: the secondary one, `scf`/`stst`) from the words its
@@ -55,7 +55,7 @@ pub const BAD_WORDS: u64 = 8;
 
 /// Stream controller.
 #[derive(LogicBlock)]
-pub struct StreamCtrl {
+pub struct StreamCtl {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Loss of signal.
@@ -100,7 +100,7 @@ pub struct StreamCtrl {
     run: DFF<Bit>,
 }
 
-impl Default for StreamCtrl {
+impl Default for StreamCtl {
     fn default() -> Self {
         Self {
             clock: Default::default(),
@@ -132,7 +132,7 @@ impl Default for StreamCtrl {
     }
 }
 
-impl Logic for StreamCtrl {
+impl Logic for StreamCtl {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, bad, hold, tst, ack, hard, run);

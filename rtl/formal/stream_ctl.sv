@@ -1,4 +1,4 @@
-// Formal properties of stream_ctrl (protocol §9). The word inputs are
+// Formal properties of stream_ctl (protocol §9). The word inputs are
 // free in every clock (any sequence of words the receive chain could
 // give, and more); `i_tst_fail` is static. Proved by k-induction.
 //
@@ -15,7 +15,7 @@
 //   good H0 of its packet) raises o_tst in the next clock and holds it
 //   for 2 TST periods, 130 bit times = 260 clocks (§9), after the last
 //   one; o_ack is the ACK bit (H0 bit 12 = NOT H1 bit 12) of the last one.
-module stream_ctrl_props (
+module stream_ctl_props (
     input wire clock,
     input wire i_los,
     input wire i_wvalid,
@@ -36,7 +36,7 @@ module stream_ctrl_props (
     wire o_cf, o_hard, o_run, o_tst, o_ack;
     wire [3:0] bad_q;
     wire [8:0] hold_q;
-    stream_ctrl dut (
+    stream_ctl dut (
         .clock(clock), .i_los(i_los), .i_wvalid(i_wvalid), .i_kind(i_kind),
         .i_ok(i_ok), .i_void(i_void), .i_marked(i_marked), .i_d12(i_d12), .i_compl(i_compl),
         .i_ptype(i_ptype), .i_tst_fail(i_tst_fail), .i_flush(i_flush),
