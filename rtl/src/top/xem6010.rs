@@ -1,7 +1,8 @@
 //! # xem6010 — a master (or the special master) on the Opal Kelly XEM6010
 //!
 //! Purpose: the board top `merkur_xem6010`: the node's [`crate::top::synth_top`]
-//! `merkur_top` clocked by a Spartan-6 DCM from the board's PLL clock
+//! `merkur_top` clocked by a Spartan-6 clock manager (`DCM_SP`, not the
+//! 802.4 Dual Channel Manager) from the board's PLL clock
 //! (`clk` = `sys_clk`, `clk90` its 90° copy), fibres on the expansion
 //! connector, status on the LEDs, and the board's USB host interface
 //! (Opal Kelly FrontPanel: `okHost`, endpoints) bridged to the node's
@@ -200,7 +201,7 @@ module merkur_xem6010_core(clk, clk90, pi, si, po, so, i_adr, i_dat, i_ctl, i_tr
 endmodule
 "#;
 
-/// The board top proper (FrontPanel endpoints, DCM, core).
+/// The board top proper (FrontPanel endpoints, the DCM_SP clock manager, core).
 const TOP: &str = r#"
 // merkur_xem6010: the board top (pins: gen/constraints/xem6010.ucf).
 module merkur_xem6010(hi_in, hi_out, hi_inout, hi_aa, hi_muxsel, sys_clk, led, pi, si, po, so);
