@@ -160,7 +160,8 @@ enum Cmd {
         #[arg(long)]
         model_only: bool,
         /// Only cases of these classes, comma-separated (break-primary, break-secondary,
-        /// node-death, sm-fibres, double, repair, double-repair, bit-errors, burst, clock-offset).
+        /// node-death, sm-fibres, sm-takeover, double, repair, double-repair, restart, bit-errors,
+        /// burst, clock-offset).
         #[arg(long, value_name = "LIST")]
         only: Option<String>,
     },
