@@ -948,9 +948,22 @@ fn installed_binary_runs_outside_the_checkout() {
         "{out}"
     );
     assert!(work.join("demo.fst").is_file());
+    // The models went to --cache-dir and nowhere else: not into the user's
+    // cache directory (HOME is `tmp` here, and the variable is unset) nor
+    // the folder it ran in.
     assert!(
         std::fs::read_dir(&cache).is_ok_and(|d| d.count() >= 2),
         "the models are in --cache-dir"
+    );
+    assert!(!tmp.join(".cache").exists(), "a cache outside --cache-dir");
+    let left: Vec<_> = std::fs::read_dir(&work)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert!(
+        left.iter()
+            .all(|f| f.to_string_lossy().starts_with("demo.")),
+        "the demo wrote only its waveform here: {left:?}"
     );
     let _ = std::fs::remove_dir_all(&tmp);
 }

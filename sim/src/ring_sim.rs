@@ -239,7 +239,6 @@ fn packet_bit(target: FlipTarget, bit: u32) -> u64 {
 }
 
 /// When the driver writes a fault's configuration.
-#[derive(Clone)]
 enum When {
     /// Before slot s (None: the delimiter) of the cycle, timed on these
     /// fibres' monitors (breaks, repairs, deaths).

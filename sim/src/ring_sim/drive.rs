@@ -16,12 +16,6 @@ type Pending = (usize, u32, When, (usize, u32, u64));
 /// What the driver does and when, from the scenario and the model's
 /// records, before the run.
 pub(super) struct Plan {
-    /// Nodes, slots, cycle period in bit times.
-    n: usize,
-    s: usize,
-    period: u64,
-    /// The scenario's node kinds.
-    kinds: Vec<Kind>,
     /// The nodes with a clock base (the special master and the backups).
     clock_bases: Vec<usize>,
     /// The masters, the special master last (its start bit starts the frames).
@@ -45,12 +39,13 @@ pub(super) struct Plan {
 impl Plan {
     pub(super) fn new(cfg: &Config, recs: &[CycleRecord]) -> Result<Plan, String> {
         let n = cfg.nodes.len();
-        let kinds: Vec<Kind> = cfg.nodes.iter().map(|x| x.kind).collect();
         let rtl_kinds = rtl_kinds(cfg);
         let clock_bases: Vec<usize> = (0..n)
             .filter(|&k| rtl_kinds[k] == Kind::SpecialMaster)
             .collect();
-        let mut order: Vec<usize> = (0..n).filter(|&k| kinds[k] == Kind::Master).collect();
+        let mut order: Vec<usize> = (0..n)
+            .filter(|&k| cfg.nodes[k].kind == Kind::Master)
+            .collect();
         order.push(cfg.sm);
         let framed: Vec<u32> = (0..cfg.cycles)
             .filter(|&c| !recs[c as usize].path.is_empty())
@@ -58,10 +53,6 @@ impl Plan {
         let last_framed = *framed.last().ok_or("the model's ring sends no frame")?;
         let (wins, ext) = Self::windows(cfg, recs);
         Ok(Plan {
-            n,
-            s: cfg.slots,
-            period: cfg.period as u64,
-            kinds,
             clock_bases,
             order,
             framed,
@@ -279,7 +270,7 @@ impl<'a> Drive<'a> {
         opts: &'a Options,
     ) -> Result<Drive<'a>, String> {
         let plan = Plan::new(cfg, recs)?;
-        let n = plan.n;
+        let n = cfg.nodes.len();
         let verilog = ring_verilog_of(cfg);
         let t0 = Instant::now();
         let mut m = Model::build_top_traced(&verilog, "merkur_ring", opts.wave.as_deref())?;
@@ -344,8 +335,8 @@ impl<'a> Drive<'a> {
     /// loaded and started (the special master last), the requests of
     /// cycle 0 raised.
     pub(super) fn start(&mut self) -> Result<(), String> {
+        let (s, period) = (self.cfg.slots, self.period());
         let (cfg, r) = (self.cfg, &mut self.r);
-        let (s, period) = (self.plan.s, self.plan.period);
         let mut rng = Rng::new(self.opts.seed ^ cfg.seed);
         // Shared configuration: S−1, CS timeout 3.5 periods (3 per protocol
         // §12 plus margin for the clock offsets; 2.5 + the highest backup
@@ -417,16 +408,26 @@ impl<'a> Drive<'a> {
         Ok(())
     }
 
+    /// Nodes in the ring.
+    fn n(&self) -> usize {
+        self.cfg.nodes.len()
+    }
+
+    /// The cycle period, bit times.
+    fn period(&self) -> u64 {
+        self.cfg.period as u64
+    }
+
     /// The fibre that feeds node `k`'s PI: P(k−1).
     fn pi_fibre(&self, k: usize) -> usize {
-        (k + self.plan.n - 1) % self.plan.n
+        (k + self.n() - 1) % self.n()
     }
 
     /// Ticks the ring until the last frame is back (or the ring has had
     /// its chance), doing every 4 ticks what the environment does now.
     pub(super) fn run_loop(&mut self) -> Result<(), String> {
         let cycles = self.cfg.cycles as u64;
-        let limit = (cycles + 4) * self.plan.period * TICKS_PER_BIT as u64 * 2 + 100_000;
+        let limit = (cycles + 4) * self.period() * TICKS_PER_BIT as u64 * 2 + 100_000;
         let progress_every = (self.cfg.cycles / 20).max(1);
         loop {
             self.r.tick();
@@ -451,7 +452,7 @@ impl<'a> Drive<'a> {
 
     /// The error of a ring that did not finish.
     fn unfinished(&mut self) -> String {
-        let n = self.plan.n;
+        let n = self.n();
         let ends: Vec<String> = (0..2 * n)
             .map(|f| format!("{} {}", fibre_name(f, n), self.r.rd(f, st::NEND)))
             .collect();
@@ -472,7 +473,7 @@ impl<'a> Drive<'a> {
     /// the comparison of the cycle two back, the alarm queues.
     fn frame_starts(&mut self, progress_every: u32) -> Result<(), String> {
         let (cfg, recs) = (self.cfg, self.recs);
-        let n = self.plan.n;
+        let n = self.n();
         // (Summed in the ring top: one read.)
         let frames = self.r.rd(0, st::FRAMES_ALL) as usize;
         let framed = &self.plan.framed;
@@ -480,7 +481,7 @@ impl<'a> Drive<'a> {
             && self
                 .starts
                 .last()
-                .is_some_and(|&t| self.r.ticks > t + 2 * self.plan.period * TICKS_PER_BIT as u64);
+                .is_some_and(|&t| self.r.ticks > t + 2 * self.period() * TICKS_PER_BIT as u64);
         let now = match frames {
             0 => 0,
             _ if quiet_end => cfg.cycles,
@@ -577,6 +578,7 @@ impl<'a> Drive<'a> {
 
     /// [`frame_over`] of frame `k` on fibre `f`, with this run's state.
     fn frame_over(&mut self, f: usize, k: u32) -> bool {
+        let period = self.period();
         frame_over(
             &mut self.r,
             f,
@@ -584,8 +586,8 @@ impl<'a> Drive<'a> {
             &self.starts,
             self.sent,
             &mut self.pace_off,
-            self.plan.period,
-            self.plan.s,
+            period,
+            self.cfg.slots,
         )
     }
 
@@ -609,15 +611,15 @@ impl<'a> Drive<'a> {
     /// fibre or, on a fibre without frames, when the special master has
     /// started frame c.
     fn fault_due(&mut self, i: usize) -> bool {
-        let (idx, c, ref when, _) = self.plan.faults[i];
-        let when = when.clone();
+        let (idx, c) = (self.plan.faults[i].0, self.plan.faults[i].1);
         let sent = self.sent;
-        match when {
-            When::Slot(fis, slot) => {
+        match self.plan.faults[i].2 {
+            When::Slot(ref fis, slot) => {
+                let r = &mut self.r;
                 let ats: Vec<(bool, u32, u64)> = fis
                     .iter()
                     .map(|&fi| {
-                        let at = self.r.rd(fi, st::AT);
+                        let at = r.rd(fi, st::AT);
                         (at >> 31 == 1, (at >> 28 & 7) as u32, at & 0xfff)
                     })
                     .collect();
@@ -682,8 +684,8 @@ impl<'a> Drive<'a> {
             }
             r.cfg(sel, field::KILL, 0);
             r.cfg(sel, field::POR, 0);
-            if self.plan.kinds[sel].is_master() {
-                for slot in 0..self.plan.s {
+            if self.cfg.nodes[sel].kind.is_master() {
+                for slot in 0..self.cfg.slots {
                     let b = self.cfg.config_byte(sel, slot);
                     if b != 0 {
                         r.wb(sel, WB_CFG + slot as u16, Some(b as u16))?;
@@ -703,9 +705,10 @@ impl<'a> Drive<'a> {
         if self.cfg.faults.is_empty() {
             return;
         }
+        let n = self.n();
         let r = &mut self.r;
         let mut modes_v = Packed::new(st::MODES, st::MODES_PER_READ, 3);
-        for k in 0..self.plan.n {
+        for k in 0..n {
             let mf = modes_v.get(r, k);
             let m = mf & 3;
             if m != self.modes[k] {
@@ -741,21 +744,21 @@ impl<'a> Drive<'a> {
         let back = self.r.rd(pi, st::FRAME);
         self.r.rd(pi, st::NEND) >= self.cfg.cycles as u64
             || (back >> 3 & 1 == 0 && back & 7 == (last_framed & 7) as u64)
-            || self.r.ticks > t + 2 * self.plan.period * TICKS_PER_BIT as u64
+            || self.r.ticks > t + 2 * self.period() * TICKS_PER_BIT as u64
     }
 
     /// End-of-run state of every node, read at once (the special master
     /// has stopped; the CS timeout will put every node in failsafe 2.5
     /// periods later): the `st` fields of [`FINAL_FIELDS`], in order.
     fn final_state(&mut self) -> Vec<Vec<u64>> {
-        (0..self.plan.n)
+        (0..self.n())
             .map(|k| FINAL_FIELDS.iter().map(|&f| self.r.rd(k, f)).collect())
             .collect()
     }
 
     /// SEC packets per fibre and cycle, outside the recovery windows.
     fn compare_secs(&mut self) {
-        let n = self.plan.n;
+        let n = self.n();
         let secs = (0..2 * n).map(|f| self.r.rd(f, st::NSEC)).collect();
         self.nsec_at.push(secs);
         for (c, rec) in self.recs.iter().enumerate() {
@@ -867,7 +870,7 @@ impl<'a> Drive<'a> {
         let want = &last.nodes[k];
         // A memory frozen by failsafe in a window (protocol §13).
         let frozen = want.failsafe && !self.plan.wins.is_empty();
-        for slot in 0..self.plan.s {
+        for slot in 0..self.cfg.slots {
             let g = self.r.wb(k, slot as u16, None)? as u64;
             // A stranded slot (its writer off the path after a split), or
             // a frozen memory: any value the model showed in the slot
@@ -904,7 +907,7 @@ impl<'a> Drive<'a> {
     fn compare_shapes(&mut self, shapes: &[(usize, Shape)], state: &[Vec<u64>]) {
         let last = self.recs.last().expect("at least one cycle");
         let up = |j: usize| last.nodes[j].up;
-        let real: Vec<(usize, Mode)> = (0..self.plan.n)
+        let real: Vec<(usize, Mode)> = (0..self.n())
             .filter(|&j| up(j))
             .filter_map(|j| match state[j][0] & 3 {
                 1 => Some((j, Mode::Wu)),
@@ -940,11 +943,11 @@ impl<'a> Drive<'a> {
     /// Forwarding delay of every node but the clock bases whose PI and PO
     /// fibres both carried the last frame, bit times.
     fn forward_delays(&mut self) -> Vec<f64> {
-        let n = self.plan.n;
+        let n = self.n();
         let last_cyc = ((self.cfg.cycles - 1) & 7) as u64;
         let mut out = vec![];
         for k in (0..n).filter(|k| !self.plan.clock_bases.contains(k)) {
-            let pi = (k + n - 1) % n;
+            let pi = self.pi_fibre(k);
             let r = &mut self.r;
             let both = [pi, k]
                 .iter()
