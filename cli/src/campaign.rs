@@ -1204,9 +1204,25 @@ fn fault_timing(res: &mut CaseResult, cfg: &Config, recs: &[CycleRecord], rep: &
     }
 }
 
-/// Parses `K/N` (1 ≤ K ≤ N).
+/// The case classes, as the report names them and `--only` takes them.
+pub const CLASSES: &[&str] = &[
+    "break-primary",
+    "break-secondary",
+    "node-death",
+    "sm-fibres",
+    "sm-takeover",
+    "double",
+    "repair",
+    "double-repair",
+    "restart",
+    "bit-errors",
+    "burst",
+    "clock-offset",
+];
+
+/// `--shard K/N` as clap parses it (1 ≤ K ≤ N).
 pub fn parse_shard(s: &str) -> Result<(usize, usize), String> {
-    let bad = || format!("error: --shard {s}: expected K/N with 1 <= K <= N, e.g. 2/4");
+    let bad = || "expected K/N with 1 <= K <= N, e.g. 2/4".to_string();
     let (k, n) = s.split_once('/').ok_or_else(bad)?;
     let (k, n): (usize, usize) = (
         k.trim().parse().map_err(|_| bad())?,
@@ -1218,32 +1234,79 @@ pub fn parse_shard(s: &str) -> Result<(usize, usize), String> {
     Ok((k, n))
 }
 
-/// Parses a comma list of positive numbers for `flag`.
-pub fn parse_list(flag: &str, s: &str, max: f64) -> Result<Vec<f64>, String> {
+/// How many cases `--singles`/`--doubles` ask for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Count {
+    /// Every case of the class.
+    All,
+    /// A seeded sample of this many.
+    Sample(usize),
+}
+
+impl Count {
+    /// The sample size, `None` for every case.
+    pub fn limit(self) -> Option<usize> {
+        match self {
+            Count::All => None,
+            Count::Sample(n) => Some(n),
+        }
+    }
+}
+
+/// `--singles`/`--doubles` as clap parses them: a number or `all`.
+pub fn parse_count(s: &str) -> Result<Count, String> {
+    match s.trim() {
+        "all" => Ok(Count::All),
+        x => x
+            .parse()
+            .map(Count::Sample)
+            .map_err(|_| "expected a number of cases or `all`".to_string()),
+    }
+}
+
+/// The highest bit error rate `--ber` takes (one bit in two).
+pub const MAX_BER: f64 = 0.5;
+
+/// The widest clock offset `--ppm` takes (protocol §8: oscillators within
+/// ±1000 ppm).
+pub const MAX_PPM: f64 = 1000.0;
+
+/// `--ber`: bit error rates, or none.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BerList(pub Vec<f64>);
+
+/// `--ber` as clap parses it: a comma list of rates in 0 ..= [`MAX_BER`],
+/// or `none`.
+pub fn parse_ber(s: &str) -> Result<BerList, String> {
     if s.trim().is_empty() || s.trim() == "none" {
-        return Ok(vec![]);
+        return Ok(BerList(vec![]));
     }
     s.split(',')
         .map(|x| {
             let v: f64 = x
                 .trim()
                 .parse()
-                .map_err(|_| format!("error: {flag} {s}: `{}` is not a number", x.trim()))?;
-            if !(v.is_finite() && v >= 0.0 && v <= max) {
-                return Err(format!("error: {flag} {s}: {v} is outside 0 ..= {max}"));
+                .map_err(|_| format!("`{}` is not a number", x.trim()))?;
+            if !(v.is_finite() && (0.0..=MAX_BER).contains(&v)) {
+                return Err(format!("{v} is outside 0 ..= {MAX_BER}"));
             }
             Ok(v)
         })
-        .collect()
+        .collect::<Result<_, _>>()
+        .map(BerList)
 }
 
-/// Checks a bound given to `flag` (0 ..= max; protocol §8 allows ±1000 ppm).
-pub fn parse_bound(flag: &str, v: f64, max: f64) -> Result<f64, String> {
-    if v.is_finite() && (0.0..=max).contains(&v) {
+/// `--ppm` as clap parses it: a bound in 0 ..= [`MAX_PPM`].
+pub fn parse_ppm(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if v.is_finite() && (0.0..=MAX_PPM).contains(&v) {
         Ok(v)
     } else {
         Err(format!(
-            "error: {flag} {v}: outside 0 ..= {max} (protocol §8: oscillators within ±{max} ppm)"
+            "outside 0 ..= {MAX_PPM} (protocol §8: oscillators within ±{MAX_PPM} ppm)"
         ))
     }
 }
@@ -1266,24 +1329,10 @@ fn all_cases(plan: &Plan) -> Result<Vec<Case>, String> {
         cases.extend(cases_of(&ring_name, &base, plan));
     }
     if !plan.only.is_empty() {
-        let known = [
-            "break-primary",
-            "break-secondary",
-            "node-death",
-            "sm-fibres",
-            "sm-takeover",
-            "double",
-            "repair",
-            "double-repair",
-            "restart",
-            "bit-errors",
-            "burst",
-            "clock-offset",
-        ];
-        if let Some(bad) = plan.only.iter().find(|c| !known.contains(&c.as_str())) {
+        if let Some(bad) = plan.only.iter().find(|c| !CLASSES.contains(&c.as_str())) {
             return Err(format!(
                 "error: --only {bad}: not a class; the classes are {}",
-                known.join(", ")
+                CLASSES.join(", ")
             ));
         }
         cases.retain(|c| plan.only.iter().any(|o| o == c.class));

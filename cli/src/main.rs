@@ -103,14 +103,15 @@ enum Cmd {
         #[arg(long)]
         full: bool,
         /// Single faults per ring: a number (seeded sample) or `all` (default: all).
-        #[arg(long, value_name = "N|all")]
-        singles: Option<String>,
+        #[arg(long, value_name = "N|all", value_parser = campaign::parse_count)]
+        singles: Option<campaign::Count>,
         /// Double faults per ring: a number (seeded sample) or `all`. Default 24 (with --full: see there).
-        #[arg(long, value_name = "N|all")]
-        doubles: Option<String>,
-        /// Bit error rates, comma-separated (`none` for no bit-error runs). Default 1e-4.
-        #[arg(long, value_name = "LIST")]
-        ber: Option<String>,
+        #[arg(long, value_name = "N|all", value_parser = campaign::parse_count)]
+        doubles: Option<campaign::Count>,
+        /// Bit error rates, comma-separated, each 0 … 0.5 (`none` for no bit-error runs).
+        /// Default 1e-4 (with --full: 1e-3,1e-4,1e-5,1e-6,1e-7).
+        #[arg(long, value_name = "LIST", value_parser = campaign::parse_ber)]
+        ber: Option<campaign::BerList>,
         /// Runs per bit error rate.
         #[arg(long, value_name = "N", default_value_t = 2)]
         ber_runs: usize,
@@ -120,7 +121,13 @@ enum Cmd {
         bursts: Option<usize>,
         /// Every case runs its nodes at clock offsets drawn from the case's seed, uniform within
         /// ±PPM, with three neighbours at alternating extremes among them (0: every node at 0 ppm).
-        #[arg(long, value_name = "PPM", default_value_t = 1000.0)]
+        #[arg(
+            long,
+            value_name = "PPM",
+            default_value = "1000",
+            allow_negative_numbers = true,
+            value_parser = campaign::parse_ppm
+        )]
         ppm: f64,
         /// Repair (reintegration) cases: every fibre breaks and is repaired (8 sampled fibres on
         /// rings of more than 16 nodes).
@@ -133,8 +140,8 @@ enum Cmd {
         #[arg(long, value_name = "N")]
         jobs: Option<usize>,
         /// Run only shard K of N (cases i with i mod N = K − 1); merge the reports with --merge.
-        #[arg(long, value_name = "K/N")]
-        shard: Option<String>,
+        #[arg(long, value_name = "K/N", value_parser = campaign::parse_shard)]
+        shard: Option<(usize, usize)>,
         /// Run only the case of this name (as the report lists it).
         #[arg(long, value_name = "NAME")]
         case: Option<String>,
@@ -159,11 +166,14 @@ enum Cmd {
         /// --ber-runs); no RTL, no comparison.
         #[arg(long)]
         model_only: bool,
-        /// Only cases of these classes, comma-separated (break-primary, break-secondary,
-        /// node-death, sm-fibres, sm-takeover, double, repair, double-repair, restart, bit-errors,
-        /// burst, clock-offset).
-        #[arg(long, value_name = "LIST")]
-        only: Option<String>,
+        /// Only cases of these classes, comma-separated.
+        #[arg(
+            long,
+            value_name = "LIST",
+            value_delimiter = ',',
+            value_parser = clap::builder::PossibleValuesParser::new(campaign::CLASSES)
+        )]
+        only: Vec<String>,
     },
     /// Prove the control blocks' formal properties (SymbiYosys + Boolector, installed by
     /// scripts/install-tools.sh --synth; docs/verification.md). Exit status 1 when a property
@@ -447,28 +457,15 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
     let report = if !merge.is_empty() {
         campaign::merge(merge)?
     } else {
-        let count = |flag: &str, v: &str| -> Result<Option<usize>, String> {
-            match v {
-                "all" => Ok(None),
-                x => x
-                    .parse::<usize>()
-                    .map(Some)
-                    .map_err(|_| format!("error: {flag} {x}: expected a number of cases or `all`")),
-            }
-        };
-        let doubles = match doubles.as_deref() {
+        let doubles = match doubles {
             None if *full => None,
             None => Some(24),
-            Some(x) => count("--doubles", x)?,
+            Some(c) => c.limit(),
         };
-        let singles = match singles.as_deref() {
-            None => None,
-            Some(x) => count("--singles", x)?,
-        };
-        let default_ber = if *full {
-            "1e-3,1e-4,1e-5,1e-6,1e-7"
-        } else {
-            "1e-4"
+        let ber = match ber {
+            Some(b) => b.0.clone(),
+            None if *full => vec![1e-3, 1e-4, 1e-5, 1e-6, 1e-7],
+            None => vec![1e-4],
         };
         let jobs = match jobs {
             Some(0) => return Err("error: --jobs 0: at least one simulation must run".into()),
@@ -481,28 +478,22 @@ fn campaign_cmd(cmd: &Cmd) -> Result<bool, String> {
             } else {
                 rings.clone()
             },
-            singles,
+            singles: singles.and_then(campaign::Count::limit),
             full: *full,
             doubles,
-            ber: campaign::parse_list("--ber", ber.as_deref().unwrap_or(default_ber), 0.5)?,
+            ber,
             ber_runs: *ber_runs,
             bursts: bursts.unwrap_or(if *full { 8 } else { 4 }),
-            ppm: campaign::parse_bound("--ppm", *ppm, 1000.0)?,
+            ppm: *ppm,
             repairs: *repairs || *full,
             seed: *seed,
             jobs,
-            shard: match shard {
-                Some(s) => campaign::parse_shard(s)?,
-                None => (1, 1),
-            },
+            shard: shard.unwrap_or((1, 1)),
             case: case.clone(),
             wave: wave.clone(),
             export: export.clone(),
             model_only: *model_only,
-            only: only
-                .as_deref()
-                .map(|l| l.split(',').map(|x| x.trim().to_string()).collect())
-                .unwrap_or_default(),
+            only: only.clone(),
         };
         if plan.export.is_some() {
             return campaign::export(&plan).map(|()| true);

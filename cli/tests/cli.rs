@@ -395,10 +395,27 @@ fn bounded_campaign_agrees_with_the_model() {
 #[test]
 fn campaign_refuses_bad_arguments() {
     for (args, want) in [
-        (&["campaign", "--shard", "3/2"][..], "--shard 3/2"),
-        (&["campaign", "--ber", "1e-3,x"][..], "--ber 1e-3,x"),
-        (&["campaign", "--doubles", "some"][..], "--doubles some"),
+        (
+            &["campaign", "--shard", "3/2"][..],
+            "'3/2' for '--shard <K/N>': expected K/N with 1 <= K <= N",
+        ),
+        (
+            &["campaign", "--ber", "1e-3,x"][..],
+            "'1e-3,x' for '--ber <LIST>': `x` is not a number",
+        ),
+        (
+            &["campaign", "--ber", "0.7"][..],
+            "'0.7' for '--ber <LIST>': 0.7 is outside 0 ..= 0.5",
+        ),
+        (
+            &["campaign", "--doubles", "some"][..],
+            "'some' for '--doubles <N|all>': expected a number of cases or `all`",
+        ),
         (&["campaign", "--jobs", "0"][..], "--jobs 0"),
+        (
+            &["campaign", "--only", "double,nope"][..],
+            "'nope' for '--only <LIST>'",
+        ),
         (&["campaign", "--case", "nope"][..], "--case nope"),
         (&["campaign", "--wave", "/tmp/x.fst"][..], "--case <NAME>"),
         (
@@ -409,7 +426,14 @@ fn campaign_refuses_bad_arguments() {
             &["campaign", "--merge", "a.json", "--full"][..],
             "'--merge <FILE>...' cannot be used with '--full'",
         ),
-        (&["campaign", "--ppm", "1500"][..], "--ppm 1500"),
+        (
+            &["campaign", "--ppm", "1500"][..],
+            "'1500' for '--ppm <PPM>': outside 0 ..= 1000",
+        ),
+        (
+            &["campaign", "--ppm", "-5"][..],
+            "'-5' for '--ppm <PPM>': outside 0 ..= 1000",
+        ),
     ] {
         refused(args, want);
     }
