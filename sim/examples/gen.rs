@@ -1,9 +1,10 @@
 //! Rewrites everything in `gen/` from the generators: the board
 //! constraints (`gen/constraints/`, from rtl/src/top/boards.rs) and the
 //! standard nodes' Verilog with its lint waivers (`gen/verilog/`, from
-//! rtl/src/emit/standard.rs): `cargo run -p merkur-sim --example gen`.
-//! `sim/tests/boards.rs` and `sim/tests/gen.rs` fail when a committed file
-//! drifts.
+//! rtl/src/emit/standard.rs), and the timing diagrams of `docs/timing/`
+//! (drawn from RTL runs, sim/src/timing.rs): `cargo run -p merkur-sim
+//! --example gen`. `sim/tests/boards.rs` and `sim/tests/gen.rs` fail when
+//! a committed file drifts.
 
 fn write(path: &std::path::Path, text: &str) {
     if let Err(e) = std::fs::write(path, text) {
@@ -27,4 +28,16 @@ fn main() {
     for f in merkur_rtl::emit::standard::standard_files() {
         write(&dir.join(f.name), &f.text);
     }
+    let timing = merkur_sim::repo_root().join("docs/timing");
+    let work = std::env::temp_dir().join(format!("merkur-timing-{}", std::process::id()));
+    for d in merkur_sim::timing::diagrams() {
+        match merkur_sim::timing::render(&d, &work) {
+            Ok(svg) => write(&timing.join(d.file), &svg),
+            Err(e) => {
+                eprintln!("error: {}: {e}", d.file);
+                std::process::exit(1);
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&work);
 }

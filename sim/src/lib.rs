@@ -5,6 +5,7 @@
 //! - [`jobs`]: the one work queue for jobs run side by side (model
 //!   objects, proofs, campaign cases, the block tests' tool runs);
 //! - [`stim`]: line stimulus from the model's frames, reading monitors back;
+//! - [`timing`]: the timing diagrams of docs/timing/, drawn from RTL runs;
 //! - line sampling with clock offsets and jitter ([`line_samples`]), seeded
 //!   random numbers ([`Rng`]), the pinned tool list ([`pinned_tools`]).
 //!
@@ -67,6 +68,7 @@ pub mod formal;
 pub mod jobs;
 pub mod ring_sim;
 pub mod stim;
+pub mod timing;
 pub mod verilator;
 pub mod wishbone;
 

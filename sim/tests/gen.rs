@@ -53,3 +53,34 @@ fn committed_node_files_are_lint_clean_with_their_waivers() {
         }
     }
 }
+
+/// The timing diagrams of docs/timing/ (sim/src/timing.rs) are what the
+/// RTL does today: each is drawn again from its scenario's RTL run and
+/// must be the committed file, byte for byte; nothing else is in the folder.
+#[test]
+fn committed_timing_diagrams_match_the_rtl() {
+    use merkur_sim::timing::{diagrams, render};
+    let dir = repo_root().join("docs/timing");
+    let work = std::env::temp_dir().join(format!("merkur-timing-test-{}", std::process::id()));
+    let all = diagrams();
+    for d in &all {
+        let svg = render(d, &work).unwrap_or_else(|e| panic!("{}: {e}", d.file));
+        let path = dir.join(d.file);
+        let committed =
+            std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert!(
+            committed == svg,
+            "{} drifted from the RTL run it is drawn from; regenerate it: cargo run -p merkur-sim --example gen",
+            path.display()
+        );
+    }
+    let _ = std::fs::remove_dir_all(&work);
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .expect("docs/timing")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    let mut want: Vec<String> = all.iter().map(|d| d.file.to_string()).collect();
+    want.sort();
+    assert_eq!(names, want, "docs/timing holds a file no diagram draws");
+}
