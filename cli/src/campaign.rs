@@ -18,6 +18,7 @@
 //! the same on every machine, `--case NAME` reruns one case exactly, and
 //! `--shard K/N` splits it; `--merge` joins shard reports.
 
+use crate::progress;
 use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::ring::{self, splitmix, table1, Carry, CycleRecord, EventKind, Mode, Port, Slot};
 use merkur_model::scenario::Kind;
@@ -28,8 +29,6 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
-use std::time::Instant;
 
 /// Cycle of the (first) fault in generated cases.
 const FAULT_CYCLE: u32 = 3;
@@ -1393,41 +1392,37 @@ pub fn run(plan: &Plan, command: String) -> Result<Report, String> {
     for c in mine.iter().filter(|_| !plan.model_only) {
         let v = ring_sim::ring_verilog_of(&c.cfg);
         if built.insert(std::sync::Arc::as_ptr(&v) as usize) {
-            let t = Instant::now();
+            let step = progress::Step::start(format!("model of {}", c.ring));
             merkur_sim::verilator::Model::build_top_traced(&v, "merkur_ring", None)?;
-            eprintln!(
-                "  model of {} ready ({:.1} s)",
-                c.ring,
-                t.elapsed().as_secs_f64()
-            );
+            step.done("ready");
         }
     }
     let done = AtomicUsize::new(0);
     let failed = AtomicUsize::new(0);
-    let printing = Mutex::new(());
-    let t0 = Instant::now();
-    let mut cases = merkur_sim::jobs::run(&mine, plan.jobs, |case| {
-        let r = run_case(case, plan.wave.as_deref(), plan.model_only);
-        // One lock for the progress line, so that two workers' lines do not mix.
-        let _line = printing.lock().unwrap_or_else(|e| e.into_inner());
+    let bar = progress::Bar::new(mine.len() as u64, "cases");
+    let workers = progress::Workers::new(plan.jobs.min(mine.len()));
+    let run = merkur_sim::jobs::run(&mine, plan.jobs, |case| {
+        let r = workers.run(&case.name, || {
+            run_case(case, plan.wave.as_deref(), plan.model_only)
+        });
         let d = done.fetch_add(1, Ordering::SeqCst) + 1;
         let bad = r.mismatches > 0;
         let f = failed.fetch_add(usize::from(bad), Ordering::SeqCst) + usize::from(bad);
-        progress(d, mine.len(), f, t0.elapsed().as_secs_f64());
+        bar.set(d as u64, &format!("{f} with mismatches"));
         if bad {
-            eprintln!(
-                "\nMISMATCH {} (seed {}, offsets ppm {}): {}",
+            progress::line(&format!(
+                "MISMATCH {} (seed {}, offsets ppm {}): {}",
                 case.name,
                 case.seed,
                 offsets(&case.cfg),
                 r.first.join("; ")
-            );
+            ));
         }
         Ok(r)
-    })?;
-    if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
-        eprintln!();
-    }
+    });
+    workers.finish();
+    bar.finish();
+    let mut cases = run?;
     cases.sort_by(|a, b| a.name.cmp(&b.name));
     Ok(Report {
         commands: vec![command],
@@ -1445,37 +1440,6 @@ fn ppm_list(v: &[f64]) -> String {
         .map(|p| format!("{p:+}"))
         .collect::<Vec<_>>()
         .join(",")
-}
-
-/// Progress on stderr: one line redrawn in place on a terminal; in a log
-/// (not a terminal, e.g. CI) a plain line at every tenth of the cases and
-/// at the end, instead of hundreds of carriage returns.
-fn progress(done: usize, total: usize, failed: usize, secs: f64) {
-    use std::io::IsTerminal;
-    let tty = std::io::stderr().is_terminal();
-    if !tty
-        && done != total
-        && (done * 10) / total.max(1) == (done.saturating_sub(1) * 10) / total.max(1)
-    {
-        return;
-    }
-    let width = 30;
-    let fill = (done * width).checked_div(total).unwrap_or(width);
-    let eta = if done == 0 {
-        0.0
-    } else {
-        secs / done as f64 * (total - done) as f64
-    };
-    let line = format!(
-        "[{}{}] {done}/{total} cases, {failed} with mismatches, {secs:.0} s, ~{eta:.0} s left ",
-        "#".repeat(fill),
-        ".".repeat(width - fill)
-    );
-    if tty {
-        eprint!("\r{line}");
-    } else {
-        eprintln!("{line}");
-    }
 }
 
 /// Joins shard reports (cases by name; a case in two reports must agree).

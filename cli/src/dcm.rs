@@ -128,10 +128,14 @@ pub fn sim(path: &Path, text: &str, wave: Option<&Path>, show: usize) -> Result<
     if let Some(w) = wave {
         crate::sim::check_wave_name(w)?;
     }
-    eprintln!(
-        "building the Verilator model of merkur_dcm (cached by the hash of its Verilog); {} stations, each its own instance ...",
+    let step = crate::progress::Step::start(format!(
+        "building the Verilator model of merkur_dcm (cached by the hash of its Verilog; {} stations, each its own instance)",
         cfg.stations
-    );
+    ));
+    let t = std::time::Instant::now();
+    dcm_sim::build_model(wave.is_some()).map_err(|e| format!("error: {e}"))?;
+    step.done("ready");
+    let build = t.elapsed();
     let opts = Options {
         wave: wave.map(Path::to_path_buf),
     };
@@ -148,7 +152,7 @@ pub fn sim(path: &Path, text: &str, wave: Option<&Path>, show: usize) -> Result<
     println!(
         "simulated in {:.2} s (build {:.1} s)",
         r.wall.as_secs_f64(),
-        r.build.as_secs_f64()
+        build.as_secs_f64()
     );
     println!("station  state          active  channel A  channel B  stale     events seen");
     for k in 0..cfg.stations {

@@ -145,15 +145,18 @@ fn rtl(cfg: &Config, recs: &[CycleRecord], wave: &std::path::Path) -> Result<(),
         ppm.clone().fold(f64::INFINITY, f64::min),
         ppm.fold(f64::NEG_INFINITY, f64::max)
     );
-    eprintln!("building the Verilator model (cached by the hash of its Verilog) ...");
+    crate::sim::build_ring(cfg, true)?;
+    let bar = std::sync::Arc::new(crate::progress::Bar::new(u64::from(cfg.cycles), "cycles"));
     let opts = Options {
         wave: Some(wave.to_path_buf()),
         seed: 1,
-        progress: true,
+        progress: Some(crate::sim::cycle_progress(&bar)),
         record: false,
         dump: false,
     };
-    let rep = ring_sim::run(cfg, recs, &opts).map_err(|e| format!("error: RTL run: {e}"))?;
+    let run = ring_sim::run(cfg, recs, &opts);
+    bar.finish();
+    let rep = run.map_err(|e| format!("error: RTL run: {e}"))?;
     println!(
         "RTL: {} words on {} fibres over {} cycles compared with the model; cycle time measured {:.1} bit times = {:.2} us at {} Mbit/s",
         rep.words,

@@ -12,6 +12,7 @@ use std::process::ExitCode;
 mod campaign;
 mod dcm;
 mod demo;
+mod progress;
 mod prove;
 mod sim;
 mod synth;

@@ -1,11 +1,13 @@
 //! `merkur verilog` and `merkur sim`: the scenario's ring as Verilog, and its
 //! Verilator run compared with the reference model.
 
-use crate::{read_scenario, write_atomic};
+use crate::{progress, read_scenario, write_atomic};
+use merkur_model::config::Config;
 use merkur_model::ring;
 use merkur_rtl::emit::verilog::WAIVERS;
 use merkur_sim::ring_sim::{self, Options};
 use std::path::Path;
+use std::time::{Duration, Instant};
 
 /// Writes `<name>_ring.v` and `waivers.vlt` into `dir`.
 pub fn verilog(path: &Path, dir: &Path) -> Result<(), String> {
@@ -33,6 +35,26 @@ pub fn verilog(path: &Path, dir: &Path) -> Result<(), String> {
         file.display()
     );
     Ok(())
+}
+
+/// Builds (or finds in the cache) the ring's Verilator model, shown as a
+/// step; its wall time.
+pub(crate) fn build_ring(cfg: &Config, wave: bool) -> Result<Duration, String> {
+    let step = progress::Step::start(format!(
+        "building the Verilator model of {} ({} nodes; cached by the hash of its Verilog)",
+        cfg.name,
+        cfg.nodes.len()
+    ));
+    let t = Instant::now();
+    ring_sim::build_model(cfg, wave).map_err(|e| format!("error: {e}"))?;
+    step.done("ready");
+    Ok(t.elapsed())
+}
+
+/// A run's cycle count onto `bar`.
+pub(crate) fn cycle_progress(bar: &std::sync::Arc<progress::Bar>) -> ring_sim::Progress {
+    let bar = bar.clone();
+    ring_sim::Progress(std::sync::Arc::new(move |c, _| bar.set(u64::from(c), "")))
 }
 
 /// A `--wave` file must be named `*.fst` (that is what is written).
@@ -73,19 +95,18 @@ pub fn sim(
         check_wave_name(w)?;
     }
     let recs = ring::run(&cfg);
-    eprintln!(
-        "building the Verilator model of {} ({} nodes; cached by the hash of its Verilog) ...",
-        cfg.name,
-        cfg.nodes.len()
-    );
+    let build = build_ring(&cfg, wave.is_some())?;
+    let bar = std::sync::Arc::new(progress::Bar::new(u64::from(cfg.cycles), "cycles"));
     let opts = Options {
         wave: wave.map(Path::to_path_buf),
         seed,
-        progress: !dump,
+        progress: (!dump).then(|| cycle_progress(&bar)),
         record: false,
         dump,
     };
-    let rep = ring_sim::run(&cfg, &recs, &opts).map_err(|e| format!("error: {e}"))?;
+    let run = ring_sim::run(&cfg, &recs, &opts);
+    bar.finish();
+    let rep = run.map_err(|e| format!("error: {e}"))?;
     println!(
         "{}: {} cycles, {} words compared, period {:.1} bit times ({:.2} us at {} Mbit/s)",
         cfg.name,
@@ -100,7 +121,7 @@ pub fn sim(
         rep.ticks,
         rep.ticks / u64::from(merkur_rtl::harness::ring_top::TICKS_PER_BIT),
         rep.wall.as_secs_f64(),
-        rep.build.as_secs_f64()
+        build.as_secs_f64()
     );
     let d = &rep.fwd_delay_bits;
     if !d.is_empty() {

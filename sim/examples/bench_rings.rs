@@ -40,7 +40,7 @@ fn main() {
         let opts = Options {
             wave: None,
             seed: 1,
-            progress: false,
+            progress: None,
             record: false,
             dump: false,
         };

@@ -266,6 +266,13 @@ pub fn diff(a: &RmmOut, b: &RmmOut) -> Vec<String> {
     d
 }
 
+/// Builds (or finds in the cache) the Verilator model of the station that
+/// [`run`] uses (with tracing when `wave`), so that a caller can show the
+/// build as a step of its own; [`run`] then finds it in the process.
+pub fn build_model(wave: bool) -> Result<(), String> {
+    crate::verilator::build_library_top(&dcm_verilog(), "merkur_dcm", wave).map(|_| ())
+}
+
 /// Runs `cfg` through the RTL and compares it with the reference model.
 pub fn run(cfg: &TbConfig, opts: &Options) -> Result<Report, String> {
     let verilog = dcm_verilog();

@@ -22,7 +22,6 @@ use merkur_rtl::harness::ring_top::{
     cap_slots, cfg as field, ring_verilog_with, status as st, INC_NOMINAL, TICKS_PER_BIT,
 };
 use merkur_rtl::node::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_JOIN, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
-use std::io::IsTerminal;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -121,6 +120,16 @@ pub struct Report {
 /// A ring's shape as a master sees it: the wrapped nodes and their modes.
 pub type Shape = Vec<(usize, Mode)>;
 
+/// A run's progress report: called with (cycles started, cycles).
+#[derive(Clone)]
+pub struct Progress(pub std::sync::Arc<dyn Fn(u32, u32) + Send + Sync>);
+
+impl std::fmt::Debug for Progress {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Progress(..)")
+    }
+}
+
 /// Options of a run.
 #[derive(Debug, Clone, Default)]
 pub struct Options {
@@ -128,8 +137,8 @@ pub struct Options {
     pub wave: Option<std::path::PathBuf>,
     /// Seed of the clock phases.
     pub seed: u64,
-    /// Print progress to stderr.
-    pub progress: bool,
+    /// Told (cycles started, cycles) as the frames go out and at the end.
+    pub progress: Option<Progress>,
     /// Record every tick's ports for a replay in another simulator
     /// ([`Report::recording`]).
     pub record: bool,
@@ -393,6 +402,14 @@ pub fn rtl_kinds(cfg: &Config) -> Vec<Kind> {
             None => x.kind,
         })
         .collect()
+}
+
+/// Builds (or finds in the cache) the Verilator model that [`run`] uses
+/// for `cfg` (with tracing when `wave`), so that a caller can show the
+/// build as a step of its own; [`run`] then finds it in the process.
+pub fn build_model(cfg: &Config, wave: bool) -> Result<(), String> {
+    let traced = wave || crate::verilator::wave_env().is_some();
+    crate::verilator::build_library_top(&ring_verilog_of(cfg), "merkur_ring", traced).map(|_| ())
 }
 
 /// The ring Verilog that runs `cfg` ([`ring_verilog_once`] of its RTL

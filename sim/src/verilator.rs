@@ -257,7 +257,7 @@ pub fn build_library(verilog: &str) -> Result<(PathBuf, Vec<Port>), String> {
 }
 
 /// `MERKUR_WAVE`, if set.
-fn wave_env() -> Option<String> {
+pub(crate) fn wave_env() -> Option<String> {
     std::env::var("MERKUR_WAVE").ok()
 }
 

@@ -860,7 +860,8 @@ impl NodeJob<'_> {
             kind: st.kind.name().to_string(),
             ..Default::default()
         };
-        eprintln!("synth {}: node {k} ({}) …", self.target, r.kind);
+        let step =
+            crate::progress::Step::start(format!("synth {}: node {k} ({})", self.target, r.kind));
         let res = match self.target {
             _ if self.fpga.is_some() => {
                 let f = self.fpga.expect("checked");
@@ -875,6 +876,10 @@ impl NodeJob<'_> {
             "xc6s" => xc6s(&tmp, st, &mut r),
             _ => xem(&tmp, st, &mut r),
         };
+        step.done(match &res {
+            Ok(()) => &r.status,
+            Err(_) => "failed",
+        });
         if res.is_ok() && r.status == "does not fit" {
             // The device cannot hold the node: refused, nothing left behind.
             let _ = std::fs::remove_dir_all(&tmp);
@@ -892,7 +897,7 @@ impl NodeJob<'_> {
             return Err(format!("{e}\n(tool logs kept in {})", keep.display()));
         }
         r.artifacts = r.artifacts.iter().map(|a| format!("{label}/{a}")).collect();
-        eprintln!("  node {k}: {}{}", r.status, summary(&r));
+        crate::progress::line(&format!("  node {k}: {}{}", r.status, summary(&r)));
         Ok((tmp, self.out.join(&label), r))
     }
 }
