@@ -68,24 +68,24 @@ pub fn trace(path: &Path, text: &str, output: Option<&Path>) -> Result<(), Strin
     Ok(())
 }
 
-/// `merkur verilog`: `merkur_dcm.v` (one station's DCM + RMM) and the waivers.
+/// `merkur verilog`: `merkur_dcm_station.v` (one station's DCM + RMM) and the waivers.
 pub fn verilog(path: &Path, text: &str, dir: &Path) -> Result<(), String> {
     let cfg = read(path, text)?;
     let v = dcm_verilog();
     std::fs::create_dir_all(dir)
         .map_err(|e| format!("error: --output {}: cannot create: {e}", dir.display()))?;
-    let file = dir.join("merkur_dcm.v");
+    let file = dir.join("merkur_dcm_station.v");
     write_atomic(&file, &v)?;
     write_atomic(&dir.join("waivers.vlt"), WAIVERS)?;
     eprintln!(
-        "wrote {} (top merkur_dcm: one station's DCM + RMM, {} lines; the scenario's {} stations each use one, addresses and periods are ports) and {}",
+        "wrote {} (top merkur_dcm_station: one station's DCM + RMM, {} lines; the scenario's {} stations each use one, addresses and periods are ports) and {}",
         file.display(),
         v.lines().count(),
         cfg.stations,
         dir.join("waivers.vlt").display()
     );
     eprintln!(
-        "lint: verilator --lint-only -Wall {}/waivers.vlt {} --top-module merkur_dcm",
+        "lint: verilator --lint-only -Wall {}/waivers.vlt {} --top-module merkur_dcm_station",
         dir.display(),
         file.display()
     );
@@ -122,14 +122,14 @@ pub fn fault_table(cfg: &TbConfig, r: &TbRun) -> String {
     o
 }
 
-/// `merkur sim`: every station's `merkur_dcm` in Verilator against the model.
+/// `merkur sim`: every station's `merkur_dcm_station` in Verilator against the model.
 pub fn sim(path: &Path, text: &str, wave: Option<&Path>, show: usize) -> Result<bool, String> {
     let cfg = read(path, text)?;
     if let Some(w) = wave {
         crate::sim::check_wave_name(w)?;
     }
     let step = crate::progress::Step::start(format!(
-        "building the Verilator model of merkur_dcm (cached by the hash of its Verilog; {} stations, each its own instance)",
+        "building the Verilator model of merkur_dcm_station (cached by the hash of its Verilog; {} stations, each its own instance)",
         cfg.stations
     ));
     let t = std::time::Instant::now();

@@ -59,7 +59,7 @@ enum Cmd {
         output: Option<PathBuf>,
     },
     /// Write the Verilog of a scenario's ring (node modules, monitors, the `merkur_ring` top) and the lint waivers;
-    /// for a token-bus scenario, the station's DCM + RMM (`merkur_dcm`).
+    /// for a token-bus scenario, the station's DCM + RMM (`merkur_dcm_station`).
     Verilog {
         /// Scenario file (TOML).
         scenario: PathBuf,

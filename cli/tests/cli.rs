@@ -839,13 +839,16 @@ fn token_bus_scenarios_trace_emit_and_simulate() {
         vd.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let v = std::fs::read_to_string(vd.join("merkur_dcm.v")).unwrap();
-    assert!(v.contains("module merkur_dcm("), "no merkur_dcm module");
+    let v = std::fs::read_to_string(vd.join("merkur_dcm_station.v")).unwrap();
+    assert!(
+        v.contains("module merkur_dcm_station("),
+        "no merkur_dcm_station module"
+    );
     if let Err(err) = merkur_sim::verilator::lint(
-        &[&vd.join("waivers.vlt"), &vd.join("merkur_dcm.v")],
-        "merkur_dcm",
+        &[&vd.join("waivers.vlt"), &vd.join("merkur_dcm_station.v")],
+        "merkur_dcm_station",
     ) {
-        panic!("merkur_dcm.v lint:\n{err}");
+        panic!("merkur_dcm_station.v lint:\n{err}");
     }
     // Every station in Verilator against the model, with waveforms.
     let w = d.join("kill.fst");

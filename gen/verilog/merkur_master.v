@@ -2290,7 +2290,7 @@ endmodule // merkur_master__node__dark
 //
 // Everything else, including J K, idles, bad groups and packets after a
 // rejected header (`i_hdr_bad`), passes unchanged; three idle groups in a
-// row end a packet that was cut short upstream (as [`crate::line::rx_word`]), and
+// row end a packet that was cut short upstream (as [`crate::line::word_rx`]), and
 // so does a dead INPUT (no bit for [`DEAD_CLOCKS`]: the clock recovery
 // muted), which also refills the
 // group delay with idles. A frame whose header was processed toggles the
@@ -3776,7 +3776,7 @@ endmodule // merkur_master__node__rep
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
 // | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
-// | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::line::rx_word::RxWord`] |
+// | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::line::word_rx::WordRx`] |
 // | `i_tst_fail` | in | 1 | static | as [`StreamCtl`] |
 // | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 // | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
@@ -3980,7 +3980,7 @@ endmodule // merkur_master__node__rx_bsr
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
 // | `i_los` | in | 1 | clock | loss of signal |
-// | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_compl`, `i_ptype` | in | | clock | word outputs of the receive chain (`i_compl`: data = NOT the previous word's, [`crate::line::rx_word`]) |
+// | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_compl`, `i_ptype` | in | | clock | word outputs of the receive chain (`i_compl`: data = NOT the previous word's, [`crate::line::word_rx`]) |
 // | `i_d12` | in | 1 | clock | the word's data bit 12 (a TST's H1 carries NOT ACK there) |
 // | `i_tst_fail` | in | 1 | static | a test signal counts as channel failure |
 // | `i_flush` | in | 1 | clock | the input moved to another line: the run of bad words restarts |
@@ -4096,24 +4096,24 @@ endmodule // merkur_master__node__rx_bsr__ctrl
 // # monitor — fibre monitor: decodes what a line carries (protocol §2–§5)
 //
 // Purpose: the receive chain of a node without the node: [`Cdr`] →
-// [`RxFramer`] → [`RxWord`]. Ring tops put one on every fibre; its word
+// [`FramerRx`] → [`WordRx`]. Ring tops put one on every fibre; its word
 // outputs are what is compared with the model's trace (cycle, slot, data,
 // parity ok), and its packet and slot position is where a fault is placed at
 // a given (cycle, slot). It is also the receive half of every node.
 //
-// Parameters: the word format ([`WordFormat`]), as [`RxWord::new`].
+// Parameters: the word format ([`WordFormat`]), as [`WordRx::new`].
 //
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
 // | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit), bit 0 first |
-// | `i_slots_m1`, `i_address` | in | 12 | static | as [`RxWord`] |
+// | `i_slots_m1`, `i_address` | in | 12 | static | as [`WordRx`] |
 // | `i_flush` | in | 1 | clock | the input was switched to another line: the packet ends, a held word is dropped |
 // | `o_los` | out | 1 | clock | loss of signal |
 // | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 // | `o_start` | out | 1 | clock | J K found |
 // | `o_inpkt` | out | 1 | clock | inside a packet |
-// | `o_wvalid` … `o_ptype` | out | | clock | as [`RxWord`] |
+// | `o_wvalid` … `o_ptype` | out | | clock | as [`WordRx`] |
 //
 // **Confirmation.** A word is passed on only when the line shows an edge
 // (a code 1) after its last bit: every group that can follow a word (data,
@@ -4496,9 +4496,9 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los
     always @(posedge clock) los_flag_q <= los_flag_d;
 endmodule // merkur_master__node__rx_bsr__mon__cdr
 // --------------------------------------------------------------------------
-// `framer`: RxFramer, NRZI decoder, J K hunter and group aligner. (rtl/src/line/rx_framer.rs)
+// `framer`: FramerRx, NRZI decoder, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
 //
-// # rx_framer — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
+// # framer_rx — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
 //
 // Purpose: turns recovered line levels into code groups. While hunting it
 // compares the last 10 code bits with J K at every bit position; on a match
@@ -4636,12 +4636,12 @@ module merkur_master__node__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_st
     always @(posedge clock) idle_q <= idle_d;
 endmodule // merkur_master__node__rx_bsr__mon__framer
 // --------------------------------------------------------------------------
-// `word`: RxWord, Word assembler and checker. (rtl/src/line/rx_word.rs)
+// `word`: WordRx, Word assembler and checker. (rtl/src/line/word_rx.rs)
 //
-// # rx_word — word assembler, parity check, slot counter (protocol §4, §5, §7)
+// # word_rx — word assembler, parity check, slot counter (protocol §4, §5, §7)
 //
 // Purpose: the receive half of the paper's slot shift register. It collects
-// the code groups of a packet (from [`crate::line::rx_framer`]) into words,
+// the code groups of a packet (from [`crate::line::framer_rx`]) into words,
 // decodes them (4B/5B), checks both odd parities, counts words into header
 // words and slots, checks the header (type, slot count), compares the slot
 // number with the node's address (DIP switches → `i_address`) and tells the
@@ -4659,7 +4659,7 @@ endmodule // merkur_master__node__rx_bsr__mon__framer
 // | `i_start` | in | 1 | clock | packet start (J K found) |
 // | `i_gvalid` | in | 1 | clock | `i_group` is valid |
 // | `i_group` | in | 5 | clock | code group |
-// | `i_idle` | in | 1 | clock | `i_group` is the idle group 11111 (from [`crate::line::rx_framer`]'s register) |
+// | `i_idle` | in | 1 | clock | `i_group` is the idle group 11111 (from [`crate::line::framer_rx`]'s register) |
 // | `i_slots_m1` | in | 12 | static | configured slot count − 1 |
 // | `i_address` | in | 12 | static | node address (home slot) |
 // | `o_end` | out | 1 | clock | packet over (to the framer's `i_end`) |
@@ -5795,7 +5795,7 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,
     always @(posedge clock) los_flag_q <= los_flag_d;
 endmodule // merkur_master__node__rx_in__mon__cdr
 // --------------------------------------------------------------------------
-// `framer`: RxFramer, NRZI decoder, J K hunter and group aligner. (rtl/src/line/rx_framer.rs)
+// `framer`: FramerRx, NRZI decoder, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
 // Documented at module `merkur_master__node__rx_bsr__mon__framer` above.
 // --------------------------------------------------------------------------
 module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
@@ -5900,7 +5900,7 @@ module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_sta
     always @(posedge clock) idle_q <= idle_d;
 endmodule // merkur_master__node__rx_in__mon__framer
 // --------------------------------------------------------------------------
-// `word`: RxWord, Word assembler and checker. (rtl/src/line/rx_word.rs)
+// `word`: WordRx, Word assembler and checker. (rtl/src/line/word_rx.rs)
 // Documented at module `merkur_master__node__rx_bsr__mon__word` above.
 // --------------------------------------------------------------------------
 module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_slots_m1,i_address,o_end,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);

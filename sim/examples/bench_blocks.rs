@@ -3,11 +3,11 @@
 //! Verilog, and rust-hdl's own `Simulation` on the same Rust description.
 //!
 //! Run: `cargo run --release -p merkur-sim --example bench_blocks [CLOCKS]`
-//! The block is the fibre monitor (cdr + rx_framer + rx_word, 12-bit slot
+//! The block is the fibre monitor (cdr + framer_rx + word_rx, 12-bit slot
 //! counter), driven with the line samples of idles and frames.
 
 use merkur_model::line::{nrzi_encode, push_group, CODE_I, CODE_J, CODE_K, DATA_CODES};
-use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor};
 use merkur_sim::verilator::Model;
 use rust_hdl::prelude::*;

@@ -1,5 +1,5 @@
 //! Switchover latency and frames lost per fault class of the IEEE 802.4
-//! DCM + RMM, measured on the RTL (every station's `merkur_dcm` in
+//! DCM + RMM, measured on the RTL (every station's `merkur_dcm_station` in
 //! Verilator, closed loop with the model's token bus) for every token-bus
 //! scenario in tb-data/, at 5 and 10 Mbit/s. Prints Markdown tables for
 //! docs/benchmarks.md; exits 1 if any run disagrees with the model.

@@ -1,5 +1,5 @@
 //! Token-bus scenarios through the RTL: every station's DCM + RMM
-//! (`merkur_dcm`, rtl/src/tokenbus/dcm_station.rs) is its own Verilated instance,
+//! (`merkur_dcm_station`, rtl/src/tokenbus/dcm_station.rs) is its own Verilated instance,
 //! driven by the model's token-bus MACs and channels
 //! ([`merkur_model::tokenbus::run_with`]) in closed loop, and every output
 //! of every station in every octet is compared with the reference RMM's
@@ -13,7 +13,7 @@ use merkur_rtl::tokenbus::dcm_station::dcm_verilog;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-/// Port indices of `merkur_dcm`.
+/// Port indices of `merkur_dcm_station`.
 struct Ports {
     clock: usize,
     rx_a: usize,
@@ -94,7 +94,7 @@ impl Ports {
     }
 }
 
-/// One station's Verilated `merkur_dcm`.
+/// One station's Verilated `merkur_dcm_station`.
 struct VStation {
     m: Model,
     p: Ports,
@@ -102,7 +102,7 @@ struct VStation {
 
 impl VStation {
     fn new(verilog: &str, c: RmmConfig, wave: Option<&Path>) -> Result<VStation, String> {
-        let mut m = Model::build_top_traced(verilog, "merkur_dcm", wave)?;
+        let mut m = Model::build_top_traced(verilog, "merkur_dcm_station", wave)?;
         let p = Ports::of(&m);
         for (name, v) in [
             ("i_addr", c.addr as u64),
@@ -270,7 +270,7 @@ pub fn diff(a: &RmmOut, b: &RmmOut) -> Vec<String> {
 /// [`run`] uses (with tracing when `wave`), so that a caller can show the
 /// build as a step of its own; [`run`] then finds it in the process.
 pub fn build_model(wave: bool) -> Result<(), String> {
-    crate::verilator::build_library_top(&dcm_verilog(), "merkur_dcm", wave).map(|_| ())
+    crate::verilator::build_library_top(&dcm_verilog(), "merkur_dcm_station", wave).map(|_| ())
 }
 
 /// Runs `cfg` through the RTL and compares it with the reference model.
@@ -289,7 +289,7 @@ pub fn run(cfg: &TbConfig, opts: &Options) -> Result<Report, String> {
     }
     let t0 = Instant::now();
     // Build (or find) the library once before the run.
-    crate::verilator::build_library_top(&verilog, "merkur_dcm", opts.wave.is_some())?;
+    crate::verilator::build_library_top(&verilog, "merkur_dcm_station", opts.wave.is_some())?;
     let build = t0.elapsed();
     let model = tokenbus::run(cfg);
     let mut waves = vec![];

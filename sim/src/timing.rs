@@ -126,7 +126,7 @@ fn group_name(v: u64) -> String {
     }
 }
 
-/// A received word's kind (rtl/src/line/rx_word.rs `o_kind`; protocol
+/// A received word's kind (rtl/src/line/word_rx.rs `o_kind`; protocol
 /// §3: the two header words, then the slots).
 fn kind_name(v: u64) -> String {
     match v {

@@ -1,4 +1,4 @@
-//! The IEEE 802.4 DCM + RMM (`merkur_dcm`) in Verilator against the
+//! The IEEE 802.4 DCM + RMM (`merkur_dcm_station`) in Verilator against the
 //! reference model, in closed loop with the model's token bus: every
 //! token-bus scenario in tb-data/ (every state and transition of the fault
 //! correction machine is reached, see `every_transition_is_reached`), every

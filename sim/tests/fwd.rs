@@ -10,7 +10,7 @@ use merkur_model::config::{self, Config};
 use merkur_model::line::{nrzi_encode, push_group, CODE_I};
 use merkur_model::ring::{self, sensor_value, Carry, CycleRecord, EventKind, HeaderRx, Slot};
 use merkur_model::scenario::Kind;
-use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor, node::fwd::Fwd};
 use merkur_sim::stim::{frame_code, seen, PacketReader, Seen};
 use merkur_sim::{line_samples, pair_to_samples, repo_root, sample_words, verilator::Model, Rng};

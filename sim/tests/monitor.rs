@@ -1,4 +1,4 @@
-//! The fibre monitor (cdr + rx_framer + rx_word) in Verilator decodes what
+//! The fibre monitor (cdr + framer_rx + word_rx) in Verilator decodes what
 //! the reference model says each fibre carried, cycle by cycle, slot by slot,
 //! from a line whose bit clock is off by ±2000 ppm (two nodes at ±1000 ppm)
 //! with jitter. The model's fibre contents (tb-data scenarios) are turned
@@ -12,7 +12,7 @@ use merkur_model::line::{
     mark_code_bits, nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K, CODE_S,
 };
 use merkur_model::ring::{self, Carry, HeaderRx, Slot};
-use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor};
 use merkur_sim::stim::Seen;
 use merkur_sim::{line_samples, repo_root, sample_words, verilator::Model, Rng};

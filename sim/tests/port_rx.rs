@@ -8,7 +8,7 @@
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::Header;
-use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::node::stream_ctl::{BAD_WORDS, TST_HOLD_CLOCKS};
 use merkur_rtl::{emit::verilog::block_verilog, node::port_rx::PortRx};
 use merkur_sim::stim::tst_code;

@@ -8,7 +8,7 @@
 
 use merkur_model::line::{nrzi_encode, push_group, Word, CODE_I};
 use merkur_model::ring::{Frame, Header, HeaderRx, Mode, Slot};
-use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor, node::slave::Slave};
 use merkur_sim::stim::{frame_code, tst_code, PacketReader, Seen};
 use merkur_sim::{line_samples, pair_to_samples, sample_words, verilator::Model, Rng};

@@ -9,7 +9,7 @@
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
-use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::{
     emit::verilog::block_verilog, line::monitor::Monitor, node::special_master::SpecialMaster,
 };

@@ -5,7 +5,7 @@
 //! the block's, and the stimulus is in it, value change by value change.
 
 use fst_reader::{FstFilter, FstHierarchyEntry, FstReader, FstSignalValue};
-use merkur_rtl::line::rx_word::WordFormat;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor};
 use merkur_sim::verilator::Model;
 use std::collections::HashMap;

@@ -92,9 +92,9 @@ pub fn standard_files() -> Vec<StandardFile> {
             &sized,
         ),
         StandardFile {
-            name: "merkur_dcm.v",
+            name: "merkur_dcm_station.v",
             text: header(
-                "merkur_dcm",
+                "merkur_dcm_station",
                 "one IEEE 802.4 token-bus station's Dual Channel Manager with its redundancy management (RMM)",
                 "rtl/src/tokenbus/dcm_station.rs",
                 "none.",

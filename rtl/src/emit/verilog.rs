@@ -1,6 +1,6 @@
 //! Verilog emission of single blocks (for tests, lint and synthesis checks).
 
-use crate::line::rx_word::WordFormat;
+use crate::line::word_rx::WordFormat;
 use rust_hdl::prelude::*;
 
 /// The Verilog of a block as a top module named `top`, after rust-hdl's
@@ -171,14 +171,14 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
         ("dec5b4b", block_verilog(dec5b4b::Dec5b4b::default())),
         ("cdr", block_verilog(cdr::Cdr::default())),
         ("nrzi_tx", block_verilog(nrzi_tx::NrziTx::default())),
-        ("rx_framer", block_verilog(rx_framer::RxFramer::new())),
+        ("framer_rx", block_verilog(framer_rx::FramerRx::new())),
         (
-            "rx_word",
-            block_verilog(rx_word::RxWord::new(WordFormat::Basic)),
+            "word_rx",
+            block_verilog(word_rx::WordRx::new(WordFormat::Basic)),
         ),
         (
-            "rx_word_ext",
-            block_verilog(rx_word::RxWord::new(WordFormat::ExtendedAlarm)),
+            "word_rx_ext",
+            block_verilog(word_rx::WordRx::new(WordFormat::ExtendedAlarm)),
         ),
         (
             "monitor",

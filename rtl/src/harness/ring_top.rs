@@ -95,7 +95,7 @@
 //! of the frame whose H1 its PI fibre showed last (its slot comes after).
 
 use crate::emit::verilog::{block_verilog, mem_depth, rename_top, size_memories};
-use crate::line::rx_word::WordFormat;
+use crate::line::word_rx::WordFormat;
 use merkur_model::scenario::Kind;
 
 /// Ticks of the simulation clock per nominal bit time (one tick per

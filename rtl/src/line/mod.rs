@@ -6,16 +6,16 @@
 //! - [`dec5b4b`]: code group → nibble / control flags
 //! - [`nrzi_tx`]: serializer with NRZI
 //! - [`cdr`]: 8×-oversampling clock and data recovery, loss of signal
-//! - [`rx_framer`]: NRZI decode, J K detection, group alignment
-//! - [`rx_word`]: word assembly, parity check, header check, slot counter
-//! - [`monitor`]: cdr + rx_framer + rx_word, the fibre monitor and receive half of a node
+//! - [`framer_rx`]: NRZI decode, J K detection, group alignment
+//! - [`word_rx`]: word assembly, parity check, header check, slot counter
+//! - [`monitor`]: cdr + framer_rx + word_rx, the fibre monitor and receive half of a node
 //! - [`retime`]: elastic output buffer, sends forwarded bits on the node's own clock
 
 pub mod cdr;
 pub mod dec5b4b;
 pub mod enc4b5b;
+pub mod framer_rx;
 pub mod monitor;
 pub mod nrzi_tx;
 pub mod retime;
-pub mod rx_framer;
-pub mod rx_word;
+pub mod word_rx;

@@ -1,24 +1,24 @@
 //! # monitor — fibre monitor: decodes what a line carries (protocol §2–§5)
 //!
 //! Purpose: the receive chain of a node without the node: [`Cdr`] →
-//! [`RxFramer`] → [`RxWord`]. Ring tops put one on every fibre; its word
+//! [`FramerRx`] → [`WordRx`]. Ring tops put one on every fibre; its word
 //! outputs are what is compared with the model's trace (cycle, slot, data,
 //! parity ok), and its packet and slot position is where a fault is placed at
 //! a given (cycle, slot). It is also the receive half of every node.
 //!
-//! Parameters: the word format ([`WordFormat`]), as [`RxWord::new`].
+//! Parameters: the word format ([`WordFormat`]), as [`WordRx::new`].
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit), bit 0 first |
-//! | `i_slots_m1`, `i_address` | in | 12 | static | as [`RxWord`] |
+//! | `i_slots_m1`, `i_address` | in | 12 | static | as [`WordRx`] |
 //! | `i_flush` | in | 1 | clock | the input was switched to another line: the packet ends, a held word is dropped |
 //! | `o_los` | out | 1 | clock | loss of signal |
 //! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
 //! | `o_start` | out | 1 | clock | J K found |
 //! | `o_inpkt` | out | 1 | clock | inside a packet |
-//! | `o_wvalid` … `o_ptype` | out | | clock | as [`RxWord`] |
+//! | `o_wvalid` … `o_ptype` | out | | clock | as [`WordRx`] |
 //!
 //! **Confirmation.** A word is passed on only when the line shows an edge
 //! (a code 1) after its last bit: every group that can follow a word (data,
@@ -47,8 +47,8 @@
 //! ```
 
 use crate::line::cdr::Cdr;
-use crate::line::rx_framer::RxFramer;
-use crate::line::rx_word::{RxWord, WordFormat};
+use crate::line::framer_rx::FramerRx;
+use crate::line::word_rx::{WordFormat, WordRx};
 use rust_hdl::prelude::*;
 
 /// Fibre monitor / receive chain.
@@ -106,8 +106,8 @@ pub struct Monitor {
     /// Packet type.
     pub o_ptype: Signal<Out, Bits<2>>,
     cdr: Cdr,
-    framer: RxFramer,
-    word: RxWord,
+    framer: FramerRx,
+    word: WordRx,
     last_lvl: DFF<Bit>,
     quiet: DFF<Bits<3>>,
     // A held word waits for its confirming edge.
@@ -151,8 +151,8 @@ impl Monitor {
             o_hdr_bad: Default::default(),
             o_ptype: Default::default(),
             cdr: Default::default(),
-            framer: RxFramer::new(),
-            word: RxWord::new(format),
+            framer: FramerRx::new(),
+            word: WordRx::new(format),
             last_lvl: Default::default(),
             quiet: Default::default(),
             emit: Default::default(),
@@ -173,7 +173,7 @@ impl Logic for Monitor {
         self.cdr.i_samples.next = self.i_samples.val();
         self.framer.i_valid.next = self.cdr.o_valid.val();
         self.framer.i_level.next = self.cdr.o_bit.val();
-        // A packet ends after its last word, at the third idle group (rx_word),
+        // A packet ends after its last word, at the third idle group (word_rx),
         // or when the line goes quiet (the clock recovery muted: a dead or
         // switched line; what comes next is another stream).
         self.framer.i_end.next = self.word.o_end.val()

@@ -23,7 +23,7 @@
 //!
 //! Everything else, including J K, idles, bad groups and packets after a
 //! rejected header (`i_hdr_bad`), passes unchanged; three idle groups in a
-//! row end a packet that was cut short upstream (as [`crate::line::rx_word`]), and
+//! row end a packet that was cut short upstream (as [`crate::line::word_rx`]), and
 //! so does a dead INPUT (no bit for [`DEAD_CLOCKS`]: the clock recovery
 //! muted), which also refills the
 //! group delay with idles. A frame whose header was processed toggles the
@@ -281,7 +281,7 @@ impl Fwd {
             o_pkt_done: Default::default(),
             o_toggle: Default::default(),
             o_line: Default::default(),
-            jk: Constant::new(crate::line::rx_framer::JK_BITS.to_bits()),
+            jk: Constant::new(crate::line::framer_rx::JK_BITS.to_bits()),
             dead_after: Constant::new(DEAD_CLOCKS.to_bits()),
             prev: Default::default(),
             window: Default::default(),
@@ -847,7 +847,7 @@ impl Logic for Fwd {
                 if self.bitc.q.val() == 4 {
                     // A group is complete: stage B takes it next clock,
                     // unless it is the third idle group in a row: then the
-                    // packet was cut short upstream (as rx_word), and the
+                    // packet was cut short upstream (as word_rx), and the
                     // rest passes unchanged.
                     self.bitc.d.next = 0.into();
                     self.idles.d.next = 0.into();

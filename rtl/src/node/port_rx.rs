@@ -7,7 +7,7 @@
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_samples` | in | 4 | clock | line samples (quadrature DDR, 8 per bit) |
-//! | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::line::rx_word::RxWord`] |
+//! | `i_slots_m1`, `i_address` | in | 12 | static | as [`crate::line::word_rx::WordRx`] |
 //! | `i_tst_fail` | in | 1 | static | as [`StreamCtl`] |
 //! | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 //! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
@@ -23,7 +23,7 @@
 //! ```
 
 use crate::line::monitor::Monitor;
-use crate::line::rx_word::WordFormat;
+use crate::line::word_rx::WordFormat;
 use crate::node::stream_ctl::StreamCtl;
 use rust_hdl::prelude::*;
 

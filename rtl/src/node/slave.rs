@@ -48,7 +48,7 @@
 //! ```
 
 use crate::line::retime::Retime;
-use crate::line::rx_word::WordFormat;
+use crate::line::word_rx::WordFormat;
 use crate::node::fwd::Fwd;
 use crate::node::port_rx::PortRx;
 use crate::node::sw_dark::SwDark;

@@ -111,7 +111,7 @@
 
 use crate::line::dec5b4b::Dec5b4b;
 use crate::line::retime::Retime;
-use crate::line::rx_word::WordFormat;
+use crate::line::word_rx::WordFormat;
 use crate::node::fwd::Fwd;
 use crate::node::mdb::Mdb;
 use crate::node::pkt_tx::PktTx;
@@ -504,7 +504,7 @@ impl Default for SpecialMaster {
             tick: Default::default(),
             unwrap_lead: Constant::new(UNWRAP_LEAD_BITS.to_bits()),
             one: Constant::new(1.into()),
-            jk_bits: Constant::new(crate::line::rx_framer::JK_BITS.to_bits()),
+            jk_bits: Constant::new(crate::line::framer_rx::JK_BITS.to_bits()),
             takeover_lead: Constant::new(TAKEOVER_LEAD_BITS.to_bits()),
             unwrap_at: Default::default(),
             st: Default::default(),

@@ -28,7 +28,7 @@
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
 //! | `i_los` | in | 1 | clock | loss of signal |
-//! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_compl`, `i_ptype` | in | | clock | word outputs of the receive chain (`i_compl`: data = NOT the previous word's, [`crate::line::rx_word`]) |
+//! | `i_wvalid`, `i_kind`, `i_ok`, `i_void`, `i_marked`, `i_compl`, `i_ptype` | in | | clock | word outputs of the receive chain (`i_compl`: data = NOT the previous word's, [`crate::line::word_rx`]) |
 //! | `i_d12` | in | 1 | clock | the word's data bit 12 (a TST's H1 carries NOT ACK there) |
 //! | `i_tst_fail` | in | 1 | static | a test signal counts as channel failure |
 //! | `i_flush` | in | 1 | clock | the input moved to another line: the run of bad words restarts |

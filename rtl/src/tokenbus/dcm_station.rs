@@ -1,6 +1,6 @@
 //! # dcm_station — one token-bus station's redundancy hardware (docs/protocol.md Part II)
 //!
-//! Purpose: the paper's Figure 5 in one block, emitted as `merkur_dcm`: the
+//! Purpose: the paper's Figure 5 in one block, emitted as `merkur_dcm_station`: the
 //! Dual Channel Manager ([`crate::tokenbus::dcm`]) between the MAC and the two PHYs,
 //! and the Redundancy Management Module — fault detection from the MAC's
 //! events ([`crate::tokenbus::rmm_detect`]), status frame production
@@ -228,9 +228,9 @@ impl Logic for DcmStation {
     }
 }
 
-/// The Verilog of the station, top module `merkur_dcm` (its blocks as
-/// `merkur_dcm__...` submodules), every memory zero at power-up.
+/// The Verilog of the station, top module `merkur_dcm_station` (its blocks as
+/// `merkur_dcm_station__...` submodules), every memory zero at power-up.
 pub fn dcm_verilog() -> String {
     let v = crate::emit::verilog::block_verilog(DcmStation::default());
-    crate::emit::verilog::rename_top(&v, "merkur_dcm")
+    crate::emit::verilog::rename_top(&v, "merkur_dcm_station")
 }

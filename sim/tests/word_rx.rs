@@ -1,4 +1,4 @@
-//! rx_word in Verilator against the model: every word of random packets
+//! word_rx in Verilator against the model: every word of random packets
 //! (data, alarm, VOID, words with a single line-bit error, words a
 //! forwarder marked, bad and foreign headers, TST packets) is classified and
 //! decoded as `merkur_model::line::
@@ -13,7 +13,7 @@ use merkur_model::line::{
 use merkur_model::ring::Header;
 use merkur_rtl::{
     emit::verilog::block_verilog,
-    line::rx_word::{RxWord, WordFormat},
+    line::word_rx::{WordFormat, WordRx},
 };
 use merkur_sim::{verilator::Model, Rng};
 
@@ -39,7 +39,7 @@ fn check(ext: bool) {
     } else {
         WordFormat::Basic
     };
-    let mut m = Model::build(&block_verilog(RxWord::new(format))).unwrap();
+    let mut m = Model::build(&block_verilog(WordRx::new(format))).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
     let (clk, st, gv, gr) = (
         p(&m, "clock"),
@@ -49,7 +49,7 @@ fn check(ext: bool) {
     );
     let marked = m.port("o_marked");
     let compl = m.port("o_compl");
-    // The framer's idle flag beside the group (rx_framer's test checks it).
+    // The framer's idle flag beside the group (framer_rx's test checks it).
     let idle = m.port("i_idle");
     let (end, wv, kind, slot, data, alive, alarm, reason, ok, void, own, hbad) = (
         p(&m, "o_end"),
@@ -249,11 +249,11 @@ fn check(ext: bool) {
 }
 
 #[test]
-fn rx_word_matches_the_model() {
+fn word_rx_matches_the_model() {
     check(false);
 }
 
 #[test]
-fn rx_word_ext_matches_the_model() {
+fn word_rx_ext_matches_the_model() {
     check(true);
 }

@@ -1,7 +1,7 @@
-//! # rx_word — word assembler, parity check, slot counter (protocol §4, §5, §7)
+//! # word_rx — word assembler, parity check, slot counter (protocol §4, §5, §7)
 //!
 //! Purpose: the receive half of the paper's slot shift register. It collects
-//! the code groups of a packet (from [`crate::line::rx_framer`]) into words,
+//! the code groups of a packet (from [`crate::line::framer_rx`]) into words,
 //! decodes them (4B/5B), checks both odd parities, counts words into header
 //! words and slots, checks the header (type, slot count), compares the slot
 //! number with the node's address (DIP switches → `i_address`) and tells the
@@ -19,7 +19,7 @@
 //! | `i_start` | in | 1 | clock | packet start (J K found) |
 //! | `i_gvalid` | in | 1 | clock | `i_group` is valid |
 //! | `i_group` | in | 5 | clock | code group |
-//! | `i_idle` | in | 1 | clock | `i_group` is the idle group 11111 (from [`crate::line::rx_framer`]'s register) |
+//! | `i_idle` | in | 1 | clock | `i_group` is the idle group 11111 (from [`crate::line::framer_rx`]'s register) |
 //! | `i_slots_m1` | in | 12 | static | configured slot count − 1 |
 //! | `i_address` | in | 12 | static | node address (home slot) |
 //! | `o_end` | out | 1 | clock | packet over (to the framer's `i_end`) |
@@ -60,7 +60,7 @@ use std::collections::BTreeMap;
 
 /// Word assembler and checker.
 #[derive(LogicBlock)]
-pub struct RxWord {
+pub struct WordRx {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// Packet start.
@@ -155,7 +155,7 @@ pub struct RxWord {
 }
 
 /// The word format a receiver reads (protocol §6): the parameter of
-/// [`RxWord`], [`crate::line::monitor::Monitor`] and [`crate::node::port_rx::PortRx`].
+/// [`WordRx`], [`crate::line::monitor::Monitor`] and [`crate::node::port_rx::PortRx`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum WordFormat {
     /// 25-bit words (five code groups): the basic variant.
@@ -165,7 +165,7 @@ pub enum WordFormat {
     ExtendedAlarm,
 }
 
-impl RxWord {
+impl WordRx {
     /// A word assembler for 25-bit words ([`WordFormat::Basic`]) or 30-bit
     /// extended-alarm words ([`WordFormat::ExtendedAlarm`]).
     pub fn new(format: WordFormat) -> Self {
@@ -249,7 +249,7 @@ impl RxWord {
     }
 }
 
-impl Logic for RxWord {
+impl Logic for WordRx {
     // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
     // the block's Verilog and cannot call helper methods.
     #[hdl_gen]

@@ -1,4 +1,4 @@
-//! rx_framer in Verilator: finds every packet start, groups every packet
+//! framer_rx in Verilator: finds every packet start, groups every packet
 //! exactly as the model's code-bit stream has them, ignores packets whose
 //! J K was destroyed, and is not fooled by single line-bit errors in data;
 //! `o_idle` flags exactly the idle groups (a packet cut short upstream
@@ -8,7 +8,7 @@ use merkur_model::line::{
     find_jk, nrzi_decode, nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K,
     CODE_S,
 };
-use merkur_rtl::{emit::verilog::block_verilog, line::rx_framer::RxFramer};
+use merkur_rtl::{emit::verilog::block_verilog, line::framer_rx::FramerRx};
 use merkur_sim::{verilator::Model, Rng};
 
 struct Frame {
@@ -84,7 +84,7 @@ fn frames_are_found_and_grouped_like_the_model() {
         assert_eq!(found, !f.jk_destroyed, "seed {seed}: stream construction");
     }
 
-    let mut m = Model::build(&block_verilog(RxFramer::new())).unwrap();
+    let mut m = Model::build(&block_verilog(FramerRx::new())).unwrap();
     let (clk, v, lvl, end, start, gv, grp) = (
         m.port("clock"),
         m.port("i_valid"),

@@ -1,4 +1,4 @@
-//! # rx_framer — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
+//! # framer_rx — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
 //!
 //! Purpose: turns recovered line levels into code groups. While hunting it
 //! compares the last 10 code bits with J K at every bit position; on a match
@@ -41,7 +41,7 @@ pub const JK_BITS: u64 = 0b11000_10001;
 
 /// NRZI decoder, J K hunter and group aligner.
 #[derive(LogicBlock)]
-pub struct RxFramer {
+pub struct FramerRx {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// A recovered bit is valid.
@@ -72,7 +72,7 @@ pub struct RxFramer {
     jk: Constant<Bits<10>>,
 }
 
-impl RxFramer {
+impl FramerRx {
     /// A framer (no parameters).
     pub fn new() -> Self {
         Self {
@@ -99,13 +99,13 @@ impl RxFramer {
     }
 }
 
-impl Default for RxFramer {
+impl Default for FramerRx {
     fn default() -> Self {
         Self::new()
     }
 }
 
-impl Logic for RxFramer {
+impl Logic for FramerRx {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, prev, window, inpkt, count, start, gvalid, group, idle);

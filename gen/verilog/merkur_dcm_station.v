@@ -1,22 +1,22 @@
-// merkur_dcm.v — one IEEE 802.4 token-bus station's Dual Channel Manager with its redundancy management (RMM)
+// merkur_dcm_station.v — one IEEE 802.4 token-bus station's Dual Channel Manager with its redundancy management (RMM)
 //
 // Generated Verilog; do not edit. Generator: merkur-rtl 0.1.0 (rust-hdl 0.46.0),
 // from rtl/src/tokenbus/dcm_station.rs. `cargo run -p merkur-sim --example gen` rewrites this file and
 // sim/tests/gen.rs fails when it drifts from the generator.
 //
-// Top module: merkur_dcm. Build parameters: none.
-// Every other setting is a port (the port table is in the header of module merkur_dcm
+// Top module: merkur_dcm_station. Build parameters: none.
+// Every other setting is a port (the port table is in the header of module merkur_dcm_station
 // below). Clock: `clock`, twice the line rate (100 MHz for 50 Mbit/s); the fibre
 // inputs take 4 samples per clock (quadrature DDR capture), the outputs give a DDR
 // pair (docs/protocol.md §9; `merkur_ddr_in`/`merkur_ddr_out` in rtl/src/top/synth_top.rs).
-// Lint: verilator --lint-only -Wall waivers.vlt merkur_dcm.v --top-module merkur_dcm
+// Lint: verilator --lint-only -Wall waivers.vlt merkur_dcm_station.v --top-module merkur_dcm_station
 
 // --------------------------------------------------------------------------
 // DcmStation: One station's DCM and RMM. (rtl/src/tokenbus/dcm_station.rs)
 //
 // # dcm_station — one token-bus station's redundancy hardware (docs/protocol.md Part II)
 //
-// Purpose: the paper's Figure 5 in one block, emitted as `merkur_dcm`: the
+// Purpose: the paper's Figure 5 in one block, emitted as `merkur_dcm_station`: the
 // Dual Channel Manager ([`crate::tokenbus::dcm`]) between the MAC and the two PHYs,
 // and the Redundancy Management Module — fault detection from the MAC's
 // events ([`crate::tokenbus::rmm_detect`]), status frame production
@@ -60,7 +60,7 @@
 //            +-----------------------------------------------+
 // ```
 // --------------------------------------------------------------------------
-module merkur_dcm(clock,i_rx_a,i_rx_b,i_tx,i_ev,i_sf_sent,i_rx_sf,i_rx_sa,i_rx_sfw,i_cmd_rx,i_cmd_ch,i_cmd_sent,i_init,i_auto,i_host_ok,i_addr,i_stations,i_sf_period,i_chk_period,i_good_limit,o_tx_a,o_tx_b,o_rx,o_act,o_state,o_cause,o_irq,o_sf_pend,o_sf_word,o_cmd_req,o_cmd_ch,o_stat_a,o_stat_b,o_stale,o_chk_ok,o_chk_sw,o_ev_seen,i_nm_addr,o_nm_word,o_nm_valid);
+module merkur_dcm_station(clock,i_rx_a,i_rx_b,i_tx,i_ev,i_sf_sent,i_rx_sf,i_rx_sa,i_rx_sfw,i_cmd_rx,i_cmd_ch,i_cmd_sent,i_init,i_auto,i_host_ok,i_addr,i_stations,i_sf_period,i_chk_period,i_good_limit,o_tx_a,o_tx_b,o_rx,o_act,o_state,o_cause,o_irq,o_sf_pend,o_sf_word,o_cmd_req,o_cmd_ch,o_stat_a,o_stat_b,o_stale,o_chk_ok,o_chk_sw,o_ev_seen,i_nm_addr,o_nm_word,o_nm_valid);
 
     // Module arguments
     input wire  clock;
@@ -153,7 +153,7 @@ module merkur_dcm(clock,i_rx_a,i_rx_b,i_tx,i_ev,i_sf_sent,i_rx_sf,i_rx_sa,i_rx_s
     reg  [7:0] status;
 
     // Child blocks
-    merkur_dcm__dcm dcm(
+    merkur_dcm_station__dcm dcm(
         .clock(clock),
         .i_rx_a(i_rx_a),
         .i_rx_b(i_rx_b),
@@ -172,14 +172,14 @@ module merkur_dcm(clock,i_rx_a,i_rx_b,i_tx,i_ev,i_sf_sent,i_rx_sf,i_rx_sa,i_rx_s
         .o_stat_a(dcm__o_stat_a),
         .o_stat_b(dcm__o_stat_b)
     );
-    merkur_dcm__detect detect(
+    merkur_dcm_station__detect detect(
         .clock(clock),
         .i_ev(i_ev),
         .o_sc(detect__o_sc),
         .o_ns(detect__o_ns),
         .o_ev_seen(detect__o_ev_seen)
     );
-    merkur_dcm__sfp sfp(
+    merkur_dcm_station__sfp sfp(
         .clock(clock),
         .i_sf_period(i_sf_period),
         .i_sf_sent(i_sf_sent),
@@ -187,7 +187,7 @@ module merkur_dcm(clock,i_rx_a,i_rx_b,i_tx,i_ev,i_sf_sent,i_rx_sf,i_rx_sa,i_rx_s
         .o_sf_pend(sfp__o_sf_pend),
         .o_sf_word(sfp__o_sf_word)
     );
-    merkur_dcm__sfc sfc(
+    merkur_dcm_station__sfc sfc(
         .clock(clock),
         .i_chk_period(i_chk_period),
         .i_addr(i_addr),
@@ -206,7 +206,7 @@ module merkur_dcm(clock,i_rx_a,i_rx_b,i_tx,i_ev,i_sf_sent,i_rx_sf,i_rx_sa,i_rx_s
         .o_nm_word(sfc__o_nm_word),
         .o_nm_valid(sfc__o_nm_valid)
     );
-    merkur_dcm__fcm fcm(
+    merkur_dcm_station__fcm fcm(
         .clock(clock),
         .i_init(i_init),
         .i_auto(i_auto),
@@ -285,7 +285,7 @@ module merkur_dcm(clock,i_rx_a,i_rx_b,i_tx,i_ev,i_sf_sent,i_rx_sf,i_rx_sa,i_rx_s
         o_ev_seen = detect__o_ev_seen;
     end
 
-endmodule // merkur_dcm
+endmodule // merkur_dcm_station
 // --------------------------------------------------------------------------
 // `dcm`: Dcm, Dual Channel Manager. (rtl/src/tokenbus/dcm.rs)
 //
@@ -344,7 +344,7 @@ endmodule // merkur_dcm
 // o_rx       ..     D5     D6   D7   the MAC misses nothing
 // ```
 // --------------------------------------------------------------------------
-module merkur_dcm__dcm(clock,i_rx_a,i_rx_b,i_tx,i_sw,i_good_limit,o_tx_a,o_tx_b,o_rx,o_act,o_fault_a,o_fault_b,o_bad_a,o_bad_b,o_in_frame,o_stat_a,o_stat_b);
+module merkur_dcm_station__dcm(clock,i_rx_a,i_rx_b,i_tx,i_sw,i_good_limit,o_tx_a,o_tx_b,o_rx,o_act,o_fault_a,o_fault_b,o_bad_a,o_bad_b,o_in_frame,o_stat_a,o_stat_b);
 
     // Module arguments
     input wire  clock;
@@ -568,7 +568,7 @@ module merkur_dcm__dcm(clock,i_rx_a,i_rx_b,i_tx,i_sw,i_good_limit,o_tx_a,o_tx_b,
     always @(posedge clock) car_a_q <= car_a_d;
     initial car_b_q = 1'h0;
     always @(posedge clock) car_b_q <= car_b_d;
-endmodule // merkur_dcm__dcm
+endmodule // merkur_dcm_station__dcm
 // --------------------------------------------------------------------------
 // `detect`: RmmDetect, Fault detection from MAC events. (rtl/src/tokenbus/rmm_detect.rs)
 //
@@ -596,7 +596,7 @@ endmodule // merkur_dcm__dcm
 // o_ev_seen  000000  000000  000100
 // ```
 // --------------------------------------------------------------------------
-module merkur_dcm__detect(clock,i_ev,o_sc,o_ns,o_ev_seen);
+module merkur_dcm_station__detect(clock,i_ev,o_sc,o_ns,o_ev_seen);
 
     // Module arguments
     input wire  clock;
@@ -621,7 +621,7 @@ module merkur_dcm__detect(clock,i_ev,o_sc,o_ns,o_ev_seen);
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
     initial seen_q = 6'h0;
     always @(posedge clock) seen_q <= seen_d;
-endmodule // merkur_dcm__detect
+endmodule // merkur_dcm_station__detect
 // --------------------------------------------------------------------------
 // `fcm`: RmmFcm, The fault correction machine. (rtl/src/tokenbus/rmm_fcm.rs)
 //
@@ -683,7 +683,7 @@ endmodule // merkur_dcm__detect
 // i_act      A            B             B
 // ```
 // --------------------------------------------------------------------------
-module merkur_dcm__fcm(clock,i_init,i_auto,i_sc,i_ns,i_chk_ok,i_chk_sw,i_fault_a,i_fault_b,i_bad_a,i_bad_b,i_act,i_in_frame,i_cmd_rx,i_cmd_ch,i_cmd_sent,o_sw,o_state,o_cause,o_irq,o_cmd_req,o_cmd_ch);
+module merkur_dcm_station__fcm(clock,i_init,i_auto,i_sc,i_ns,i_chk_ok,i_chk_sw,i_fault_a,i_fault_b,i_bad_a,i_bad_b,i_act,i_in_frame,i_cmd_rx,i_cmd_ch,i_cmd_sent,o_sw,o_state,o_cause,o_irq,o_cmd_req,o_cmd_ch);
 
     // Module arguments
     input wire  clock;
@@ -923,7 +923,7 @@ module merkur_dcm__fcm(clock,i_init,i_auto,i_sc,i_ns,i_chk_ok,i_chk_sw,i_fault_a
     always @(posedge clock) cmd_req_q <= cmd_req_d;
     initial cmd_ch_q = 1'h0;
     always @(posedge clock) cmd_ch_q <= cmd_ch_d;
-endmodule // merkur_dcm__fcm
+endmodule // merkur_dcm_station__fcm
 // --------------------------------------------------------------------------
 // `sfc`: RmmSfc, Status frame check. (rtl/src/tokenbus/rmm_sfc.rs)
 //
@@ -973,7 +973,7 @@ endmodule // merkur_dcm__fcm
 // verdict   -        -      s0     ..     s30    s31, o_chk_ok / o_chk_sw
 // ```
 // --------------------------------------------------------------------------
-module merkur_dcm__sfc(clock,i_chk_period,i_addr,i_stations,i_bad_a,i_bad_b,i_act,i_rx_sf,i_rx_sa,i_rx_sfw,o_stale,o_chk_ok,o_chk_sw,o_rise,i_nm_addr,o_nm_word,o_nm_valid);
+module merkur_dcm_station__sfc(clock,i_chk_period,i_addr,i_stations,i_bad_a,i_bad_b,i_act,i_rx_sf,i_rx_sa,i_rx_sfw,o_stale,o_chk_ok,o_chk_sw,o_rise,i_nm_addr,o_nm_word,o_nm_valid);
 
     // Module arguments
     input wire  clock;
@@ -1046,7 +1046,7 @@ module merkur_dcm__sfc(clock,i_chk_period,i_addr,i_stations,i_bad_a,i_bad_b,i_ac
     reg  [31:0] mask;
 
     // Child blocks
-    merkur_dcm__sfc__st st(
+    merkur_dcm_station__sfc__st st(
         .read_address(st__read_address),
         .read_clock(clock),
         .read_data(st__read_data),
@@ -1055,7 +1055,7 @@ module merkur_dcm__sfc(clock,i_chk_period,i_addr,i_stations,i_bad_a,i_bad_b,i_ac
         .write_data(i_rx_sfw),
         .write_enable(st__write_enable)
     );
-    merkur_dcm__sfc__prev prev(
+    merkur_dcm_station__sfc__prev prev(
         .read_address(prev__read_address),
         .read_clock(clock),
         .read_data(prev__read_data),
@@ -1190,12 +1190,12 @@ module merkur_dcm__sfc(clock,i_chk_period,i_addr,i_stations,i_bad_a,i_bad_b,i_ac
     always @(posedge clock) rise_q <= rise_d;
     initial nm_valid_q = 1'h0;
     always @(posedge clock) nm_valid_q <= nm_valid_d;
-endmodule // merkur_dcm__sfc
+endmodule // merkur_dcm_station__sfc
 // --------------------------------------------------------------------------
-// `prev` of `merkur_dcm__sfc`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `prev` of `merkur_dcm_station__sfc`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
 // `read_address` on `read_clock`.
 // --------------------------------------------------------------------------
-module merkur_dcm__sfc__prev(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module merkur_dcm_station__sfc__prev(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
 
     // Module arguments
     input wire  [4:0] read_address;
@@ -1221,12 +1221,12 @@ module merkur_dcm__sfc__prev(read_address,read_clock,read_data,write_address,wri
        end
     end
 
-endmodule // merkur_dcm__sfc__prev
+endmodule // merkur_dcm_station__sfc__prev
 // --------------------------------------------------------------------------
-// `st` of `merkur_dcm__sfc`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `st` of `merkur_dcm_station__sfc`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
 // `read_address` on `read_clock`.
 // --------------------------------------------------------------------------
-module merkur_dcm__sfc__st(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+module merkur_dcm_station__sfc__st(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
 
     // Module arguments
     input wire  [4:0] read_address;
@@ -1252,7 +1252,7 @@ module merkur_dcm__sfc__st(read_address,read_clock,read_data,write_address,write
        end
     end
 
-endmodule // merkur_dcm__sfc__st
+endmodule // merkur_dcm_station__sfc__st
 // --------------------------------------------------------------------------
 // `sfp`: RmmSfp, Status frame production. (rtl/src/tokenbus/rmm_sfp.rs)
 //
@@ -1284,7 +1284,7 @@ endmodule // merkur_dcm__sfc__st
 // i_sf_sent  0      0      0      1      0
 // ```
 // --------------------------------------------------------------------------
-module merkur_dcm__sfp(clock,i_sf_period,i_sf_sent,i_status,o_sf_pend,o_sf_word);
+module merkur_dcm_station__sfp(clock,i_sf_period,i_sf_sent,i_status,o_sf_pend,o_sf_word);
 
     // Module arguments
     input wire  clock;
@@ -1335,4 +1335,4 @@ module merkur_dcm__sfp(clock,i_sf_period,i_sf_sent,i_status,o_sf_pend,o_sf_word)
     always @(posedge clock) live_q <= live_d;
     initial pend_q = 1'h0;
     always @(posedge clock) pend_q <= pend_d;
-endmodule // merkur_dcm__sfp
+endmodule // merkur_dcm_station__sfp
