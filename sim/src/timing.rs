@@ -387,10 +387,10 @@ fn simulate(src: &Source, work: &Path) -> Result<PathBuf, String> {
     }
 }
 
-/// Maps FST times to the source's unit: the ring top's tick counter
-/// (ticks, [`TICKS_PER_BIT`] to a bit time), or a station clock's rising
-/// edges (one per octet time). Returns (time base changes, unit name,
-/// ticks per unit).
+/// The source's time base: the signal that counts its ticks (the ring
+/// top's tick counter, [`TICKS_PER_BIT`] ticks to a bit time; a station's
+/// clock, whose rising edges [`Clock`] counts, one per octet time), the
+/// unit's name, and ticks per unit.
 fn time_base(src: &Source) -> (&'static str, &'static str, u64) {
     match src {
         Source::Ring(_) => ("top.top.tick", "bit times", u64::from(TICKS_PER_BIT)),
@@ -398,7 +398,7 @@ fn time_base(src: &Source) -> (&'static str, &'static str, u64) {
     }
 }
 
-/// A time in the source's ticks at FST time `t`.
+/// FST times to the source's ticks (the time base read from the waveform).
 struct Clock {
     /// (FST time, ticks from the start) at every change.
     marks: Vec<(u64, u64)>,
