@@ -45,7 +45,7 @@ pub enum Fmt {
 /// One row: a label and the FST name of its signal.
 pub struct Row {
     /// What the row shows.
-    pub label: &'static str,
+    pub label: String,
     /// Full dotted name in the waveform (`top.top.mon_0.o_slot`).
     pub signal: String,
     /// How its value is written.
@@ -99,8 +99,9 @@ pub struct Diagram {
     pub after: u64,
 }
 
-/// A ring-top signal by its name in the waveform.
-fn ring(name: &str) -> String {
+/// A signal of the simulated design by its name in the waveform: the
+/// model's `top` scope, the design's top module (`top`) in it.
+fn top(name: &str) -> String {
     format!("top.top.{name}")
 }
 
@@ -165,17 +166,17 @@ fn channel_name(v: u64) -> String {
 
 /// The diagrams in docs/timing/.
 pub fn diagrams() -> Vec<Diagram> {
-    let row = |label, name: &str, fmt| Row {
-        label,
-        signal: ring(name),
+    let row = |label: &str, name: &str, fmt| Row {
+        label: label.to_string(),
+        signal: top(name),
         fmt,
         strobe: None,
     };
-    let word = |label, name: &str, fmt, strobe: &str| Row {
-        label,
-        signal: ring(name),
+    let word = |label: &str, name: &str, fmt, strobe: &str| Row {
+        label: label.to_string(),
+        signal: top(name),
         fmt,
-        strobe: Some(ring(strobe)),
+        strobe: Some(top(strobe)),
     };
     let mut wrap_rows = vec![
         row("P3 line (node 3 → 4)", "line_3", Fmt::Bit),
@@ -184,28 +185,12 @@ pub fn diagrams() -> Vec<Diagram> {
         row("S2 in packet (3 → 2)", "mon_10.o_inpkt", Fmt::Bit),
     ];
     for k in 0..8 {
-        wrap_rows.push(Row {
-            label: [
-                "node 0 mode",
-                "node 1 mode",
-                "node 2 mode",
-                "node 3 mode",
-                "node 4 mode",
-                "node 5 mode",
-                "node 6 mode",
-                "node 7 mode",
-            ][k],
-            signal: ring(&format!("mode_{k}")),
-            fmt: Fmt::Named(mode_name),
-            strobe: None,
-        });
+        wrap_rows.push(row(
+            &format!("node {k} mode"),
+            &format!("mode_{k}"),
+            Fmt::Named(mode_name),
+        ));
     }
-    let st = |label, name: &str, fmt| Row {
-        label,
-        signal: format!("top.top.{name}"),
-        fmt,
-        strobe: None,
-    };
     vec![
         Diagram {
             file: "frame.svg",
@@ -232,7 +217,7 @@ pub fn diagrams() -> Vec<Diagram> {
                 word("data", "mon_0.o_data", Fmt::Hex, "mon_0.o_wvalid"),
             ],
             anchor: Anchor {
-                signal: ring("mon_0.framer__o_start"),
+                signal: top("mon_0.framer__o_start"),
                 value: 1,
                 nth: 3,
             },
@@ -254,7 +239,7 @@ pub fn diagrams() -> Vec<Diagram> {
                 word("P1 word: data", "mon_1.o_data", Fmt::Hex, "mon_1.o_wvalid"),
             ],
             anchor: Anchor {
-                signal: ring("mon_0.o_slot"),
+                signal: top("mon_0.o_slot"),
                 value: 1,
                 nth: 3,
             },
@@ -267,7 +252,7 @@ pub fn diagrams() -> Vec<Diagram> {
             source: Source::Ring("tb-data/demo_8_break.toml"),
             rows: wrap_rows,
             anchor: Anchor {
-                signal: ring("fib_3.brk"),
+                signal: top("fib_3.brk"),
                 value: 1,
                 nth: 1,
             },
@@ -282,18 +267,18 @@ pub fn diagrams() -> Vec<Diagram> {
                 station: 3,
             },
             rows: vec![
-                st("PHY A symbol", "i_rx_a", Fmt::Named(symbol_name)),
-                st("PHY B symbol", "i_rx_b", Fmt::Named(symbol_name)),
-                st("fault A", "dcm__o_fault_a", Fmt::Bit),
-                st("fault B", "dcm__o_fault_b", Fmt::Bit),
-                st("FCM state", "o_state", Fmt::Named(state_name)),
-                st("cause", "o_cause", Fmt::Named(cause_name)),
-                st("interrupt", "o_irq", Fmt::Bit),
-                st("active channel", "o_act", Fmt::Named(channel_name)),
-                st("MAC symbol", "o_rx", Fmt::Named(symbol_name)),
+                row("PHY A symbol", "i_rx_a", Fmt::Named(symbol_name)),
+                row("PHY B symbol", "i_rx_b", Fmt::Named(symbol_name)),
+                row("fault A", "dcm__o_fault_a", Fmt::Bit),
+                row("fault B", "dcm__o_fault_b", Fmt::Bit),
+                row("FCM state", "o_state", Fmt::Named(state_name)),
+                row("cause", "o_cause", Fmt::Named(cause_name)),
+                row("interrupt", "o_irq", Fmt::Bit),
+                row("active channel", "o_act", Fmt::Named(channel_name)),
+                row("MAC symbol", "o_rx", Fmt::Named(symbol_name)),
             ],
             anchor: Anchor {
-                signal: "top.top.o_act".into(),
+                signal: top("o_act"),
                 value: 1,
                 nth: 1,
             },
@@ -532,7 +517,7 @@ fn svg(
     for (i, (row, ch)) in rows.iter().enumerate() {
         let y = TOP + ROW * i as f64;
         let p = Place {
-            label: row.label,
+            label: &row.label,
             hi: y + 4.0,
             lo: y + 4.0 + HIGH,
             xs: &xs,
@@ -542,7 +527,7 @@ fn svg(
             body,
             "<text x=\"10\" y=\"{:.1}\">{}</text>",
             p.lo - 4.0,
-            esc(row.label)
+            esc(&row.label)
         );
         draw_row(
             &mut body,
