@@ -30,13 +30,15 @@ fn main() {
     }
     let timing = merkur_sim::repo_root().join("docs/timing");
     let work = std::env::temp_dir().join(format!("merkur-timing-{}", std::process::id()));
-    for d in merkur_sim::timing::diagrams() {
-        match merkur_sim::timing::render(&d, &work) {
-            Ok(svg) => write(&timing.join(d.file), &svg),
-            Err(e) => {
-                eprintln!("error: {}: {e}", d.file);
-                std::process::exit(1);
+    match merkur_sim::timing::render_all(&merkur_sim::timing::diagrams(), &work) {
+        Ok(all) => {
+            for (file, svg) in all {
+                write(&timing.join(file), &svg);
             }
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            std::process::exit(1);
         }
     }
     let _ = std::fs::remove_dir_all(&work);

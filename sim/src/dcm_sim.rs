@@ -266,16 +266,22 @@ pub fn diff(a: &RmmOut, b: &RmmOut) -> Vec<String> {
     d
 }
 
+/// The station's Verilog, emitted once per process.
+fn station_verilog() -> &'static str {
+    static V: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    V.get_or_init(dcm_verilog)
+}
+
 /// Builds (or finds in the cache) the Verilator model of the station that
 /// [`run`] uses (with tracing when `wave`), so that a caller can show the
 /// build as a step of its own; [`run`] then finds it in the process.
 pub fn build_model(wave: bool) -> Result<(), String> {
-    crate::verilator::build_library_top(&dcm_verilog(), "merkur_dcm_station", wave).map(|_| ())
+    crate::verilator::build_library_top(station_verilog(), "merkur_dcm_station", wave).map(|_| ())
 }
 
 /// Runs `cfg` through the RTL and compares it with the reference model.
 pub fn run(cfg: &TbConfig, opts: &Options) -> Result<Report, String> {
-    let verilog = dcm_verilog();
+    let verilog = station_verilog();
     if let Some(w) = &opts.wave {
         if let Some(dir) = w.parent().filter(|d| !d.as_os_str().is_empty()) {
             std::fs::create_dir_all(dir).map_err(|e| {
@@ -289,7 +295,7 @@ pub fn run(cfg: &TbConfig, opts: &Options) -> Result<Report, String> {
     }
     let t0 = Instant::now();
     // Build (or find) the library once before the run.
-    crate::verilator::build_library_top(&verilog, "merkur_dcm_station", opts.wave.is_some())?;
+    crate::verilator::build_library_top(verilog, "merkur_dcm_station", opts.wave.is_some())?;
     let build = t0.elapsed();
     let model = tokenbus::run(cfg);
     let mut waves = vec![];
@@ -316,7 +322,7 @@ pub fn run(cfg: &TbConfig, opts: &Options) -> Result<Report, String> {
             if let Some(w) = &wave {
                 waves.push(w.clone());
             }
-            Ok(Box::new(VStation::new(&verilog, c, wave.as_deref())?) as Box<dyn StationHw>)
+            Ok(Box::new(VStation::new(verilog, c, wave.as_deref())?) as Box<dyn StationHw>)
         },
         true,
     )?;

@@ -3,7 +3,7 @@
 //! Each [`Diagram`] names a scenario of `tb-data/`, the signals to show
 //! (by their names in the run's FST waveform: the RTL's block instances and
 //! ports) and where to look: an [`Anchor`] (the n-th time a signal takes a
-//! value) and a window around it. [`render`] runs the scenario through the
+//! value) and a window around it. [`render_all`] runs each scenario once through the
 //! RTL with a waveform, reads the waveform back (the `fst-reader` crate) and
 //! draws the SVG. Nothing is drawn by hand: a diagram shows what the RTL
 //! did. `cargo run -p merkur-sim --example gen` rewrites them and
@@ -335,41 +335,56 @@ fn read_changes(path: &Path, names: &[&str]) -> Result<Changes, String> {
         .collect())
 }
 
-/// Runs the diagram's scenario through the RTL with a waveform in `work`;
-/// the FST written.
-fn simulate(src: &Source, work: &Path) -> Result<PathBuf, String> {
-    let root = crate::repo_root();
-    let read = |f: &str| std::fs::read_to_string(root.join(f)).map_err(|e| format!("{f}: {e}"));
-    match src {
-        Source::Ring(f) => {
-            let cfg = config::load(f, &read(f)?).map_err(|e| e.to_string())?;
-            let wave = work.join("ring.fst");
-            let opts = ring_sim::Options {
-                wave: Some(wave.clone()),
-                ..Default::default()
-            };
-            let rep = ring_sim::run(&cfg, &ring::run(&cfg), &opts)?;
-            if !rep.mismatches.is_empty() {
-                return Err(format!("{f}: the RTL disagrees with the model"));
-            }
-            Ok(wave)
-        }
-        Source::Dcm { scenario, station } => {
-            let cfg = tbconfig::load(scenario, &read(scenario)?).map_err(|e| e.to_string())?;
-            let opts = dcm_sim::Options {
-                wave: Some(work.join("dcm.fst")),
-            };
-            let rep = dcm_sim::run(&cfg, &opts)?;
-            if !rep.mismatches.is_empty() {
-                return Err(format!("{scenario}: the RTL disagrees with the model"));
-            }
-            let want = format!("dcm.s{station}.fst");
-            rep.waves
-                .into_iter()
-                .find(|w| w.file_name().is_some_and(|n| n == want.as_str()))
-                .ok_or_else(|| format!("{scenario}: no waveform of station {station}"))
+impl Source {
+    /// The scenario file.
+    fn scenario(&self) -> &'static str {
+        match self {
+            Source::Ring(f) => f,
+            Source::Dcm { scenario, .. } => scenario,
         }
     }
+
+    /// The waveform this source's diagrams read, in the folder its run
+    /// wrote ([`simulate`]).
+    fn wave(&self, dir: &Path) -> PathBuf {
+        match self {
+            Source::Ring(_) => dir.join("ring.fst"),
+            // dcm_sim writes `<stem>.s<k>.fst` per station.
+            Source::Dcm { station, .. } => dir.join(format!("dcm.s{station}.fst")),
+        }
+    }
+}
+
+/// Runs the source's scenario through the RTL (checked against the model)
+/// with its waveforms written into `dir`.
+fn simulate(src: &Source, dir: &Path) -> Result<(), String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let f = src.scenario();
+    let text =
+        std::fs::read_to_string(crate::repo_root().join(f)).map_err(|e| format!("{f}: {e}"))?;
+    let agree = match src {
+        Source::Ring(_) => {
+            let cfg = config::load(f, &text).map_err(|e| e.to_string())?;
+            let opts = ring_sim::Options {
+                wave: Some(src.wave(dir)),
+                ..Default::default()
+            };
+            ring_sim::run(&cfg, &ring::run(&cfg), &opts)?
+                .mismatches
+                .is_empty()
+        }
+        Source::Dcm { .. } => {
+            let cfg = tbconfig::load(f, &text).map_err(|e| e.to_string())?;
+            let opts = dcm_sim::Options {
+                wave: Some(dir.join("dcm.fst")),
+            };
+            dcm_sim::run(&cfg, &opts)?.mismatches.is_empty()
+        }
+    };
+    if !agree {
+        return Err(format!("{f}: the RTL disagrees with the model"));
+    }
+    Ok(())
 }
 
 /// The source's time base: the signal that counts its ticks (the ring
@@ -412,17 +427,33 @@ impl Clock {
     }
 }
 
-/// Runs the diagram's scenario in `work` (a scratch folder) and returns its
-/// SVG.
-pub fn render(d: &Diagram, work: &Path) -> Result<String, String> {
-    std::fs::create_dir_all(work).map_err(|e| format!("{}: {e}", work.display()))?;
-    let fst = simulate(&d.source, work)?;
+/// Draws every diagram of `ds`, running each scenario once in `work` (a
+/// scratch folder; two diagrams of one scenario read the same run's
+/// waveforms): (file name, SVG) in the order of `ds`.
+pub fn render_all(ds: &[Diagram], work: &Path) -> Result<Vec<(&'static str, String)>, String> {
+    let mut runs: HashMap<&str, PathBuf> = HashMap::new();
+    let mut out = vec![];
+    for d in ds {
+        let key = d.source.scenario();
+        if !runs.contains_key(key) {
+            let dir = work.join(format!("run{}", runs.len()));
+            simulate(&d.source, &dir).map_err(|e| format!("{}: {e}", d.file))?;
+            runs.insert(key, dir);
+        }
+        let svg = draw(d, &d.source.wave(&runs[key])).map_err(|e| format!("{}: {e}", d.file))?;
+        out.push((d.file, svg));
+    }
+    Ok(out)
+}
+
+/// The diagram `d` drawn from the waveform `fst`.
+fn draw(d: &Diagram, fst: &Path) -> Result<String, String> {
     let (base, unit, per_unit) = time_base(&d.source);
     let mut names: Vec<&str> = d.rows.iter().map(|r| r.signal.as_str()).collect();
     names.extend(d.rows.iter().filter_map(|r| r.strobe.as_deref()));
     names.push(&d.anchor.signal);
     names.push(base);
-    let ch = read_changes(&fst, &names)?;
+    let ch = read_changes(fst, &names)?;
     let clock = Clock::new(&d.source, &ch[base]);
     let zero = ch[&d.anchor.signal]
         .iter()

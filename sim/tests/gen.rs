@@ -59,17 +59,17 @@ fn committed_node_files_are_lint_clean_with_their_waivers() {
 /// must be the committed file, byte for byte; nothing else is in the folder.
 #[test]
 fn committed_timing_diagrams_match_the_rtl() {
-    use merkur_sim::timing::{diagrams, render};
+    use merkur_sim::timing::{diagrams, render_all};
     let dir = repo_root().join("docs/timing");
     let work = std::env::temp_dir().join(format!("merkur-timing-test-{}", std::process::id()));
     let all = diagrams();
-    for d in &all {
-        let svg = render(d, &work).unwrap_or_else(|e| panic!("{}: {e}", d.file));
-        let path = dir.join(d.file);
+    let drawn = render_all(&all, &work).unwrap_or_else(|e| panic!("{e}"));
+    for (file, svg) in &drawn {
+        let path = dir.join(file);
         let committed =
             std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert!(
-            committed == svg,
+            &committed == svg,
             "{} drifted from the RTL run it is drawn from; regenerate it: cargo run -p merkur-sim --example gen",
             path.display()
         );
