@@ -304,15 +304,6 @@ module merkur_fibre(clk, i_tick, i_txl, i_hs, i_hfrac, i_dead, i_index, i_cfg_we
     reg [3:0] txd = 4'd0;
     reg [11:0] fl_tgt = 12'd0, fl_cnt = 12'd0;
     reg [31:0] tc = 32'd0, fl_is = 32'hffffffff, fl_ie = 32'hffffffff;
-    wire lvl_edge = i_txl != hp;
-    wire [2:0] hn = hc + 3'd1;
-    wire b1 = i_hs & lvl_edge;
-    wire b0 = i_hs & !lvl_edge & pend;
-    wire bev = b1 | b0;
-    wire [31:0] bt = b1 ? i_tick : tc;
-    wire jdet = b0 & (ones >= 3'd5) & fl_arm;
-    wire hit = (jdet & fl_tgt == 12'd2) | (bev & fl_run & fl_cnt == 12'd1);
-    wire [31:0] tickd = i_tick - 32'd4;
     // Burst: bits left, the configured length and pattern, the generator (merkur_model::line::garbage), the level mask
     // in force (bu_m from tick bu_t, bu_pm before), and the return of the level after the last bit.
     reg [11:0] bu_len = 12'd0, bu_cfg = 12'd0;
@@ -321,79 +312,95 @@ module merkur_fibre(clk, i_tick, i_txl, i_hs, i_hfrac, i_dead, i_index, i_cfg_we
     reg [3:0] bu_o = 4'd0;
     reg bu_m = 1'b0, bu_pm = 1'b0, bu_ret = 1'b0;
     reg [31:0] bu_t = 32'hffffffff;
-    wire bu_start = hit & (bu_cfg != 12'd0);
-    wire bu_bit = bev & (bu_start | (bu_len != 12'd0));
-    wire bu_gr = (bu_z == 2'd2) ? 1'b1 : ((bu_o == 4'd9) ? 1'b0 : bu_s[0]);
-    wire bu_g = (bu_start | (bu_len == 12'd1)) ? 1'b1 : bu_gr;
-    wire [15:0] bu_sn = bu_s[0] ? ({1'b0, bu_s[15:1]} ^ 16'hb400) : {1'b0, bu_s[15:1]};
-    wire inv = trk & (((tickd >= fl_is) & (tickd < fl_ie)) ^ ((tickd >= bu_t) ? bu_m : bu_pm));
-    always @(posedge clk) begin
+    always @(posedge clk) begin : tick_step
+        // The fault point's values at this tick, worked out only while it works (trk): as wires, a simulator would
+        // compute them at every tick on every fibre (5 % of ring100's time, docs/benchmarks.md).
+        reg lvl_edge, b1, b0, bev, jdet, hit, bu_start, bu_bit, bu_g, inv;
+        reg [2:0] hn;
+        reg [31:0] bt, tickd;
         txd <= {txd[2:0], i_txl};
-        o_line <= (brk | i_dead) ? 1'b0 : (txd[3] ^ inv);
         o_sh <= {o_line, o_sh[2:1]};
         o_old <= o_sh[0];
         frd <= {frd[8:0], i_hfrac};
         o_fr <= {frd[11:9], o_fr[11:3]};
-        if (trk & i_hs) begin
-            hp <= i_txl;
-            if (lvl_edge) begin
-                hc <= 3'd0;
-                pend <= 1'b0;
-            end else if (pend) begin
-                hc <= 3'd1;
-                pend <= 1'b0;
-            end else begin
-                hc <= hn;
-                if (hn == 3'd4) begin
-                    pend <= 1'b1;
-                    tc <= i_tick;
+        o_line <= (brk | i_dead) ? 1'b0 : txd[3];
+        if (trk) begin
+            lvl_edge = i_txl != hp;
+            hn = hc + 3'd1;
+            b1 = i_hs & lvl_edge;
+            b0 = i_hs & !lvl_edge & pend;
+            bev = b1 | b0;
+            bt = b1 ? i_tick : tc;
+            jdet = b0 & (ones >= 3'd5) & fl_arm;
+            hit = (jdet & fl_tgt == 12'd2) | (bev & fl_run & fl_cnt == 12'd1);
+            tickd = i_tick - 32'd4;
+            bu_start = hit & (bu_cfg != 12'd0);
+            bu_bit = bev & (bu_start | (bu_len != 12'd0));
+            bu_g = (bu_start | (bu_len == 12'd1)) ? 1'b1 : ((bu_z == 2'd2) ? 1'b1 : ((bu_o == 4'd9) ? 1'b0 : bu_s[0]));
+            inv = ((tickd >= fl_is) & (tickd < fl_ie)) ^ ((tickd >= bu_t) ? bu_m : bu_pm);
+            o_line <= (brk | i_dead) ? 1'b0 : (txd[3] ^ inv);
+            if (i_hs) begin
+                hp <= i_txl;
+                if (lvl_edge) begin
+                    hc <= 3'd0;
+                    pend <= 1'b0;
+                end else if (pend) begin
+                    hc <= 3'd1;
+                    pend <= 1'b0;
+                end else begin
+                    hc <= hn;
+                    if (hn == 3'd4) begin
+                        pend <= 1'b1;
+                        tc <= i_tick;
+                    end
                 end
             end
-        end
-        if (trk & bev) begin
-            ones <= b0 ? 3'd0 : (ones == 3'd7 ? 3'd7 : ones + 3'd1);
-            if (jdet) begin
-                fl_arm <= 1'b0;
-                fl_run <= fl_tgt > 12'd2;
-                fl_cnt <= fl_tgt - 12'd2;
-            end else if (fl_run) begin
-                fl_cnt <= fl_cnt - 12'd1;
-                if (fl_cnt == 12'd1) fl_run <= 1'b0;
-            end
-            if (hit & (bu_cfg == 12'd0)) begin
-                fl_is <= bt;
-                fl_ie <= 32'hffffffff;
-                fl_open <= 1'b1;
-            end else if (fl_open) begin
-                fl_ie <= bt;
-                fl_open <= 1'b0;
-            end
-            if (bu_bit) begin
-                // A garbage bit from this boundary: the mask makes the line's code bit the garbage's.
-                bu_pm <= bu_m;
-                bu_m <= (bu_start ? 1'b0 : bu_m) ^ b1 ^ bu_g;
-                bu_t <= bt;
-                bu_s <= bu_sn;
-                bu_z <= bu_g ? 2'd0 : bu_z + 2'd1;
-                bu_o <= bu_g ? bu_o + 4'd1 : 4'd0;
-                bu_len <= (bu_start ? bu_cfg : bu_len) - 12'd1;
-                bu_ret <= (bu_start ? bu_cfg : bu_len) == 12'd1;
-                if (bu_start) begin
-                    bu_z <= 2'd0;
-                    bu_o <= 4'd1;
-                    bu_cfg <= 12'd0;
+            if (bev) begin
+                ones <= b0 ? 3'd0 : (ones == 3'd7 ? 3'd7 : ones + 3'd1);
+                if (jdet) begin
+                    fl_arm <= 1'b0;
+                    fl_run <= fl_tgt > 12'd2;
+                    fl_cnt <= fl_tgt - 12'd2;
+                end else if (fl_run) begin
+                    fl_cnt <= fl_cnt - 12'd1;
+                    if (fl_cnt == 12'd1) fl_run <= 1'b0;
                 end
-            end else if (bu_ret) begin
-                // After the last garbage bit the level is the sender's again.
-                bu_pm <= bu_m;
-                bu_m <= 1'b0;
-                bu_t <= bt;
-                bu_ret <= 1'b0;
+                if (hit & (bu_cfg == 12'd0)) begin
+                    fl_is <= bt;
+                    fl_ie <= 32'hffffffff;
+                    fl_open <= 1'b1;
+                end else if (fl_open) begin
+                    fl_ie <= bt;
+                    fl_open <= 1'b0;
+                end
+                if (bu_bit) begin
+                    // A garbage bit from this boundary: the mask makes the line's code bit the garbage's.
+                    bu_pm <= bu_m;
+                    bu_m <= (bu_start ? 1'b0 : bu_m) ^ b1 ^ bu_g;
+                    bu_t <= bt;
+                    bu_s <= bu_s[0] ? ({1'b0, bu_s[15:1]} ^ 16'hb400) : {1'b0, bu_s[15:1]};
+                    bu_z <= bu_g ? 2'd0 : bu_z + 2'd1;
+                    bu_o <= bu_g ? bu_o + 4'd1 : 4'd0;
+                    bu_len <= (bu_start ? bu_cfg : bu_len) - 12'd1;
+                    bu_ret <= (bu_start ? bu_cfg : bu_len) == 12'd1;
+                    if (bu_start) begin
+                        bu_z <= 2'd0;
+                        bu_o <= 4'd1;
+                        bu_cfg <= 12'd0;
+                    end
+                end else if (bu_ret) begin
+                    // After the last garbage bit the level is the sender's again.
+                    bu_pm <= bu_m;
+                    bu_m <= 1'b0;
+                    bu_t <= bt;
+                    bu_ret <= 1'b0;
+                end
             end
+            // The fault point works only while a flip or burst is armed or running; arming it starts the bit grid
+            // afresh from the line's level (an armed packet is always after an idle gap: edges every bit, ones
+            // enough).
+            trk <= fl_arm | fl_run | fl_open | (bu_len != 12'd0) | bu_ret | bu_m | (tickd < fl_ie) | (tickd < bu_t);
         end
-        // The fault point works only while a flip or burst is armed or running (trk); arming it starts the bit grid
-        // afresh from the line's level (an armed packet is always after an idle gap: edges every bit, ones enough).
-        trk <= trk & (fl_arm | fl_run | fl_open | (bu_len != 12'd0) | bu_ret | bu_m | (tickd < fl_ie) | (tickd < bu_t));
         if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@BREAK@) brk <= i_cfg_val[0];
         if (i_cfg_we && i_cfg_sel == i_index && i_cfg_field == 8'd@FLIP@) begin
             fl_arm <= 1'b1;
