@@ -810,17 +810,21 @@ fn fibre(f: usize, n: usize, capw: usize) -> String {
              \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
              \x20   // A bad word's ALARM field in the capture says whether it was marked (protocol §4).\n\
              \x20   wire mflag_{f} = (m_ok_{f} | m_void_{f}) ? m_alarm_{f} : m_marked_{f};\n\
+             \x20   // The capture memory is written with blocking assignments: only the harness reads it, between evaluations,\n\
+             \x20   // so the write takes effect at the same moment as a nonblocking one; a simulator then needs no deferred-write\n\
+             \x20   // flags for each of its three write sites, which it cleared and tested at every monitor clock on every fibre.\n\
+             \x20   /* verilator lint_off BLKSEQ */\n\
              \x20   always @(posedge mclk) begin\n        hdr_new_{f} <= 1'b0;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
              \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            lslot_{f} <= 12'hfff;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
-             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
-             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] <= {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
+             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] = {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
+             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] = {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
-             \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] <= {{epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
-             \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end",
+             \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] = {{epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
+             \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end\n    /* verilator lint_on BLKSEQ */",
             hz = if capw > 4 { format!("{}'d0, ", capw - 4) } else { String::new() },
             last = (1usize << capw) - 1,
             cb = capw - 4,
