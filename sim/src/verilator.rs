@@ -4,11 +4,11 @@
 //! `Model::build(verilog, top)` verilates the Verilog, compiles it with a
 //! generated `extern "C"` wrapper into a shared library, caches the library
 //! under [`cache_root`]`/<hash>/` (hash of the Verilog, the wrapper,
-//! the Verilator version and the flags), and loads it with `libloading`.
+//! the Verilator version, the C++ compiler and the flags), and loads it with `libloading`.
 //! One build serves every test and scenario that uses the same Verilog:
 //! node addresses, slot configuration and fault points are ports. What
-//! every build shares (Verilator's runtime objects and a precompiled
-//! `verilated.h`) is built once into [`cache_root`]`/support-<hash>/`.
+//! every build shares (Verilator's runtime objects) is built once into
+//! [`cache_root`]`/support-<hash>/`. The C++ compiler is [`cxx`]'s.
 //!
 //! Ports up to 64 bits wide are supported; wider ones are refused at build.
 
@@ -164,6 +164,62 @@ pub fn verilator_version() -> Result<String, String> {
         .clone()
 }
 
+/// The C++ compiler of the Verilated models: `$MERKUR_CXX` if set, else
+/// `clang++` (installed by scripts/install-tools.sh), else `g++`.
+///
+/// Clang is the default because its models run faster: ring100 1.3×
+/// against g++ 12 on the same Verilog and flags, ring8 1.2×
+/// (docs/benchmarks.md, issue 24 step 12). A model's object code differs
+/// with the compiler but not what it simulates (the full campaign gives
+/// identical reports); the compiler's version line is part of every cache
+/// key.
+pub struct Cxx {
+    /// The command.
+    pub cmd: String,
+    /// The first line of its `--version`.
+    pub version: String,
+}
+
+/// [`Cxx`], found once per process.
+pub fn cxx() -> Result<&'static Cxx, String> {
+    static CXX: OnceLock<Result<Cxx, String>> = OnceLock::new();
+    CXX.get_or_init(|| {
+        let version = |cmd: &str| {
+            Command::new(cmd)
+                .arg("--version")
+                .output()
+                .ok()
+                .filter(|o| o.status.success())
+                .map(|o| {
+                    let out = String::from_utf8_lossy(&o.stdout);
+                    out.lines().next().unwrap_or("").trim().to_string()
+                })
+        };
+        if let Some(c) = std::env::var("MERKUR_CXX").ok().filter(|c| !c.is_empty()) {
+            return version(&c)
+                .map(|v| Cxx {
+                    cmd: c.clone(),
+                    version: v,
+                })
+                .ok_or_else(|| format!("MERKUR_CXX={c}: `{c} --version` does not run"));
+        }
+        ["clang++", "g++"]
+            .iter()
+            .find_map(|c| {
+                version(c).map(|v| Cxx {
+                    cmd: c.to_string(),
+                    version: v,
+                })
+            })
+            .ok_or_else(|| {
+                "no C++ compiler runs (tried clang++, g++); run scripts/install-tools.sh or set MERKUR_CXX"
+                    .to_string()
+            })
+    })
+    .as_ref()
+    .map_err(|e| e.clone())
+}
+
 /// One lock per model hash, shared by the threads of this process.
 fn build_gate(hash: &str) -> Arc<Mutex<()>> {
     static GATES: OnceLock<Mutex<HashMap<String, Arc<Mutex<()>>>>> = OnceLock::new();
@@ -196,7 +252,7 @@ fn cache_root_in(var: impl Fn(&str) -> Option<std::ffi::OsString>) -> PathBuf {
     }
 }
 
-/// g++ flags of the Verilated model's objects (part of the cache key).
+/// C++ flags of the Verilated model's objects (part of the cache key).
 const CXXFLAGS: &[&str] = &["-fPIC", "-O2", "-std=c++17", "-w"];
 
 /// The optimisation of a model's cold files (part of the cache key), put
@@ -320,6 +376,7 @@ fn find_or_build(verilog: &str, top: &str, traced: bool) -> Result<(PathBuf, Vec
         verilog,
         &wrapper,
         &version,
+        &cxx()?.version,
         &VFLAGS.join(" "),
         &CXXFLAGS.join(" "),
         COLD_OPT,
@@ -457,7 +514,7 @@ fn build_dir(name: &str) -> Result<PathBuf, String> {
     Ok(tmp)
 }
 
-/// The g++ flags every object of a build shares (the model's and the
+/// The C++ flags every object of a build shares (the model's and the
 /// runtime's): [`CXXFLAGS`], the trace defines and Verilator's includes.
 fn cxx_flags<'a>(c: &'a mut Command, inc: &Path, traced: bool) -> &'a mut Command {
     c.args(CXXFLAGS)
@@ -477,17 +534,10 @@ fn trace_defs(traced: bool) -> &'static [&'static str] {
 }
 
 /// What every model's build shares: Verilator's runtime compiled once
-/// (`verilated.cpp` alone took 3.3 s of each ring's build) and `verilated.h`
-/// precompiled (each of a ring8 model's 31 files spent about 0.4 s parsing
-/// it: 24.6 s of g++ for the model's own files, 12.9 s with the
-/// precompiled header, docs/benchmarks.md). Built once per Verilator
-/// version, flags and tracing into `<cache>/support-<hash>/`; the object
-/// code of a model is the same either way (a precompiled header only saves
-/// the parsing), so it is not part of a model's cache key.
+/// (`verilated.cpp` alone took 3.3 s of each ring's build). Built once per
+/// Verilator version, compiler, flags and tracing into
+/// `<cache>/support-<hash>/`.
 struct Support {
-    /// The header each model file is compiled with (`-include`); its
-    /// `.gch` lies beside it.
-    pch: PathBuf,
     /// Verilator's runtime objects, linked into every model.
     objs: Vec<PathBuf>,
 }
@@ -507,9 +557,11 @@ fn runtime_sources(traced: bool) -> &'static [&'static str] {
 
 fn support(inc: &Path, traced: bool) -> Result<Support, String> {
     let version = verilator_version()?;
+    let cxx = cxx()?;
     let hash = cache_key(&[
-        "support 1",
+        "support 2",
         &version,
+        &cxx.version,
         &CXXFLAGS.join(" "),
         &trace_defs(traced).join(" "),
         &inc.display().to_string(),
@@ -522,7 +574,6 @@ fn support(inc: &Path, traced: bool) -> Result<Support, String> {
         .filter(|f| inc.join(f).exists())
         .collect();
     let made = Support {
-        pch: dir.join("merkur_pch.h"),
         objs: srcs
             .iter()
             .map(|f| dir.join(f.replace(".cpp", ".o")))
@@ -534,28 +585,15 @@ fn support(inc: &Path, traced: bool) -> Result<Support, String> {
         return Ok(made);
     }
     let tmp = build_dir(&name)?;
-    let header = if traced {
-        "#include \"verilated.h\"\n#include \"verilated_fst_c.h\"\n"
-    } else {
-        "#include \"verilated.h\"\n"
-    };
-    std::fs::write(tmp.join("merkur_pch.h"), header).map_err(|e| e.to_string())?;
-    let flags = |c: &mut Command| {
-        cxx_flags(c, inc, traced).current_dir(&tmp);
-    };
-    let mut jobs: Vec<(PathBuf, PathBuf, bool)> = srcs
+    let jobs: Vec<(PathBuf, PathBuf)> = srcs
         .iter()
-        .map(|f| (inc.join(f), tmp.join(f.replace(".cpp", ".o")), false))
+        .map(|f| (inc.join(f), tmp.join(f.replace(".cpp", ".o"))))
         .collect();
-    jobs.push((tmp.join("merkur_pch.h"), tmp.join("merkur_pch.h.gch"), true));
-    crate::jobs::run(&jobs, crate::jobs::cores(), |(src, out, header)| {
-        let mut c = Command::new("g++");
-        flags(&mut c);
-        if *header {
-            c.args(["-x", "c++-header"]);
-        }
+    crate::jobs::run(&jobs, crate::jobs::cores(), |(src, out)| {
+        let mut c = Command::new(&cxx.cmd);
+        cxx_flags(&mut c, inc, traced).current_dir(&tmp);
         c.arg("-c").arg(src).arg("-o").arg(out);
-        run(&mut c, "g++ (Verilator runtime)")
+        run(&mut c, &format!("{} (Verilator runtime)", cxx.cmd))
     })?;
     std::fs::write(tmp.join("done"), "").map_err(|e| e.to_string())?;
     match std::fs::rename(&tmp, &dir) {
@@ -569,15 +607,40 @@ fn support(inc: &Path, traced: bool) -> Result<Support, String> {
     Ok(made)
 }
 
-/// Compiles a model's own files (with the shared precompiled header), as
-/// many at a time as the machine has cores, and links them with the shared
-/// runtime into `dir/libmodel.so`.
+/// Compiles a model's own files, as many at a time as the machine has
+/// cores, and links them with the shared runtime into `dir/libmodel.so`.
+///
+/// Every file is compiled with `verilated.h` precompiled, in `dir` first
+/// (each of a ring8 model's 31 files spent about 0.4 s parsing it: 24.6 s
+/// of g++ for the model's own files, 12.9 s with the precompiled header,
+/// docs/benchmarks.md). The header is precompiled per model, not once in
+/// the shared runtime's folder: clang's precompiled header names the path
+/// of the header it was made from, and that folder is built under a
+/// temporary name and renamed. It takes about a second; the object code is
+/// the same either way.
 fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> Result<(), String> {
     let shared = support(inc, traced)?;
+    let cxx = cxx()?;
+    let pch = dir.join("merkur_pch.h");
+    let header = if traced {
+        "#include \"verilated.h\"\n#include \"verilated_fst_c.h\"\n"
+    } else {
+        "#include \"verilated.h\"\n"
+    };
+    std::fs::write(&pch, header).map_err(|e| e.to_string())?;
+    run(
+        cxx_flags(&mut Command::new(&cxx.cmd), inc, traced)
+            .current_dir(dir)
+            .args(["-x", "c++-header"])
+            .arg(&pch)
+            .arg("-o")
+            .arg(dir.join("merkur_pch.h.gch")),
+        &format!("{} (precompiled header)", cxx.cmd),
+    )?;
     let flags = |c: &mut Command| {
         cxx_flags(c, inc, traced)
             .arg("-include")
-            .arg(&shared.pch)
+            .arg(&pch)
             .arg("-Iobj")
             .current_dir(dir);
     };
@@ -586,22 +649,23 @@ fn compile_and_link(dir: &Path, inc: &Path, srcs: &[PathBuf], traced: bool) -> R
         .collect();
     let pairs: Vec<(&PathBuf, &PathBuf)> = srcs.iter().zip(&objs).collect();
     crate::jobs::run(&pairs, crate::jobs::cores(), |(src, obj)| {
-        let mut c = Command::new("g++");
+        let mut c = Command::new(&cxx.cmd);
         flags(&mut c);
         if is_cold(src) {
             c.arg(COLD_OPT);
         }
         c.arg("-c").arg(src).arg("-o").arg(obj);
-        run(&mut c, "g++ (Verilated model)")
+        run(&mut c, &format!("{} (Verilated model)", cxx.cmd))
     })?;
+    // libatomic: clang leaves calls to it in the runtime (`__atomic_is_lock_free`), g++ does not.
     run(
-        Command::new("g++")
+        Command::new(&cxx.cmd)
             .args(["-shared", "-fPIC"])
             .args(&objs)
             .args(&shared.objs)
-            .args(["-o", "libmodel.so", "-lz", "-lpthread"])
+            .args(["-o", "libmodel.so", "-lz", "-lpthread", "-latomic"])
             .current_dir(dir),
-        "g++ (link Verilated model)",
+        &format!("{} (link Verilated model)", cxx.cmd),
     )
 }
 

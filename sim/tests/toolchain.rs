@@ -9,7 +9,7 @@ use std::process::Command;
 #[test]
 fn pinned_tools_are_installed_at_their_versions() {
     let tools = pinned_tools().expect("tools.lock parses");
-    assert!(tools.len() >= 5, "tools.lock lists the five tools");
+    assert!(tools.len() >= 6, "tools.lock lists the six tools");
     for t in &tools {
         let out = Command::new("dpkg-query")
             .args(["-W", "-f=${Version}", &t.package])
@@ -68,6 +68,11 @@ fn pinned_tools_run() {
             format!("Icarus Verilog version {}", pin("iverilog")),
         ),
         ("yosys-abc", "-cversion", "UC Berkeley, ABC".to_string()),
+        (
+            "clang++",
+            "--version",
+            format!("clang version {}", pin("clang")),
+        ),
     ] {
         let out = Command::new(cmd)
             .arg(arg)
