@@ -167,7 +167,7 @@ pub fn verilator_version() -> Result<String, String> {
 /// The C++ compiler of the Verilated models: `$MERKUR_CXX` if set, else
 /// `clang++` (installed by scripts/install-tools.sh), else `g++`.
 ///
-/// Clang is the default because its models run faster: ring100 1.3×
+/// Clang is the default because its models run faster: ring100 1.21×
 /// against g++ 12 on the same Verilog and flags, ring8 1.2×
 /// (docs/benchmarks.md, issue 24 step 12). A model's object code differs
 /// with the compiler but not what it simulates (the full campaign gives
