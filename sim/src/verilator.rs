@@ -184,37 +184,22 @@ pub struct Cxx {
 pub fn cxx() -> Result<&'static Cxx, String> {
     static CXX: OnceLock<Result<Cxx, String>> = OnceLock::new();
     CXX.get_or_init(|| {
-        let version = |cmd: &str| {
-            Command::new(cmd)
-                .arg("--version")
-                .output()
-                .ok()
-                .filter(|o| o.status.success())
-                .map(|o| {
-                    let out = String::from_utf8_lossy(&o.stdout);
-                    out.lines().next().unwrap_or("").trim().to_string()
-                })
-        };
-        if let Some(c) = std::env::var("MERKUR_CXX").ok().filter(|c| !c.is_empty()) {
-            return version(&c)
-                .map(|v| Cxx {
-                    cmd: c.clone(),
-                    version: v,
-                })
-                .ok_or_else(|| format!("MERKUR_CXX={c}: `{c} --version` does not run"));
-        }
-        ["clang++", "g++"]
-            .iter()
-            .find_map(|c| {
-                version(c).map(|v| Cxx {
-                    cmd: c.to_string(),
-                    version: v,
-                })
+        // A compiler that answers `--version`, with the first line of its answer.
+        let probe = |cmd: &str| {
+            let o = Command::new(cmd).arg("--version").output().ok()?;
+            let out = String::from_utf8_lossy(&o.stdout);
+            o.status.success().then(|| Cxx {
+                cmd: cmd.to_string(),
+                version: out.lines().next().unwrap_or("").trim().to_string(),
             })
-            .ok_or_else(|| {
+        };
+        match std::env::var("MERKUR_CXX").ok().filter(|c| !c.is_empty()) {
+            Some(c) => probe(&c).ok_or_else(|| format!("MERKUR_CXX={c}: `{c} --version` does not run")),
+            None => ["clang++", "g++"].into_iter().find_map(probe).ok_or_else(|| {
                 "no C++ compiler runs (tried clang++, g++); run scripts/install-tools.sh or set MERKUR_CXX"
                     .to_string()
-            })
+            }),
+        }
     })
     .as_ref()
     .map_err(|e| e.clone())
