@@ -74,6 +74,10 @@ pub struct NodeState {
     pub(super) last_alive: Vec<Option<bool>>,
     pub(super) alive_lost: Vec<bool>,
     pub(super) act_alive: Vec<bool>,
+    /// The last home-slot word written carried an alarm: the next carries
+    /// none (§11's alternation in the basic variant; in the extended one
+    /// the pacing §6 asks for, as a cut-through node decides its home word
+    /// from the first group, before the read-back's word has ended).
     pub(super) prev_home_alarm: bool,
     pub(super) pending: BTreeSet<Pending>,
     /// The alarm in flight: sent, not yet read back (§11).
@@ -429,14 +433,13 @@ impl Ring {
     /// its SEQ (§11): a FAILSAFE request first, then a repeat of the alarm
     /// in flight, then the pending alarm of highest priority.
     pub(super) fn take_alarm(&mut self, k: usize, ev: &mut Vec<Event>) -> Option<(Pending, bool)> {
-        let ext = self.cfg.ext;
         let nd = &mut self.nodes[k];
         let fs = Pending {
             prio: prio(reason::FAILSAFE),
             reason: reason::FAILSAFE,
         };
         let mut repeat = false;
-        let p = if (!ext && nd.prev_home_alarm) || nd.awaiting {
+        let p = if nd.prev_home_alarm || nd.awaiting {
             None
         } else if nd.pending.remove(&fs) {
             Some((fs, false))
@@ -450,7 +453,7 @@ impl Ring {
         } else {
             None
         };
-        nd.prev_home_alarm = p.is_some() && !ext;
+        nd.prev_home_alarm = p.is_some();
         nd.awaiting = p.is_some_and(|(p, _)| p.reason != reason::FAILSAFE);
         if let Some((p, _)) = p {
             let c = self.cycle;
