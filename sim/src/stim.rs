@@ -11,24 +11,25 @@ use merkur_model::ring::{Frame, HeaderRx, Slot};
 
 /// Code bits of a bad word whose first group shows `lead` (the model keeps
 /// only that of a bad word): a word with that first group and an error in
-/// its third group.
-pub fn bad_word(lead: Lead, rng: &mut Rng) -> Vec<u8> {
+/// its third group; `ext`: in the extended-alarm format (protocol §6).
+pub fn bad_word(lead: Lead, ext: bool, rng: &mut Rng) -> Vec<u8> {
     let mut c = match lead {
-        Lead::S => void_code_bits(false),
+        Lead::S => void_code_bits(ext),
         Lead::Alarm => word_code_bits(
             &Word {
-                data: 0x1000,
+                data: if ext { 0 } else { 0x1000 },
                 alarm: true,
+                reason: if ext { 1 } else { 0 },
                 ..Word::default()
             },
-            false,
+            ext,
         ),
         Lead::Data | Lead::Other => word_code_bits(
             &Word {
                 data: rng.next_u64() as u16,
                 ..Word::default()
             },
-            false,
+            ext,
         ),
     };
     if lead == Lead::Other {
@@ -44,22 +45,23 @@ pub fn bad_word(lead: Lead, rng: &mut Rng) -> Vec<u8> {
 }
 
 /// Appends the code bits of a model frame with a good header (J K, H0, H1,
-/// slots; bad slots rebuilt by [`bad_word`]). Panics on frames the model
-/// shows with a bad header or missing words: callers pick complete frames.
-pub fn frame_code(code: &mut Vec<u8>, f: &Frame, slots: usize, rng: &mut Rng) {
+/// slots; bad slots rebuilt by [`bad_word`]), in the extended-alarm format
+/// when `ext`. Panics on frames the model shows with a bad header or missing
+/// words: callers pick complete frames.
+pub fn frame_code(code: &mut Vec<u8>, f: &Frame, slots: usize, ext: bool, rng: &mut Rng) {
     push_group(code, CODE_J);
     push_group(code, CODE_K);
     let HeaderRx::Ok(h) = f.hdr else {
         panic!("frame_code needs a good header")
     };
-    code.extend(word_code_bits(&h.h0(slots), false));
-    code.extend(word_code_bits(&h.h1(), false));
+    code.extend(word_code_bits(&h.h0(slots), ext));
+    code.extend(word_code_bits(&h.h1(), ext));
     for w in &f.words {
         match w {
-            Slot::Data(d) => code.extend(word_code_bits(d, false)),
-            Slot::Void => code.extend(void_code_bits(false)),
-            Slot::Bad(l) => code.extend(bad_word(*l, rng)),
-            Slot::Marked(l) => code.extend(mark_code_bits(&bad_word(*l, rng))),
+            Slot::Data(d) => code.extend(word_code_bits(d, ext)),
+            Slot::Void => code.extend(void_code_bits(ext)),
+            Slot::Bad(l) => code.extend(bad_word(*l, ext, rng)),
+            Slot::Marked(l) => code.extend(mark_code_bits(&bad_word(*l, ext, rng))),
             Slot::Missing => panic!("frame_code needs a complete frame"),
         }
     }
@@ -90,8 +92,9 @@ pub fn tst_code(code: &mut Vec<u8>, ack: bool, addr: u16) {
 /// A slot as a monitor reports it (bad words by class only).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Seen {
-    /// Good word: data, Alive, Alarm.
-    Word(u16, bool, bool),
+    /// Good word: data, Alive, Alarm, the reason nibble (extended-alarm
+    /// words; 0 in the basic format).
+    Word(u16, bool, bool, u8),
     /// VOID.
     Void,
     /// Bad, damaged on the fibre it was read on.
@@ -103,7 +106,7 @@ pub enum Seen {
 /// How the model's slot must look to a monitor.
 pub fn seen(s: &Slot) -> Seen {
     match s {
-        Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm),
+        Slot::Data(d) => Seen::Word(d.data, d.alive, d.alarm, d.reason),
         Slot::Void => Seen::Void,
         Slot::Marked(_) => Seen::Marked,
         _ => Seen::Bad,
@@ -119,6 +122,7 @@ pub struct PacketReader {
     data: usize,
     alive: usize,
     alarm: usize,
+    reason: usize,
     ok: usize,
     void: usize,
     marked: usize,
@@ -136,6 +140,7 @@ impl PacketReader {
             data: m.port("o_data"),
             alive: m.port("o_alive"),
             alarm: m.port("o_alarm"),
+            reason: m.port("o_reason"),
             ok: m.port("o_ok"),
             void: m.port("o_void"),
             marked: m.port("o_marked"),
@@ -162,6 +167,7 @@ impl PacketReader {
                         m.get(self.data) as u16,
                         m.get(self.alive) == 1,
                         m.get(self.alarm) == 1,
+                        m.get(self.reason) as u8,
                     )
                 } else if m.get(self.void) == 1 {
                     Seen::Void

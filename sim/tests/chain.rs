@@ -36,7 +36,7 @@ fn eight_slaves_carry_the_models_frames() {
             };
             let start = code.len();
             starts.push(start);
-            frame_code(&mut code, f, cfg.slots, &mut rng);
+            frame_code(&mut code, f, cfg.slots, cfg.ext, &mut rng);
             while code.len() < start + cfg.period as usize || code.len() % 5 != 0 {
                 push_group(&mut code, CODE_I);
             }

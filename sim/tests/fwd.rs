@@ -43,7 +43,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
             continue;
         }
         let start = code.len();
-        frame_code(&mut code, fi, cfg.slots, &mut rng);
+        frame_code(&mut code, fi, cfg.slots, cfg.ext, &mut rng);
         cycles.push((r.cycle, start, fo.clone()));
         while code.len() < start + cfg.period as usize || code.len() % 5 != 0 {
             push_group(&mut code, CODE_I);
@@ -53,9 +53,14 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
     let line = nrzi_encode(&code, &mut level);
     let pairs = sample_words(&line_samples(&line, ppm, 2.1, 0.5, &mut rng));
 
-    let mut f = Model::build(&block_verilog(Fwd::new())).unwrap();
-    let mut mi = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
-    let mut mo = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
+    let format = if cfg.ext {
+        WordFormat::ExtendedAlarm
+    } else {
+        WordFormat::Basic
+    };
+    let mut f = Model::build(&block_verilog(Fwd::new(format))).unwrap();
+    let mut mi = Model::build(&block_verilog(Monitor::new(format))).unwrap();
+    let mut mo = Model::build(&block_verilog(Monitor::new(format))).unwrap();
     let p = |m: &Model, s: &str| m.port(s);
     for m in [&mut mi, &mut mo] {
         let (a, b) = (p(m, "i_slots_m1"), p(m, "i_address"));
@@ -115,8 +120,10 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         });
         f.set(freq, alarm.is_some() as u64);
         f.set(frsn, alarm.unwrap_or(0) as u64);
-        // Its SEQ (D[11], protocol §11), as the model's word shows it.
+        // Its SEQ (protocol §11: D[11], extended N1 bit 3), as the model's
+        // word shows it.
         let seq = match cycles[ci].2.words.get(slot) {
+            Some(Slot::Data(d)) if d.alarm && cfg.ext => (d.reason as u16 >> 3) & 1,
             Some(Slot::Data(d)) if d.alarm => (d.data >> 11) & 1,
             _ => 0,
         };
@@ -171,4 +178,12 @@ fn sensors_and_actuators_forward_like_the_model() {
 fn bad_words_and_alarms_forward_like_the_model() {
     run("ring8_parity.toml", &[2, 4, 5], -1800.0);
     run("ring8_irq.toml", &[2, 5], 700.0);
+}
+
+#[test]
+fn extended_alarm_words_forward_like_the_model() {
+    // Sensors 2 and 6 and actuator 7 send alarms (the reason nibble, data
+    // kept); actuator 5 rewrites its slot; every node adds HOP in the
+    // six-group headers.
+    run("ring8_ext_alarm.toml", &[1, 2, 5, 6, 7], 900.0);
 }

@@ -139,7 +139,7 @@ fn slave_under_icarus_matches_verilator() {
             unreachable!()
         };
         let start = code.len();
-        frame_code(&mut code, f, cfg.slots, &mut rng);
+        frame_code(&mut code, f, cfg.slots, cfg.ext, &mut rng);
         while code.len() < start + cfg.period as usize || code.len() % 5 != 0 {
             push_group(&mut code, CODE_I);
         }

@@ -53,7 +53,7 @@ fn encode_packet(
         match w {
             Slot::Data(d) => {
                 code.extend(word_code_bits(d, false));
-                seen.push(Seen::Word(d.data, d.alive, d.alarm));
+                seen.push(Seen::Word(d.data, d.alive, d.alarm, d.reason));
             }
             Slot::Void => {
                 (0..5).for_each(|_| push_group(code, CODE_S));
@@ -125,7 +125,7 @@ fn run_scenario(name: &str, delta_ppm: f64) {
     let samples = line_samples(&line, delta_ppm, phase, 0.6, &mut rng);
     let mut m = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
     let p = |m: &Model, n: &str| m.port(n);
-    let marked = p(&m, "o_marked");
+    let (marked, reason) = (p(&m, "o_marked"), p(&m, "o_reason"));
     let (clk, smp, wv, kind, data, alive, alarm, ok, void, hbad, start) = (
         p(&m, "clock"),
         p(&m, "i_samples"),
@@ -153,7 +153,12 @@ fn run_scenario(name: &str, delta_ppm: f64) {
         }
         if m.get(wv) == 1 && m.get(kind) == 2 {
             let s = if m.get(ok) == 1 {
-                Seen::Word(m.get(data) as u16, m.get(alive) == 1, m.get(alarm) == 1)
+                Seen::Word(
+                    m.get(data) as u16,
+                    m.get(alive) == 1,
+                    m.get(alarm) == 1,
+                    m.get(reason) as u8,
+                )
             } else if m.get(void) == 1 {
                 Seen::Void
             } else if m.get(marked) == 1 {

@@ -49,7 +49,7 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
                     })
                     .collect(),
             };
-            frame_code(code, &f, SLOTS, rng);
+            frame_code(code, &f, SLOTS, false, rng);
         }
         Seg::Tst { ack } => {
             while code.len() < start + PERIOD - 65 {
@@ -216,7 +216,7 @@ fn wrap_reintegrate_and_failsafe() {
         .collect();
     let pos = |w: u16| {
         own.iter()
-            .position(|s| matches!(s, Seen::Word(d, _, true) if *d == w))
+            .position(|s| matches!(s, Seen::Word(d, _, true, _) if *d == w))
     };
     let wu = pos(0x5000).unwrap_or_else(|| panic!("{ctx}: RECONFIG(WU) alarm on PO: {own:?}"));
     let n_ = pos(0x4800).unwrap_or_else(|| panic!("{ctx}: RECONFIG(N) alarm on PO: {own:?}"));
@@ -226,7 +226,7 @@ fn wrap_reintegrate_and_failsafe() {
     );
     assert!(wu < n_, "{ctx}: WU alarm before N alarm");
     assert!(
-        matches!(own[wu + 1], Seen::Word(0xabcd, _, false)),
+        matches!(own[wu + 1], Seen::Word(0xabcd, _, false, _)),
         "{ctx}: alternation: data after the alarm"
     );
     let fs_frames: Vec<_> = rpo
@@ -237,7 +237,7 @@ fn wrap_reintegrate_and_failsafe() {
     assert!(!fs_frames.is_empty(), "{ctx}: FS set in forwarded headers");
     for f in &fs_frames {
         assert!(
-            !matches!(f.1.get(2), Some(Seen::Word(0xabcd, _, _))),
+            !matches!(f.1.get(2), Some(Seen::Word(0xabcd, _, _, _))),
             "{ctx}: failsafe node still writes its slot"
         );
     }

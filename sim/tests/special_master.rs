@@ -58,7 +58,7 @@ fn data_frame(code: &mut Vec<u8>, cyc: u8, rng: &mut Rng) -> (u16, Vec<Seen>) {
             })
             .collect(),
     };
-    frame_code(code, &f, SLOTS, rng);
+    frame_code(code, &f, SLOTS, false, rng);
     idle(code, 8);
     let HeaderRx::Ok(h) = f.hdr else {
         unreachable!()

@@ -69,6 +69,11 @@ pub struct NodeState {
     /// Actuators: the cycle in which the output register's value was
     /// written by its master.
     pub out_born: Option<u32>,
+    /// An actuator's output register before its own slot's word of this
+    /// frame updated it: the data of an alarm it sends there in the
+    /// extended variant (§6; a cut-through node decides the word at its
+    /// first group, before the new value has passed).
+    pub(super) out_before: u16,
     /// The node's Alive flip-flop (value used this cycle).
     pub toggle: bool,
     pub(super) last_alive: Vec<Option<bool>>,
@@ -139,6 +144,7 @@ pub(super) fn fresh_node(cfg: &Config, k: usize) -> NodeState {
         db_born: vec![None; m],
         output: 0,
         out_born: None,
+        out_before: 0,
         toggle: false,
         last_alive: vec![None; m],
         alive_lost: vec![false; m],
@@ -353,6 +359,9 @@ impl Ring {
                 }
             }
         }
+        if kind == Kind::Actuator && s == self.cfg.nodes[k].address {
+            self.nodes[k].out_before = self.nodes[k].output;
+        }
         match w {
             Slot::Bad(_) | Slot::Marked(_) => {
                 self.nodes[k].perr += 1;
@@ -550,10 +559,13 @@ impl Ring {
                 // The actuator decides from the word's first group (protocol
                 // §4, §7): an alarm of its own replaces the word; a bad word
                 // passes on bad (its data has already been forwarded);
-                // anything else leaves as {output register, its Alive}.
+                // anything else leaves as {output register, its Alive}. An
+                // alarm word carries the register as it was before this word
+                // (the extended variant's data; the basic one has none).
                 let v = self.nodes[k].output;
                 if let Some(p) = self.take_alarm(k, ev) {
-                    *w = Slot::Data(self.alarm_word(k, p, v));
+                    let before = self.nodes[k].out_before;
+                    *w = Slot::Data(self.alarm_word(k, p, before));
                 } else if !matches!(
                     *w,
                     Slot::Bad(Lead::Data | Lead::Other) | Slot::Marked(Lead::Data | Lead::Other)

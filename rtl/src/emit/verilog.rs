@@ -199,7 +199,11 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(port_rx::PortRx::new(WordFormat::Basic)),
         ),
         ("retime", block_verilog(retime::Retime::default())),
-        ("fwd", block_verilog(fwd::Fwd::new())),
+        ("fwd", block_verilog(fwd::Fwd::new(WordFormat::Basic))),
+        (
+            "fwd_ext",
+            block_verilog(fwd::Fwd::new(WordFormat::ExtendedAlarm)),
+        ),
         ("tst_tx", block_verilog(tst_tx::TstTx::default())),
         ("slave", block_verilog(slave::Slave::new())),
         ("pkt_tx", block_verilog(pkt_tx::PktTx::default())),

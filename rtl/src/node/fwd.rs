@@ -35,8 +35,15 @@
 //! The output bits go through a [`Retime`] buffer and out on the node's own
 //! clock (DDR pair), so the receiver's sampling error is not passed on.
 //!
-//! Parameters: none (basic 25-bit words; the extended-alarm variant is not
-//! implemented by this block yet).
+//! Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
+//! In the extended-alarm variant (protocol §6) every word has a sixth group,
+//! N1 = {SEQ, REASON[2:0]}, after the first: the forwarder passes it on
+//! (headers, data, a master's ACT slot), writes it in a fresh word (the
+//! alarm's SEQ and reason, 0 in a data word) and clears it with the ALARM
+//! bit when an actuator rewrites its slot; an alarm keeps the data bits
+//! (the sender's value), and an actuator or a master takes an alarm word's
+//! data as it takes a data word's. Data and HOP groups move one group on;
+//! FS and RWC are in H0's fifth group.
 //!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
@@ -49,7 +56,7 @@
 //! | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
 //! | `i_act_out` | in | 16 | clock | actuator output register |
 //! | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
-//! | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (`D[11]`) |
+//! | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its reason and SEQ (basic: `D[15:12]`, `D[11]`; extended: N1) |
 //! | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 //! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 //! | `o_slot` | out | 12 | clock | slot of the word passing |
@@ -78,8 +85,11 @@
 //! in code   | N0 | N1 | N2 | N3 | N4 | ...
 //! out code       | N0'| N1'| N2'| N3'| N4'|        N0 decides, N4' fixes the parities
 //! ```
+//!
+//! (Extended variant: six groups, the last one N5'.)
 
 use crate::line::retime::Retime;
+use crate::line::word_rx::WordFormat;
 use rust_hdl::prelude::*;
 
 /// Clocks without a recovered bit after which INPUT counts as dead (3 bit
@@ -155,6 +165,8 @@ pub struct Fwd {
     pub o_line: Signal<Out, Bits<2>>,
     jk: Constant<Bits<10>>,
     dead_after: Constant<Bits<4>>,
+    // Extended-alarm words (six groups, N1 the reason nibble).
+    ext: Constant<Bit>,
     prev: DFF<Bit>,
     window: DFF<Bits<10>>,
     delay: DFF<Bits<6>>,
@@ -198,6 +210,8 @@ pub struct Fwd {
     f_alive: DFF<Bit>,
     f_alarm: DFF<Bit>,
     f_reason: DFF<Bits<4>>,
+    // The fresh word's N1 (extended variant): {SEQ, REASON[2:0]} or 0.
+    f_rn: DFF<Bits<4>>,
     f_pa: DFF<Bit>,
     f_pb: DFF<Bit>,
     pre_home: DFF<Bit>,
@@ -234,6 +248,10 @@ pub struct Fwd {
     send_c: Signal<Local, Bit>,
     fresh_data: Signal<Local, Bits<16>>,
     fresh_alive: Signal<Local, Bit>,
+    fresh_rn: Signal<Local, Bits<4>>,
+    // The data group a group is (0..4, the last one 4 in both formats; 7
+    // the extended variant's reason nibble N1).
+    dg: Signal<Local, Bits<3>>,
     cut: Signal<Local, Bit>,
     pa_fix: Signal<Local, Bit>,
     pb_fix: Signal<Local, Bit>,
@@ -245,13 +263,13 @@ pub struct Fwd {
 
 impl Default for Fwd {
     fn default() -> Self {
-        Self::new()
+        Self::new(WordFormat::Basic)
     }
 }
 
 impl Fwd {
-    /// A forwarder (no parameters).
-    pub fn new() -> Self {
+    /// A forwarder of words in `format`.
+    pub fn new(format: WordFormat) -> Self {
         Self {
             clock: Default::default(),
             i_bvalid: Default::default(),
@@ -283,6 +301,7 @@ impl Fwd {
             o_line: Default::default(),
             jk: Constant::new(crate::line::framer_rx::JK_BITS.to_bits()),
             dead_after: Constant::new(DEAD_CLOCKS.to_bits()),
+            ext: Constant::new(format == WordFormat::ExtendedAlarm),
             prev: Default::default(),
             window: Default::default(),
             delay: Default::default(),
@@ -320,6 +339,7 @@ impl Fwd {
             f_alive: Default::default(),
             f_alarm: Default::default(),
             f_reason: Default::default(),
+            f_rn: Default::default(),
             f_pa: Default::default(),
             f_pb: Default::default(),
             pre_home: Default::default(),
@@ -356,6 +376,8 @@ impl Fwd {
             send_c: Default::default(),
             fresh_data: Default::default(),
             fresh_alive: Default::default(),
+            fresh_rn: Default::default(),
+            dg: Default::default(),
             cut: Default::default(),
             pa_fix: Default::default(),
             pb_fix: Default::default(),
@@ -407,6 +429,7 @@ impl Logic for Fwd {
             f_alive,
             f_alarm,
             f_reason,
+            f_rn,
             f_pa,
             f_pb,
             pre_home,
@@ -506,6 +529,13 @@ impl Logic for Fwd {
         self.nib.next = self.g_nib.q.val();
         self.g_data.next = self.g_dat.q.val();
         self.g_s.next = self.g_sym_s.q.val();
+        self.dg.next = self.gidx.q.val();
+        if self.ext.val() & (self.gidx.q.val() != 0) {
+            self.dg.next = self.gidx.q.val() - 1;
+            if self.gidx.q.val() == 1 {
+                self.dg.next = 7.into();
+            }
+        }
 
         // What to do with the word that starts with this group. A slave
         // writes its home slot; a master every slot its configuration marks
@@ -559,8 +589,10 @@ impl Logic for Fwd {
                 // VOID -> fresh with the Alive the actuator would send;
                 // anything else (an alarm, an invalid group) passes.
                 self.act_c.next = 3.into();
+                // (Extended variant: an alarm word carries data, so the
+                // same as a data word.)
                 if self.i_actuator.val() & !self.i_master.val() & !self.send_c.val() {
-                    if self.dec_data.val() & !self.dec_nib.val().get_bit(3) {
+                    if self.dec_data.val() & (!self.dec_nib.val().get_bit(3) | self.ext.val()) {
                         self.act_c.next = 4.into();
                     }
                     if !self.dec_data.val() & !self.dec_s.val() {
@@ -569,7 +601,7 @@ impl Logic for Fwd {
                 }
                 if self.i_master.val() & (self.i_slot_cfg.val() == 2) & !self.send_c.val() {
                     self.act_c.next = 0.into();
-                    if self.dec_data.val() & !self.dec_nib.val().get_bit(3) {
+                    if self.dec_data.val() & (!self.dec_nib.val().get_bit(3) | self.ext.val()) {
                         self.act_c.next = 5.into();
                     }
                     if self.dec_s.val() {
@@ -593,7 +625,14 @@ impl Logic for Fwd {
                 self.fresh_alive.next = !self.i_slot_alive.val();
             }
         }
-        if self.send_c.val() {
+        self.fresh_rn.next = 0.into();
+        if self.send_c.val() & self.ext.val() {
+            self.fresh_rn.next = self.i_alarm_reason.val() & 7;
+            if self.i_alarm_seq.val() {
+                self.fresh_rn.next = self.fresh_rn.val() | 8;
+            }
+        }
+        if self.send_c.val() & !self.ext.val() {
             self.fresh_data.next = 0.into();
             if self.i_alarm_reason.val().get_bit(0) {
                 self.fresh_data.next = self.fresh_data.val() | 0x1000;
@@ -616,8 +655,11 @@ impl Logic for Fwd {
             self.f_alive.d.next = self.fresh_alive.val();
             self.f_alarm.d.next = self.send_c.val();
             self.f_reason.d.next = self.i_alarm_reason.val();
+            self.f_rn.d.next = self.fresh_rn.val();
             self.f_pa.d.next = !(self.send_c.val()
                 ^ self.fresh_alive.val()
+                ^ self.fresh_rn.val().get_bit(3)
+                ^ self.fresh_rn.val().get_bit(2)
                 ^ self.fresh_data.val().get_bit(5)
                 ^ self.fresh_data.val().get_bit(4)
                 ^ self.fresh_data.val().get_bit(9)
@@ -626,6 +668,9 @@ impl Logic for Fwd {
                 ^ self.fresh_data.val().get_bit(12)
                 ^ self.fresh_data.val().get_bit(15));
             self.f_pb.d.next = !(self.fresh_alive.val()
+                ^ self.fresh_rn.val().get_bit(2)
+                ^ self.fresh_rn.val().get_bit(1)
+                ^ self.fresh_rn.val().get_bit(0)
                 ^ self.fresh_data.val().get_bit(1)
                 ^ self.fresh_data.val().get_bit(0)
                 ^ self.fresh_data.val().get_bit(4)
@@ -666,16 +711,19 @@ impl Logic for Fwd {
             if self.f_alive.q.val() {
                 self.nib_out.next = self.nib_out.val() | 4;
             }
-            if self.gidx.q.val() == 1 {
+            if self.dg.val() == 7 {
+                self.nib_out.next = self.f_rn.q.val();
+            }
+            if self.dg.val() == 1 {
                 self.nib_out.next = self.f_data.q.val().get_bits::<4>(2);
             }
-            if self.gidx.q.val() == 2 {
+            if self.dg.val() == 2 {
                 self.nib_out.next = self.f_data.q.val().get_bits::<4>(6);
             }
-            if self.gidx.q.val() == 3 {
+            if self.dg.val() == 3 {
                 self.nib_out.next = self.f_data.q.val().get_bits::<4>(10);
             }
-            if self.gidx.q.val() == 4 {
+            if self.dg.val() == 4 {
                 self.nib_out.next = (self.f_data.q.val().get_bits::<4>(12) >> 1) & 6;
                 if self.f_pa.q.val() {
                     self.nib_out.next = self.nib_out.val() | 8;
@@ -687,7 +735,7 @@ impl Logic for Fwd {
         }
         if self.g_data.val() & (self.act_now.val() != 0) & (self.act_now.val() != 3) {
             self.recode.next = true;
-            if (self.act_now.val() == 1) & (self.gidx.q.val() == 3) {
+            if (self.act_now.val() == 1) & (self.dg.val() == 3) {
                 // FS: a node in failsafe sets it, but not in a CLR header
                 // (whose FS, arriving 0, says the node leaves failsafe).
                 if self.fs_r.q.val() & !self.clr_h0.q.val() {
@@ -703,19 +751,24 @@ impl Logic for Fwd {
                 self.nib_out.next = self.inc2.val();
             }
             if (self.act_now.val() == 2)
-                & ((self.gidx.q.val() == 1) | (self.gidx.q.val() == 2))
+                & ((self.dg.val() == 1) | (self.dg.val() == 2))
                 & self.carry.q.val()
             {
                 self.nib_out.next = self.inc4.val();
             }
-            if (self.act_now.val() == 2) & (self.gidx.q.val() == 3) & self.carry.q.val() {
+            if (self.act_now.val() == 2) & (self.dg.val() == 3) & self.carry.q.val() {
                 self.nib_out.next = self.inc2.val();
             }
+            // The actuator's ALIVE; ALARM cleared (it is 0 here in the
+            // basic variant) and, extended, the reason nibble too.
             if (self.act_now.val() == 4) & (self.gidx.q.val() == 0) {
-                self.nib_out.next = self.nib.val() & 11;
+                self.nib_out.next = self.nib.val() & 3;
                 if self.toggle.q.val() {
                     self.nib_out.next = self.nib_out.val() | 4;
                 }
+            }
+            if (self.act_now.val() == 4) & (self.dg.val() == 7) {
+                self.nib_out.next = 0.into();
             }
             // Master ACT slot: the data bits from the data memory.
             if self.act_now.val() == 5 {
@@ -723,21 +776,21 @@ impl Logic for Fwd {
                     self.nib_out.next =
                         (self.nib.val() & 12) | (self.f_data.q.val().get_bits::<4>(0) & 3);
                 }
-                if self.gidx.q.val() == 1 {
+                if self.dg.val() == 1 {
                     self.nib_out.next = self.f_data.q.val().get_bits::<4>(2);
                 }
-                if self.gidx.q.val() == 2 {
+                if self.dg.val() == 2 {
                     self.nib_out.next = self.f_data.q.val().get_bits::<4>(6);
                 }
-                if self.gidx.q.val() == 3 {
+                if self.dg.val() == 3 {
                     self.nib_out.next = self.f_data.q.val().get_bits::<4>(10);
                 }
             }
-            // Delta parity in the last group: the changes of groups 0..3
-            // (d_a, d_b) and, in an ACT slot, of this group's data bits
-            // (D15, D14); the other actions leave the last group's data
-            // bits as they came.
-            if self.gidx.q.val() == 4 {
+            // Delta parity in the last group: the changes of the groups
+            // before (d_a, d_b) and, in an ACT slot, of this group's data
+            // bits (D15, D14); the other actions leave the last group's
+            // data bits as they came.
+            if self.dg.val() == 4 {
                 self.pa_fix.next = self.d_a.q.val();
                 self.pb_fix.next = self.d_b.q.val();
                 if self.act_now.val() == 5 {
@@ -889,7 +942,7 @@ impl Logic for Fwd {
             self.c_first.d.next = self.gidx.q.val() == 0;
             self.c_shift.d.next = self.i_bvalid.val();
             // The mark: T (merkur_model::line::CODE_T) in the last group.
-            self.c_mark.d.next = (self.gidx.q.val() == 4)
+            self.c_mark.d.next = (self.dg.val() == 4)
                 & self.arrived_bad.val()
                 & !self.dead.q.val()
                 & (self.action.q.val() != 3);
@@ -928,11 +981,11 @@ impl Logic for Fwd {
             }
             if self.gidx.q.val() == 0 {
                 self.carry.d.next = self.nib.val().get_bits::<2>(0) == 3;
-            } else {
+            } else if self.dg.val() != 7 {
                 self.carry.d.next = self.carry.q.val() & (self.nib.val() == 15);
             }
             self.gidx.d.next = self.gidx.q.val() + 1;
-            if self.gidx.q.val() == 4 {
+            if self.dg.val() == 4 {
                 // A word is complete.
                 self.gidx.d.next = 0.into();
                 if self.wcount.q.val() == 2 {

@@ -217,7 +217,7 @@ impl Slave {
             swc: Default::default(),
             rx_in: PortRx::new(WordFormat::Basic),
             rx_bsr: PortRx::new(WordFormat::Basic),
-            fwd: Fwd::new(),
+            fwd: Fwd::new(WordFormat::Basic),
             tst: Default::default(),
             rep: Default::default(),
             rep_last: Default::default(),

@@ -521,7 +521,7 @@ impl Default for SpecialMaster {
             h1: Default::default(),
             sec_h0: Default::default(),
             st_word: Default::default(),
-            fwd: Fwd::new(),
+            fwd: Fwd::new(WordFormat::Basic),
             txs: Default::default(),
             fs_cleared: Default::default(),
             cb: Default::default(),
