@@ -117,7 +117,7 @@ fn rust_hdl_slave(s: &[u64]) -> f64 {
         }
         sim.done(x)
     });
-    let mut uut = Slave::new();
+    let mut uut = Slave::default();
     uut.connect_all();
     let t = Instant::now();
     sim.run(Box::new(uut), (n as u64 + 4) * 10)
@@ -155,7 +155,7 @@ fn main() {
         let (name, v) = if chain {
             ("chain of 8 slaves", block_verilog(Chain8::default()))
         } else {
-            ("slave node", block_verilog(Slave::new()))
+            ("slave node", block_verilog(Slave::default()))
         };
         let vl = verilator(&v, chain, &s[..if chain { 1_000_000 } else { 2_000_000 }]);
         let ic =

@@ -67,25 +67,21 @@ pub fn frame_code(code: &mut Vec<u8>, f: &Frame, slots: usize, ext: bool, rng: &
     }
 }
 
-/// Appends one TST packet (protocol §5) and its idle group: 65 bit times.
-pub fn tst_code(code: &mut Vec<u8>, ack: bool, addr: u16) {
+/// Appends one TST packet (protocol §5) and its idle group: 65 bit times
+/// (75 in the extended-alarm format, `ext`).
+pub fn tst_code(code: &mut Vec<u8>, ack: bool, addr: u16, ext: bool) {
     push_group(code, CODE_J);
     push_group(code, CODE_K);
     let d = 0x8000 | (ack as u16) << 12 | (addr & 0xfff);
-    code.extend(word_code_bits(
-        &Word {
-            data: d,
-            ..Word::default()
-        },
-        false,
-    ));
-    code.extend(word_code_bits(
-        &Word {
-            data: !d,
-            ..Word::default()
-        },
-        false,
-    ));
+    for data in [d, !d] {
+        code.extend(word_code_bits(
+            &Word {
+                data,
+                ..Word::default()
+            },
+            ext,
+        ));
+    }
     push_group(code, CODE_I);
 }
 

@@ -151,7 +151,7 @@ fn slave_under_icarus_matches_verilator() {
     let n = pi.len().min(si.len());
     let sensor = sensor_value(&cfg, 1, 2) as u64;
 
-    let v = block_verilog(Slave::new());
+    let v = block_verilog(Slave::default());
     let mut m = Model::build(&v).unwrap();
     let p = |m: &Model, s: &str| m.port(s);
     let cfgp = [

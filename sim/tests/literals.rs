@@ -97,7 +97,7 @@ fn a_wrong_literal_is_found() {
 
 #[test]
 fn the_slave_is_unchanged() {
-    check("slave", merkur_rtl::node::slave::Slave::new(), None);
+    check("slave", merkur_rtl::node::slave::Slave::default(), None);
 }
 
 #[test]

@@ -152,7 +152,7 @@ fn test_signal_and_its_end() {
         let mut code = vec![];
         idles(&mut code, 8);
         for _ in 0..20 {
-            tst_code(&mut code, ack, 0x123);
+            tst_code(&mut code, ack, 0x123, false);
         }
         let n_tst = code.len();
         idles(&mut code, 80);

@@ -26,7 +26,7 @@ enum Seg {
     Tst { ack: bool },
 }
 
-fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
+fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, ext: bool, rng: &mut Rng) {
     let start = code.len();
     match seg {
         Seg::Frame { rwc } => {
@@ -49,11 +49,12 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
                     })
                     .collect(),
             };
-            frame_code(code, &f, SLOTS, false, rng);
+            frame_code(code, &f, SLOTS, ext, rng);
         }
         Seg::Tst { ack } => {
-            while code.len() < start + PERIOD - 65 {
-                tst_code(code, ack, 3);
+            let tst_bits = if ext { 75 } else { 65 };
+            while code.len() < start + PERIOD - tst_bits {
+                tst_code(code, ack, 3, ext);
             }
         }
         Seg::Idle | Seg::Dark => {}
@@ -64,11 +65,24 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, rng: &mut Rng) {
     }
 }
 
+#[test]
+fn wrap_reintegrate_and_failsafe() {
+    wrap_reintegrate_and_failsafe_in(WordFormat::Basic);
+}
+
+/// The same story with extended-alarm words (protocol §6): six-group words
+/// and TSTs, the RECONFIG alarms in the reason nibble with the sensor's
+/// value in the data bits.
+#[test]
+fn wrap_reintegrate_and_failsafe_extended() {
+    wrap_reintegrate_and_failsafe_in(WordFormat::ExtendedAlarm);
+}
+
 /// One slave through wrap, link test, reintegration, a second fault,
 /// failsafe and CLR, step by step (about 170 lines: one story, each step's
 /// stimulus beside its check).
-#[test]
-fn wrap_reintegrate_and_failsafe() {
+fn wrap_reintegrate_and_failsafe_in(format: WordFormat) {
+    let ext = format == WordFormat::ExtendedAlarm;
     let seed = Rng::seed(0x5a7e);
     let mut rng = Rng::new(seed);
     use Seg::*;
@@ -86,8 +100,8 @@ fn wrap_reintegrate_and_failsafe() {
         push_group(&mut si_code, CODE_I);
     });
     for (c, (pi, si)) in plan.iter().enumerate() {
-        segment(&mut pi_code, *pi, c as u8, &mut rng);
-        segment(&mut si_code, *si, c as u8, &mut rng);
+        segment(&mut pi_code, *pi, c as u8, ext, &mut rng);
+        segment(&mut si_code, *si, c as u8, ext, &mut rng);
     }
     let pi = sample_words(&line_samples(
         &nrzi_encode(&pi_code, &mut 0),
@@ -105,9 +119,9 @@ fn wrap_reintegrate_and_failsafe() {
     ));
     let n = pi.len().min(si.len());
 
-    let mut s = Model::build(&block_verilog(Slave::new())).unwrap();
-    let mut mpo = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
-    let mut mso = Model::build(&block_verilog(Monitor::new(WordFormat::Basic))).unwrap();
+    let mut s = Model::build(&block_verilog(Slave::new(format))).unwrap();
+    let mut mpo = Model::build(&block_verilog(Monitor::new(format))).unwrap();
+    let mut mso = Model::build(&block_verilog(Monitor::new(format))).unwrap();
     let p = |m: &Model, x: &str| m.port(x);
     for (name, v) in [
         ("i_address", ADDRESS),
@@ -159,7 +173,7 @@ fn wrap_reintegrate_and_failsafe() {
         mso.tick(sclk);
         rso.sample(&mso);
     }
-    let ctx = format!("seed {seed} (MERKUR_SEED)");
+    let ctx = format!("{format:?}, seed {seed} (MERKUR_SEED)");
     let bit = |cycle: usize| 40 + cycle * PERIOD;
     // Mode sequence: N, WU (when PI went dark), N (after the repair), WU
     // again (second fault, with failsafe).
@@ -207,16 +221,26 @@ fn wrap_reintegrate_and_failsafe() {
     // the reintegration, and otherwise its sensor value; after failsafe, FS
     // in H0 and the slot left as it came. (Nothing goes round this bench,
     // so no alarm is read back: each is repeated, with its SEQ, every other
-    // frame until the next replaces it, protocol §11.)
+    // frame until the next replaces it, protocol §11.) Extended words: the
+    // data is the sensor value, the reason nibble {SEQ, reason} 0x5 and 0xc.
     let own: Vec<&Seen> = rpo
         .packets
         .iter()
         .filter(|p| p.1.len() == SLOTS)
         .map(|p| &p.1[2])
         .collect();
+    // An alarm as (data, reason nibble) in the format.
+    let alarm = |w: u16| {
+        if ext {
+            (0xabcd, (w >> 12) as u8 & 7 | ((w >> 11) as u8 & 1) << 3)
+        } else {
+            (w, 0)
+        }
+    };
     let pos = |w: u16| {
+        let (data, rn) = alarm(w);
         own.iter()
-            .position(|s| matches!(s, Seen::Word(d, _, true, _) if *d == w))
+            .position(|s| matches!(s, Seen::Word(d, _, true, r) if *d == data && *r == rn))
     };
     let wu = pos(0x5000).unwrap_or_else(|| panic!("{ctx}: RECONFIG(WU) alarm on PO: {own:?}"));
     let n_ = pos(0x4800).unwrap_or_else(|| panic!("{ctx}: RECONFIG(N) alarm on PO: {own:?}"));

@@ -76,7 +76,7 @@ fn the_secondary_relay_passes_frames_only() {
     idle(&mut si, 40);
     let mut sent = vec![data_frame(&mut si, 3, &mut rng)];
     header_only(&mut si, 0x4003, Some(!0x4003)); // SEC, CYC 3
-    tst_code(&mut si, false, 85);
+    tst_code(&mut si, false, 85, false);
     idle(&mut si, 8);
     header_only(&mut si, 0x9055, None); // TST of node 85 cut after H0
     sent.push(data_frame(&mut si, 4, &mut rng));

@@ -134,7 +134,7 @@ mod tests {
 
     #[test]
     fn the_first_module_of_a_block_carries_its_doc_the_others_point_to_it() {
-        let v = crate::emit::verilog::block_verilog(crate::node::slave::Slave::new());
+        let v = crate::emit::verilog::block_verilog(crate::node::slave::Slave::default());
         let sb = v.find("module top__sbox(").expect("switchbox module");
         let before = &v[..sb];
         let head = &before[before.rfind("// `sbox`").expect("the switchbox header")..];

@@ -460,7 +460,7 @@ mod tests {
     #[test]
     fn every_flip_flop_becomes_a_register_of_its_block() {
         for (name, (raw, ours)) in [
-            ("slave", both(crate::node::slave::Slave::new())),
+            ("slave", both(crate::node::slave::Slave::default())),
             ("master", both(crate::node::master::Master::default())),
             (
                 "special master",

@@ -205,7 +205,11 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(fwd::Fwd::new(WordFormat::ExtendedAlarm)),
         ),
         ("tst_tx", block_verilog(tst_tx::TstTx::default())),
-        ("slave", block_verilog(slave::Slave::new())),
+        (
+            "tst_tx_ext",
+            block_verilog(tst_tx::TstTx::new(WordFormat::ExtendedAlarm)),
+        ),
+        ("slave", block_verilog(slave::Slave::default())),
         ("pkt_tx", block_verilog(pkt_tx::PktTx::default())),
         ("mdb", block_verilog(mdb::Mdb::default())),
         ("master", block_verilog(master::Master::default())),

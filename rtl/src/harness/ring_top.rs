@@ -233,7 +233,7 @@ pub fn module_name(kind: Kind) -> &'static str {
 /// ([`size_memories`]). Simulation and synthesis both use this text.
 pub fn node_verilog(kind: Kind, slots: usize) -> String {
     let v = match kind {
-        Kind::Sensor | Kind::Actuator => block_verilog(crate::node::slave::Slave::new()),
+        Kind::Sensor | Kind::Actuator => block_verilog(crate::node::slave::Slave::default()),
         Kind::Master => block_verilog(crate::node::master::Master::default()),
         Kind::SpecialMaster => block_verilog(crate::node::special_master::SpecialMaster::default()),
     };

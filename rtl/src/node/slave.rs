@@ -14,6 +14,11 @@
 //! actuator's output register and the error counters. A [`crate::node::master`]
 //! is this block with `i_master` = 1 and a database beside it.
 //!
+//! Parameters: the word format ([`WordFormat`], protocol §4 or §6), for
+//! its receive ports, forwarder and TST generator; in the extended-alarm
+//! variant an alarm's SEQ is read back from the reason nibble and an
+//! actuator takes an alarm word's data into its output register.
+//!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -32,7 +37,7 @@
 //! | `o_ferr` | out | 16 | clock | frame errors: rejected headers at INPUT (saturating) |
 //! | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::node::master`] |
 //! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
-//! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words and rejected headers, for a master's memories |
+//! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_reason`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words (`o_reason`: the extended variant's reason nibble, else 0) and rejected headers, for a master's memories |
 //!
 //! Latency: INPUT to OUTPUT 9.5–10.5 bit times from the samples at `i_pi`
 //! to the line at `o_po` (the CDR, one group and a bit, the retime buffer:
@@ -112,6 +117,8 @@ pub struct Slave {
     pub o_alive: Signal<Out, Bit>,
     /// Its ALARM bit.
     pub o_alarm: Signal<Out, Bit>,
+    /// Its reason nibble (extended-alarm words; 0 otherwise).
+    pub o_reason: Signal<Out, Bits<4>>,
     /// Good word.
     pub o_ok: Signal<Out, Bit>,
     /// INPUT rejected a DATA header (or a header it could not read).
@@ -164,6 +171,9 @@ pub struct Slave {
     perr: DFF<Bits<16>>,
     ferr: DFF<Bits<16>>,
     reason: Signal<Local, Bits<4>>,
+    // Extended-alarm words; the SEQ of INPUT's word (D[11], or N1 bit 3).
+    ext: Constant<Bit>,
+    rx_seq: Signal<Local, Bit>,
     wrapped: Signal<Local, Bit>,
     out_pair: Signal<Local, Bits<2>>,
     bss_pair: Signal<Local, Bits<2>>,
@@ -171,13 +181,13 @@ pub struct Slave {
 
 impl Default for Slave {
     fn default() -> Self {
-        Self::new()
+        Self::new(WordFormat::Basic)
     }
 }
 
 impl Slave {
-    /// A slave node (basic 25-bit words).
-    pub fn new() -> Self {
+    /// A slave node for words in `format`.
+    pub fn new(format: WordFormat) -> Self {
         Self {
             clock: Default::default(),
             i_pi: Default::default(),
@@ -205,6 +215,7 @@ impl Slave {
             o_data: Default::default(),
             o_alive: Default::default(),
             o_alarm: Default::default(),
+            o_reason: Default::default(),
             o_ok: Default::default(),
             o_hdr_bad: Default::default(),
             o_act_data: Default::default(),
@@ -215,10 +226,12 @@ impl Slave {
             sbox: Default::default(),
             dark: Default::default(),
             swc: Default::default(),
-            rx_in: PortRx::new(WordFormat::Basic),
-            rx_bsr: PortRx::new(WordFormat::Basic),
-            fwd: Fwd::new(WordFormat::Basic),
-            tst: Default::default(),
+            rx_in: PortRx::new(format),
+            rx_bsr: PortRx::new(format),
+            fwd: Fwd::new(format),
+            tst: TstTx::new(format),
+            ext: Constant::new(format == WordFormat::ExtendedAlarm),
+            rx_seq: Default::default(),
             rep: Default::default(),
             rep_last: Default::default(),
             rep_cut: Default::default(),
@@ -328,6 +341,7 @@ impl Logic for Slave {
         self.o_data.next = self.rx_in.o_data.val();
         self.o_alive.next = self.rx_in.o_alive.val();
         self.o_alarm.next = self.rx_in.o_alarm.val();
+        self.o_reason.next = self.rx_in.o_reason.val();
         self.o_ok.next = self.rx_in.o_ok.val();
         if self.i_fs_set.val() {
             self.failsafe.d.next = true;
@@ -390,6 +404,10 @@ impl Logic for Slave {
                 }
             }
         }
+        self.rx_seq.next = self.rx_in.o_data.val().get_bit(11);
+        if self.ext.val() {
+            self.rx_seq.next = self.rx_in.o_reason.val().get_bit(3);
+        }
         // The read-back: the home slot's word at INPUT in the frame after
         // the one that carried the alarm (outside failsafe). The forwarder
         // decides the home slot at its first group, before the word
@@ -404,7 +422,7 @@ impl Logic for Slave {
             & !self.failsafe.q.val()
             & self.rx_in.o_ok.val()
             & self.rx_in.o_alarm.val()
-            & (self.rx_in.o_data.val().get_bit(11) != self.nxt.q.val())
+            & (self.rx_seq.val() != self.nxt.q.val())
         {
             self.fl_k.d.next = 0.into();
         }
@@ -454,10 +472,11 @@ impl Logic for Slave {
                 self.rw.d.next =
                     self.h0_rwc.q.val() | self.rx_in.o_data.val().get_bit(15) | self.wrapped.val();
             }
-            // Actuator output register: its own slot, good data.
+            // Actuator output register: its own slot, good data (in the
+            // extended variant an alarm word's too).
             if (self.rx_in.o_kind.val() == 2)
                 & self.rx_in.o_own.val()
-                & !self.rx_in.o_alarm.val()
+                & (!self.rx_in.o_alarm.val() | self.ext.val())
                 & self.i_actuator.val()
                 & !self.failsafe.q.val()
             {

@@ -4,6 +4,9 @@
 //! times on its own clock: J K, H0 = `{10, 0, ACK, ADDR}`, H1 = NOT H0, one
 //! idle group. ACK tells the partner that its TST is heard.
 //!
+//! Parameters: the word format ([`WordFormat`]); extended-alarm words have
+//! a reason nibble N1 = 0 after the first group, and a TST takes 75 bit times.
+//!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -25,13 +28,14 @@
 
 use crate::line::enc4b5b::Enc4b5b;
 use crate::line::nrzi_tx::NrziTx;
+use crate::line::word_rx::WordFormat;
 use rust_hdl::prelude::*;
 
 // The lead-in is the switchbox's dark time (a literal in `update`).
 const _: () = assert!(crate::node::sw_dark::DARK_CLOCKS == 24);
 
 /// TST generator.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct TstTx {
     /// Core clock.
     pub clock: Signal<In, Clock>,
@@ -45,15 +49,59 @@ pub struct TstTx {
     pub o_line: Signal<Out, Bits<2>>,
     enc: Enc4b5b,
     tx: NrziTx,
+    // Extended-alarm words; the group that starts H1; the idle group.
+    ext: Constant<Bit>,
+    h1_at: Constant<Bits<4>>,
+    idle_at: Constant<Bits<4>>,
     half: DFF<Bit>,
     dark: DFF<Bits<5>>,
     gnum: DFF<Bits<4>>,
     ack: DFF<Bit>,
     word: Signal<Local, Bits<16>>,
+    // The group within the word (0 first), and the data group it is (as
+    // in `fwd`: 0..4, the last one 4; 7 the extended variant's N1).
+    wg: Signal<Local, Bits<4>>,
+    dg: Signal<Local, Bits<4>>,
     nib: Signal<Local, Bits<4>>,
     p_a: Signal<Local, Bit>,
     p_b: Signal<Local, Bit>,
     sym: Signal<Local, Bits<5>>,
+}
+
+impl Default for TstTx {
+    fn default() -> Self {
+        Self::new(WordFormat::Basic)
+    }
+}
+
+impl TstTx {
+    /// A TST generator for words in `format`.
+    pub fn new(format: WordFormat) -> Self {
+        let ext = format == WordFormat::ExtendedAlarm;
+        Self {
+            clock: Default::default(),
+            i_ack: Default::default(),
+            i_address: Default::default(),
+            i_restart: Default::default(),
+            o_line: Default::default(),
+            enc: Default::default(),
+            tx: Default::default(),
+            ext: Constant::new(ext),
+            h1_at: Constant::new(if ext { 8u64 } else { 7 }.to_bits()),
+            idle_at: Constant::new(if ext { 14u64 } else { 12 }.to_bits()),
+            half: Default::default(),
+            dark: Default::default(),
+            gnum: Default::default(),
+            ack: Default::default(),
+            word: Default::default(),
+            wg: Default::default(),
+            dg: Default::default(),
+            nib: Default::default(),
+            p_a: Default::default(),
+            p_b: Default::default(),
+            sym: Default::default(),
+        }
+    }
 }
 
 impl Logic for TstTx {
@@ -72,8 +120,17 @@ impl Logic for TstTx {
         if self.ack.q.val() {
             self.word.next = self.word.val() | 0x1000;
         }
-        if self.gnum.q.val() >= 7 {
+        self.wg.next = self.gnum.q.val() - 2;
+        if self.gnum.q.val() >= self.h1_at.val() {
             self.word.next = !self.word.val();
+            self.wg.next = self.gnum.q.val() - self.h1_at.val();
+        }
+        self.dg.next = self.wg.val();
+        if self.ext.val() & (self.wg.val() != 0) {
+            self.dg.next = self.wg.val() - 1;
+            if self.wg.val() == 1 {
+                self.dg.next = 7.into();
+            }
         }
         self.p_a.next = !(self.word.val().get_bit(5)
             ^ self.word.val().get_bit(4)
@@ -95,19 +152,22 @@ impl Logic for TstTx {
             ^ self.word.val().get_bit(10)
             ^ self.word.val().get_bit(15)
             ^ self.word.val().get_bit(14));
-        // Nibble g of the word (g = 0..4): N0 = {0, 0, D1, D0}, D[5:2],
-        // D[9:6], D[13:10], {PA, D15, D14, PB}.
+        // Data group g of the word: N0 = {0, 0, D1, D0}, [ext: N1 = 0],
+        // D[5:2], D[9:6], D[13:10], {PA, D15, D14, PB}.
         self.nib.next = self.word.val().get_bits::<4>(0) & 3;
-        if (self.gnum.q.val() == 3) | (self.gnum.q.val() == 8) {
+        if self.dg.val() == 7 {
+            self.nib.next = 0.into();
+        }
+        if self.dg.val() == 1 {
             self.nib.next = self.word.val().get_bits::<4>(2);
         }
-        if (self.gnum.q.val() == 4) | (self.gnum.q.val() == 9) {
+        if self.dg.val() == 2 {
             self.nib.next = self.word.val().get_bits::<4>(6);
         }
-        if (self.gnum.q.val() == 5) | (self.gnum.q.val() == 10) {
+        if self.dg.val() == 3 {
             self.nib.next = self.word.val().get_bits::<4>(10);
         }
-        if (self.gnum.q.val() == 6) | (self.gnum.q.val() == 11) {
+        if self.dg.val() == 4 {
             self.nib.next = (self.word.val().get_bits::<4>(12) >> 1) & 6;
             if self.p_a.val() {
                 self.nib.next = self.nib.val() | 8;
@@ -135,14 +195,14 @@ impl Logic for TstTx {
         if self.gnum.q.val() == 1 {
             self.sym.next = 17.into(); // SYM_K
         }
-        if self.gnum.q.val() == 12 {
+        if self.gnum.q.val() == self.idle_at.val() {
             self.sym.next = 18.into(); // SYM_I
         }
         self.enc.i_sym.next = self.sym.val();
         self.tx.i_code.next = self.enc.o_code.val();
         if self.tx.o_take.val() {
             self.gnum.d.next = self.gnum.q.val() + 1;
-            if self.gnum.q.val() == 12 {
+            if self.gnum.q.val() == self.idle_at.val() {
                 self.gnum.d.next = 0.into();
                 self.ack.d.next = self.i_ack.val();
             }
@@ -150,7 +210,7 @@ impl Logic for TstTx {
         if self.i_restart.val() {
             // crate::node::sw_dark::DARK_CLOCKS (checked at the top of the file).
             self.dark.d.next = 24.into();
-            self.gnum.d.next = 12.into();
+            self.gnum.d.next = self.idle_at.val();
         }
         self.o_line.next = 0.into();
         if self.tx.o_line.val() {
