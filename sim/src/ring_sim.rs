@@ -13,6 +13,7 @@
 
 use crate::verilator::Model;
 use crate::wishbone::Wishbone;
+use merkur_rtl::line::word_rx::WordFormat;
 use crate::Rng;
 use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::line::{Lead, Word};
@@ -152,11 +153,6 @@ pub struct Options {
 
 /// What the RTL ring does not model yet, as a message naming the field.
 pub fn unsupported(cfg: &Config) -> Option<String> {
-    if cfg.ext {
-        return Some(
-            "frame.alarm_bits = true: the RTL implements the basic 25-bit words only".into(),
-        );
-    }
     if let Some(s) = cfg.last_critical() {
         return Some(format!(
             "frame.critical (slot {s}): retransmission on demand (protocol §8) is in the model only; no RTL node sends or fills the retransmission packet yet"
@@ -234,13 +230,14 @@ pub fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Opt
 }
 
 /// Line bit `bit` of a fault's target, counted from the packet's first line
-/// bit (J K 10 bits, two header words and the slots at 25 each, protocol §3).
-fn packet_bit(target: FlipTarget, bit: u32) -> u64 {
+/// bit (J K 10 bits, then two header words and the slots, `w` = 25 or 30
+/// line bits each, protocol §3, §6).
+fn packet_bit(target: FlipTarget, bit: u32, w: u64) -> u64 {
     let word = match target {
         FlipTarget::Cs => 0,
         FlipTarget::H0 => 10,
-        FlipTarget::H1 => 35,
-        FlipTarget::Slot(s) => 60 + 25 * s as u64,
+        FlipTarget::H1 => 10 + w,
+        FlipTarget::Slot(s) => 10 + w * (2 + s as u64),
         // Refused by `flip_unsupported` before any run.
         FlipTarget::RtxHead | FlipTarget::Rtx(_) => unreachable!("no RTX in the RTL"),
     };
@@ -378,7 +375,8 @@ fn cap_slot(e: u64, cyc: u32, ep: u32) -> Slot {
             data: (e & 0xffff) as u16,
             alive: (e >> 16) & 1 == 1,
             alarm: (e >> 17) & 1 == 1,
-            reason: 0,
+            // The reason nibble of extended-alarm words (0 otherwise).
+            reason: ((e >> 31) & 0xf) as u8,
         }),
         3 => Slot::Void,
         // A bad word's ALARM field tells whether it was marked (ring_top).
@@ -419,24 +417,34 @@ pub fn ring_verilog_of(cfg: &Config) -> std::sync::Arc<String> {
         .faults
         .iter()
         .any(|(_, f)| matches!(f, Fault::Restart { .. }));
-    ring_verilog_once(&rtl_kinds(cfg), cfg.slots, restarts)
+    let format = if cfg.ext {
+        WordFormat::ExtendedAlarm
+    } else {
+        WordFormat::Basic
+    };
+    ring_verilog_once(&rtl_kinds(cfg), cfg.slots, restarts, format)
 }
 
-/// The ring Verilog of `kinds` with `slots` slots (and power-on resets
-/// with `restarts`), generated once per process: a campaign builds each
-/// ring's model and then runs hundreds of cases of it, and generating
-/// ring100's text takes about 0.1 s.
-pub fn ring_verilog_once(kinds: &[Kind], slots: usize, restarts: bool) -> std::sync::Arc<String> {
+/// The ring Verilog of `kinds` with `slots` slots of words in `format`
+/// (and power-on resets with `restarts`), generated once per process: a
+/// campaign builds each ring's model and then runs hundreds of cases of
+/// it, and generating ring100's text takes about 0.1 s.
+pub fn ring_verilog_once(
+    kinds: &[Kind],
+    slots: usize,
+    restarts: bool,
+    format: WordFormat,
+) -> std::sync::Arc<String> {
     use std::collections::HashMap;
     use std::sync::{Arc, Mutex, OnceLock};
-    type Done = HashMap<(String, usize, bool), Arc<String>>;
+    type Done = HashMap<(String, usize, bool, WordFormat), Arc<String>>;
     static DONE: OnceLock<Mutex<Done>> = OnceLock::new();
     let done = DONE.get_or_init(|| Mutex::new(HashMap::new()));
-    let key = (format!("{kinds:?}"), slots, restarts);
+    let key = (format!("{kinds:?}"), slots, restarts, format);
     if let Some(v) = done.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return v.clone();
     }
-    let v = Arc::new(ring_verilog_with(kinds, slots, restarts));
+    let v = Arc::new(ring_verilog_with(kinds, slots, restarts, format));
     done.lock()
         .unwrap_or_else(|e| e.into_inner())
         .insert(key, v.clone());
@@ -633,7 +641,7 @@ fn frame_over(
     sent: u32,
     off: &mut [Option<u64>],
     period: u64,
-    slots: usize,
+    slot_bits: u64,
 ) -> bool {
     let fr = r.rd(f, st::FRAME);
     let th1 = r.rd(f, st::TH1);
@@ -648,7 +656,7 @@ fn frame_over(
             off[f] = Some(d);
         }
     }
-    let tail = (25 * slots as u64 + 8) * TICKS_PER_BIT as u64;
+    let tail = (slot_bits + 8) * TICKS_PER_BIT as u64;
     ended || off[f].is_some_and(|o| r.ticks >= prev + o + tail)
 }
 
@@ -900,12 +908,17 @@ fn repeat_tail(
             _ => None,
         })
         .collect();
-    if sent.is_empty() || cfg.ext {
+    if sent.is_empty() {
         return false;
     }
     let Slot::Data(g) = got else { return false };
     if g.alarm {
-        let r = (g.data >> 12) as u8;
+        // The reason: D[15:12], or the extended variant's N1 (§6, §11).
+        let r = if cfg.ext {
+            g.reason & 7
+        } else {
+            (g.data >> 12) as u8
+        };
         sent.contains(&r)
             || span
                 .iter()

@@ -90,7 +90,8 @@ fn every_block_synthesizes_for_ice40() {
 
 /// The ring top `merkur verilog` writes (here for tb-data/ring8.toml: all
 /// four node kinds), without and with the nodes' power-on resets (a ring
-/// that restarts nodes, rtl/src/harness/power_on.rs): lint-clean and accepted by
+/// that restarts nodes, rtl/src/harness/power_on.rs), and with
+/// extended-alarm words (protocol §6): lint-clean and accepted by
 /// Yosys (elaboration, process and design checks; it is a simulation
 /// harness, not a bitstream).
 #[test]
@@ -103,17 +104,23 @@ fn the_ring_top_is_lint_clean_and_checked_by_yosys() {
     let text = std::fs::read_to_string(root.join("tb-data").join(name)).unwrap();
     let cfg = merkur_model::config::load(name, &text).unwrap();
     let kinds: Vec<_> = cfg.nodes.iter().map(|n| n.kind).collect();
-    for restarts in [false, true] {
-        let v = merkur_rtl::harness::ring_top::ring_verilog_with(&kinds, cfg.slots, restarts);
+    use merkur_rtl::line::word_rx::WordFormat;
+    for (restarts, format) in [
+        (false, WordFormat::Basic),
+        (true, WordFormat::Basic),
+        (false, WordFormat::ExtendedAlarm),
+    ] {
+        let v =
+            merkur_rtl::harness::ring_top::ring_verilog_with(&kinds, cfg.slots, restarts, format);
         assert_eq!(
             v.contains("i_por"),
             restarts,
             "power-on reset only with restarts"
         );
-        let f = d.join(format!("ring8_ring_{restarts}.v"));
+        let f = d.join(format!("ring8_ring_{restarts}_{format:?}.v"));
         std::fs::write(&f, &v).unwrap();
         if let Err(err) = lint(&[&waivers, &f], "merkur_ring") {
-            panic!("ring top (restarts {restarts}) lint:\n{err}");
+            panic!("ring top (restarts {restarts}, {format:?}) lint:\n{err}");
         }
         let o = Command::new("yosys")
             .arg("-p")

@@ -315,7 +315,7 @@ fn blocks_needed(mems: &[(usize, usize)], depth: usize, bits: u64) -> u64 {
 /// the target's block RAM, naming the slot count, the need, the device's
 /// limit and the largest slot count that fits this node kind.
 fn memory_budget(b: &BlockRam, k: usize, st: &NodeStatic) -> Result<(), String> {
-    let mems = verilog::memories(&node_verilog(st.kind, 4096));
+    let mems = verilog::memories(&node_verilog(st.kind, 4096, merkur_rtl::line::word_rx::WordFormat::Basic));
     let depth = verilog::mem_depth(st.slots);
     let need = blocks_needed(&mems, depth, b.bits);
     if need <= b.count {

@@ -345,10 +345,13 @@ impl Ring {
             };
             self.store[s] = match w {
                 Slot::Data(d) => {
-                    // An alarm word is retransmitted once: if it comes back
-                    // unchanged from a retransmission, its owner did not
-                    // replace it, so it is not sent a third time.
-                    if d.alarm && self.emitted[s] == w {
+                    // An alarm word is retransmitted once: if an alarm comes
+                    // back in a slot where the SM sent one, its owner did
+                    // not replace it (it sends none in the cycle after an
+                    // alarm, §11), so it is not sent a third time (§8). (In
+                    // the extended variant a master may have put new data
+                    // in it: still the same alarm.)
+                    if d.alarm && matches!(self.emitted[s], Slot::Data(e) if e.alarm) {
                         Slot::Void
                     } else {
                         w

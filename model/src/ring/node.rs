@@ -558,18 +558,22 @@ impl Ring {
             (Kind::Actuator, SlotKind::Act { actuator }) if actuator == k => {
                 // The actuator decides from the word's first group (protocol
                 // §4, §7): an alarm of its own replaces the word; a bad word
-                // passes on bad (its data has already been forwarded);
-                // anything else leaves as {output register, its Alive}. An
-                // alarm word carries the register as it was before this word
-                // (the extended variant's data; the basic one has none).
+                // passes on bad (its data has already been forwarded; in the
+                // extended variant an alarm word's too, §6); anything else
+                // leaves as {output register, its Alive}. An alarm word
+                // carries the register as it was before this word (the
+                // extended variant's data; the basic one has none).
                 let v = self.nodes[k].output;
+                let passes_bad = match *w {
+                    Slot::Bad(l) | Slot::Marked(l) => {
+                        matches!(l, Lead::Data | Lead::Other) || (l == Lead::Alarm && self.cfg.ext)
+                    }
+                    _ => false,
+                };
                 if let Some(p) = self.take_alarm(k, ev) {
                     let before = self.nodes[k].out_before;
                     *w = Slot::Data(self.alarm_word(k, p, before));
-                } else if !matches!(
-                    *w,
-                    Slot::Bad(Lead::Data | Lead::Other) | Slot::Marked(Lead::Data | Lead::Other)
-                ) {
+                } else if !passes_bad {
                     *w = Slot::Data(Word {
                         data: v,
                         alive: self.nodes[k].toggle,

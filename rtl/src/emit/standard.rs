@@ -21,6 +21,7 @@
 
 use crate::emit::verilog::WAIVERS;
 use crate::harness::ring_top::node_verilog;
+use crate::line::word_rx::WordFormat;
 use merkur_model::scenario::Kind;
 
 /// Slots the standard masters' memories hold: rings of up to 256 slots.
@@ -67,7 +68,7 @@ pub fn standard_files() -> Vec<StandardFile> {
             what,
             source,
             parameters,
-        ) + &node_verilog(kind, STANDARD_SLOTS),
+        ) + &node_verilog(kind, STANDARD_SLOTS, WordFormat::Basic),
     };
     vec![
         node(

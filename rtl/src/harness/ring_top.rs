@@ -229,13 +229,16 @@ pub fn module_name(kind: Kind) -> &'static str {
 }
 
 /// The Verilog of a node kind's modules, named after [`module_name`], for a
-/// ring of `slots` slots: the memories are [`mem_depth`]`(slots)` deep
-/// ([`size_memories`]). Simulation and synthesis both use this text.
-pub fn node_verilog(kind: Kind, slots: usize) -> String {
+/// ring of `slots` slots of words in `format`: the memories are
+/// [`mem_depth`]`(slots)` deep ([`size_memories`]). Simulation and
+/// synthesis both use this text.
+pub fn node_verilog(kind: Kind, slots: usize, format: WordFormat) -> String {
     let v = match kind {
-        Kind::Sensor | Kind::Actuator => block_verilog(crate::node::slave::Slave::default()),
-        Kind::Master => block_verilog(crate::node::master::Master::default()),
-        Kind::SpecialMaster => block_verilog(crate::node::special_master::SpecialMaster::default()),
+        Kind::Sensor | Kind::Actuator => block_verilog(crate::node::slave::Slave::new(format)),
+        Kind::Master => block_verilog(crate::node::master::Master::new(format)),
+        Kind::SpecialMaster => {
+            block_verilog(crate::node::special_master::SpecialMaster::new(format))
+        }
     };
     rename_top(&size_memories(&v, mem_depth(slots)), module_name(kind))
 }
@@ -575,14 +578,20 @@ endmodule
 
 /// The Verilog of every module the ring needs plus the `merkur_ring` top.
 pub fn ring_verilog(kinds: &[Kind], slots: usize) -> String {
-    ring_verilog_with(kinds, slots, false)
+    ring_verilog_with(kinds, slots, false, WordFormat::Basic)
 }
 
 /// [`ring_verilog`], with `restarts`: every node with a power-on reset
 /// ([`crate::harness::power_on`]) that configuration field [`cfg::POR`] drives, for
 /// scenarios that restart nodes (protocol §12). Without, the nodes keep
-/// rust-hdl's text (a reset on every register costs simulation time).
-pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String {
+/// rust-hdl's text (a reset on every register costs simulation time); and
+/// with words in `format` (the nodes and the fibre monitors).
+pub fn ring_verilog_with(
+    kinds: &[Kind],
+    slots: usize,
+    restarts: bool,
+    format: WordFormat,
+) -> String {
     let n = kinds.len();
     let cap = cap_slots(slots);
     let mut out = String::new();
@@ -599,7 +608,7 @@ pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String
         }
     }
     for k in need {
-        let v = node_verilog(k, slots);
+        let v = node_verilog(k, slots, format);
         if restarts {
             out.push_str(&crate::harness::power_on::with_power_on_reset(
                 &v,
@@ -610,7 +619,7 @@ pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String
         }
     }
     out.push_str(&rename_top(
-        &block_verilog(crate::line::monitor::Monitor::new(WordFormat::Basic)),
+        &block_verilog(crate::line::monitor::Monitor::new(format)),
         "merkur_monitor",
     ));
     out.push_str(
@@ -628,7 +637,7 @@ pub fn ring_verilog_with(kinds: &[Kind], slots: usize, restarts: bool) -> String
             .replace("@REQUEST@", &cfg::REQUEST.to_string())
             .replace("@SENSOR@", &cfg::SENSOR.to_string()),
     );
-    out.push_str(&top(kinds, cap, restarts));
+    out.push_str(&top(kinds, cap, restarts, format == WordFormat::ExtendedAlarm));
     out
 }
 
@@ -777,7 +786,9 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
 
 /// Fibre `f` of the ring top: the line and its fault point
 /// (`merkur_fibre`), its monitor and the capture of what the monitor decodes.
-fn fibre(f: usize, n: usize, capw: usize) -> String {
+/// With `ext` (extended-alarm words, protocol §6) an entry has the word's
+/// reason nibble on top (35 bits).
+fn fibre(f: usize, n: usize, capw: usize, ext: bool) -> String {
     let mut v = String::new();
     let w = |v: &mut String, s: &str| {
         v.push_str(s);
@@ -801,12 +812,13 @@ fn fibre(f: usize, n: usize, capw: usize) -> String {
              \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val), .o_line(line_{f}), .o_sh(sh_{f}),\n\
              \x20       .o_old(old_{f}), .o_fr(fr_{f}));\n\
              \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
-             \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    wire [3:0] m_reason_{f};\n    wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+             \x20   {reason_decl}\
+             \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    {reason_unused}wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
              \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff), .i_flush(1'b0),\n\
              \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
              \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
              \x20       .o_reason(m_reason_{f}), .o_ok(m_ok_{f}), .o_compl(m_compl_{f}), .o_void(m_void_{f}), .o_marked(m_marked_{f}), .o_own(m_own_{f}), .o_hdr_bad(m_hdrbad_{f}), .o_ptype(m_ptype_{f}));\n\
-             \x20   reg [30:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = 31'd0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
+             \x20   reg [{top}:0] cap_{f} [0:{last}];\n    integer ci_{f};\n    initial for (ci_{f} = 0; ci_{f} <= {last}; ci_{f} = ci_{f} + 1) cap_{f}[ci_{f}] = {width}'d0;\n    reg [31:0] th1_{f} = 32'd0;\n    reg [11:0] lslot_{f} = 12'hfff;\n    reg [15:0] h0_{f} = 16'd0, h1_{f} = 16'd0, nsec_{f} = 16'd0, ntst_{f} = 16'd0, nend_{f} = 16'd0;\n    reg infr_{f} = 1'b0;\n\
              \x20   wire [1:0] mstat_{f} = m_ok_{f} ? 2'd1 : (m_void_{f} ? 2'd3 : 2'd2);\n\
              \x20   // A bad word's ALARM field in the capture says whether it was marked (protocol §4).\n\
              \x20   wire mflag_{f} = (m_ok_{f} | m_void_{f}) ? m_alarm_{f} : m_marked_{f};\n\
@@ -818,15 +830,29 @@ fn fibre(f: usize, n: usize, capw: usize) -> String {
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd0 && m_ok_{f}) h0_{f} <= m_data_{f};\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd0) begin\n\
              \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            lslot_{f} <= 12'hfff;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
-             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] = {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
-             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] = {{epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
+             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] = {{{rz}epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
+             \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] = {{{rz}epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\
-             \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] = {{epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
+             \x20           cap_{f}[{{1'b0, hdr_cyc_{f}[1:0], m_slot_{f}[{cb}:0]}}] = {{{rn}epoch, hdr_cyc_{f}, mstat_{f}, mflag_{f}, m_alive_{f}, m_data_{f}}};\n\
              \x20           if (m_slot_{f} == slots_m1) begin\n                infr_{f} <= 1'b0;\n                hdr_new_{f} <= 1'b1;\n                nend_{f} <= nend_{f} + 16'd1;\n            end\n        end\n    end\n    /* verilator lint_on BLKSEQ */",
             hz = if capw > 4 { format!("{}'d0, ", capw - 4) } else { String::new() },
             last = (1usize << capw) - 1,
+            top = if ext { 34 } else { 30 },
+            width = if ext { 35 } else { 31 },
+            rz = if ext { "4'd0, " } else { "" },
+            rn = if ext { format!("m_reason_{f}, ") } else { String::new() },
+            reason_decl = if ext {
+                format!("wire [3:0] m_reason_{f};\n")
+            } else {
+                String::new()
+            },
+            reason_unused = if ext {
+                String::new()
+            } else {
+                format!("wire [3:0] m_reason_{f};\n    ")
+            },
             cb = capw - 4,
         ),
     );
@@ -835,9 +861,12 @@ fn fibre(f: usize, n: usize, capw: usize) -> String {
 
 /// The harness's read multiplexers: status fields, captured entries and
 /// the masters' Wishbone answers.
-fn read_muxes(kinds: &[Kind]) -> String {
+fn read_muxes(kinds: &[Kind], ext: bool) -> String {
     let n = kinds.len();
     let nf = 2 * n;
+    // The capture read: 32 bits (31-bit entries), 64 with extended words
+    // (35-bit entries).
+    let (cw, pad) = if ext { (64, "29'd0") } else { (32, "1'b0") };
     let mut v = String::new();
     let w = |v: &mut String, s: &str| {
         v.push_str(s);
@@ -939,17 +968,17 @@ fn read_muxes(kinds: &[Kind]) -> String {
     // Capture read.
     w(
         &mut v,
-        "    always @(*) begin\n        o_cap = 32'd0;\n        if (i_cap_en) case (i_cap_fibre)",
+        &format!("    always @(*) begin\n        o_cap = {cw}'d0;\n        if (i_cap_en) case (i_cap_fibre)"),
     );
     for f in 0..nf {
         w(
             &mut v,
-            &format!("            16'd{f}: o_cap = {{1'b0, cap_{f}[i_cap_idx]}};"),
+            &format!("            16'd{f}: o_cap = {{{pad}, cap_{f}[i_cap_idx]}};"),
         );
     }
     w(
         &mut v,
-        "            default: o_cap = 32'd0;\n        endcase\n    end",
+        &format!("            default: o_cap = {cw}'d0;\n        endcase\n    end"),
     );
     // Wishbone answer.
     w(
@@ -968,7 +997,7 @@ fn read_muxes(kinds: &[Kind]) -> String {
     v
 }
 
-fn top(kinds: &[Kind], cap: usize, restarts: bool) -> String {
+fn top(kinds: &[Kind], cap: usize, restarts: bool, ext: bool) -> String {
     let n = kinds.len();
     let nf = 2 * n;
     let capw = (8 * cap).trailing_zeros() as usize;
@@ -986,11 +1015,12 @@ fn top(kinds: &[Kind], cap: usize, restarts: bool) -> String {
         &mut v,
         "    input wire clk;\n    input wire i_cfg_we;\n    input wire [15:0] i_cfg_sel;\n    input wire [7:0] i_cfg_field;\n    input wire [31:0] i_cfg_val;\n\
          \x20   input wire i_rd_en;\n    input wire [15:0] i_rd_sel;\n    input wire [7:0] i_rd_field;\n    output reg [31:0] o_rd;\n\
-         \x20   input wire i_cap_en;\n    input wire [15:0] i_cap_fibre;\n    input wire [CAPW-1:0] i_cap_idx;\n    output reg [31:0] o_cap;\n\
+         \x20   input wire i_cap_en;\n    input wire [15:0] i_cap_fibre;\n    input wire [CAPW-1:0] i_cap_idx;\n    output reg [CAPB-1:0] o_cap;\n\
          \x20   input wire [15:0] i_wb_node;\n    input wire i_wb_cyc;\n    input wire i_wb_stb;\n    input wire i_wb_we;\n\
          \x20   input wire [13:0] i_wb_adr;\n    input wire [15:0] i_wb_dat;\n    output reg [15:0] o_wb_dat;\n    output reg o_wb_ack;",
     );
     v = v.replace("CAPW-1", &(capw - 1).to_string());
+    v = v.replace("CAPB-1", if ext { "63" } else { "31" });
     w(
         &mut v,
         "    // Shared configuration.\n    reg [11:0] slots_m1 = 12'd0;\n    reg [19:0] cs_timeout = 20'hfffff;\n    reg [19:0] period = 20'd0;\n\
@@ -1041,9 +1071,9 @@ fn top(kinds: &[Kind], cap: usize, restarts: bool) -> String {
     );
     // Fibres: line levels, fault points, monitors, capture.
     for f in 0..nf {
-        v.push_str(&fibre(f, n, capw));
+        v.push_str(&fibre(f, n, capw, ext));
     }
-    v.push_str(&read_muxes(kinds));
+    v.push_str(&read_muxes(kinds, ext));
     // Global configuration.
     w(
         &mut v,

@@ -156,7 +156,7 @@ pub struct WordRx {
 
 /// The word format a receiver reads (protocol §6): the parameter of
 /// [`WordRx`], [`crate::line::monitor::Monitor`] and [`crate::node::port_rx::PortRx`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum WordFormat {
     /// 25-bit words (five code groups): the basic variant.
     Basic,

@@ -18,6 +18,9 @@
 //! (the reload frame) and writes an own slot only once it has a value, from
 //! the ring or from its host ([`Mdb`]).
 //!
+//! Parameters: the word format ([`crate::line::word_rx::WordFormat`],
+//! protocol §4 or §6), for the [`Slave`] and the [`Mdb`].
+//!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
@@ -45,6 +48,7 @@
 //!                        └──────▶ mdb ◀──▶ Wishbone host
 //! ```
 
+use crate::line::word_rx::WordFormat;
 use crate::node::mdb::Mdb;
 use crate::node::slave::Slave;
 use rust_hdl::prelude::*;
@@ -117,6 +121,17 @@ pub struct Master {
     aact: RAM<Bit, 12>,
 }
 
+impl Master {
+    /// A master node for words in `format` (protocol §4, §6).
+    pub fn new(format: WordFormat) -> Self {
+        Self {
+            node: Slave::new(format),
+            mdb: Mdb::new(format),
+            ..Default::default()
+        }
+    }
+}
+
 impl Logic for Master {
     #[hdl_gen]
     fn update(&mut self) {
@@ -187,6 +202,7 @@ impl Logic for Master {
         self.mdb.i_data.next = self.node.o_data.val();
         self.mdb.i_alive.next = self.node.o_alive.val();
         self.mdb.i_alarm.next = self.node.o_alarm.val();
+        self.mdb.i_reason.next = self.node.o_reason.val();
         self.mdb.i_ok.next = self.node.o_ok.val();
         self.mdb.i_hdr_bad.next = self.node.o_hdr_bad.val();
 

@@ -69,6 +69,10 @@
 //! A host drains the queue with: read 0x2004; while entries > 0, read 0x2003
 //! (and 0x2004's CYC), write 1 to 0x2004.
 //!
+//! Parameters: the word format ([`WordFormat`]): in the extended-alarm
+//! variant (protocol §6) an alarm's reason and SEQ come from the reason
+//! nibble `i_reason` and its data is taken like a data word's.
+//!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock |
@@ -81,13 +85,13 @@
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 (the slot whose configuration reads LAST) |
 //! | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 //! | `i_mode` | in | 2 | clock | switchbox mode (status register) |
-//! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
+//! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_reason`, `i_ok` | in | | clock | received words (from the node's INPUT port; `i_reason` the extended variant's reason nibble) |
 //! | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 //! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 //! | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
 //! | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
 //! | `o_join` | out | 1 | clock | started by JOIN |
-//! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+//! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data`, `o_s2_rn` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 //! | `o_running` | out | 1 | clock | the host started the ring |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
 //! | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
@@ -106,6 +110,7 @@
 //! wb ack     _________/‾‾‾\_______     data read: 2 clocks
 //! ```
 
+use crate::line::word_rx::WordFormat;
 use rust_hdl::prelude::*;
 
 // Configuration bits: `merkur_model::config::cfg_bits` (LAST 1, ACT 2,
@@ -148,7 +153,7 @@ pub const ALQ_DEPTH: usize = 16;
 pub const WB_CFG: u16 = 0x1000;
 
 /// A master's database.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct Mdb {
     /// Core clock.
     pub clock: Signal<In, Clock>,
@@ -186,6 +191,8 @@ pub struct Mdb {
     pub i_alive: Signal<In, Bit>,
     /// Word ALARM.
     pub i_alarm: Signal<In, Bit>,
+    /// Received word's reason nibble (extended-alarm words; 0 otherwise).
+    pub i_reason: Signal<In, Bits<4>>,
     /// Word good.
     pub i_ok: Signal<In, Bit>,
     /// A header was rejected at INPUT.
@@ -213,6 +220,8 @@ pub struct Mdb {
     pub o_s2_alarm: Signal<Out, Bit>,
     /// Stage 2 data.
     pub o_s2_data: Signal<Out, Bits<16>>,
+    /// Stage 2: its reason nibble (extended-alarm words).
+    pub o_s2_rn: Signal<Out, Bits<4>>,
     /// Running.
     pub o_running: Signal<Out, Bit>,
     /// IRQ1 alarm received.
@@ -294,6 +303,12 @@ pub struct Mdb {
     /// write can come between the read and the SEQ write).
     s2_run: DFF<Bit>,
     s2_data: DFF<Bits<16>>,
+    // Extended-alarm words: the reason nibble of the word in stage 2, and
+    // the alarm's reason and SEQ as the format carries them.
+    ext: Constant<Bit>,
+    s2_rn: DFF<Bits<4>>,
+    s2_rsn: Signal<Local, Bits<4>>,
+    s2_seq: Signal<Local, Bit>,
     irq1: DFF<Bit>,
     irq2: DFF<Bit>,
     irq_fs: DFF<Bit>,
@@ -350,6 +365,146 @@ pub struct Mdb {
     adr_data: Signal<Local, Bit>,
     adr_cfg: Signal<Local, Bit>,
 }
+impl Default for Mdb {
+    fn default() -> Self {
+        Self::new(WordFormat::Basic)
+    }
+}
+
+impl Mdb {
+    /// A database for words in `format` (protocol §4, §6).
+    pub fn new(format: WordFormat) -> Self {
+        Self {
+            clock: Default::default(),
+            i_wb_cyc: Default::default(),
+            i_wb_stb: Default::default(),
+            i_wb_we: Default::default(),
+            i_wb_adr: Default::default(),
+            i_wb_dat: Default::default(),
+            o_wb_dat: Default::default(),
+            o_wb_ack: Default::default(),
+            i_home: Default::default(),
+            i_slots_m1: Default::default(),
+            i_fs: Default::default(),
+            i_mode: Default::default(),
+            i_wvalid: Default::default(),
+            i_kind: Default::default(),
+            i_slot: Default::default(),
+            i_data: Default::default(),
+            i_alive: Default::default(),
+            i_alarm: Default::default(),
+            i_reason: Default::default(),
+            i_ok: Default::default(),
+            i_hdr_bad: Default::default(),
+            i_tx_slot: Default::default(),
+            o_tx_data: Default::default(),
+            o_tx_cfg: Default::default(),
+            o_join: Default::default(),
+            o_s2: Default::default(),
+            o_s2_slot: Default::default(),
+            o_s2_act: Default::default(),
+            o_s2_ok: Default::default(),
+            o_s2_alive: Default::default(),
+            o_s2_alarm: Default::default(),
+            o_s2_data: Default::default(),
+            o_s2_rn: Default::default(),
+            o_running: Default::default(),
+            o_irq1: Default::default(),
+            o_irq2: Default::default(),
+            o_irq_fs: Default::default(),
+            o_irq_rc: Default::default(),
+            o_alarmq: Default::default(),
+            o_irq_fsc: Default::default(),
+            o_fs_host: Default::default(),
+            o_fs_clear: Default::default(),
+            i_fs_cleared: Default::default(),
+            o_aerr: Default::default(),
+            db: Default::default(),
+            cfg_tx: Default::default(),
+            cfg_rx: Default::default(),
+            ast: Default::default(),
+            join: Default::default(),
+            rl: Default::default(),
+            alq: Default::default(),
+            alq_wr: Default::default(),
+            alq_rd: Default::default(),
+            alq_level: Default::default(),
+            alq_ovf: Default::default(),
+            alq_in: Default::default(),
+            alq_word: Default::default(),
+            alq_w2: Default::default(),
+            alq_out: Default::default(),
+            hdr_cyc: Default::default(),
+            alq_c: Default::default(),
+            alq_push: Default::default(),
+            alq_pop: Default::default(),
+            alq_keep: Default::default(),
+            tx_served: Default::default(),
+            tx_data: Default::default(),
+            tx_cfg: Default::default(),
+            tx_home: Default::default(),
+            hwsame: Default::default(),
+            t3: Default::default(),
+            t3_hv: Default::default(),
+            t3_slot: Default::default(),
+            t3_data: Default::default(),
+            t3_cfg: Default::default(),
+            s2: Default::default(),
+            s2_slot: Default::default(),
+            s2_ok: Default::default(),
+            s2_alive: Default::default(),
+            s2_alarm: Default::default(),
+            s2_run: Default::default(),
+            s2_data: Default::default(),
+            ext: Constant::new(format == WordFormat::ExtendedAlarm),
+            s2_rn: Default::default(),
+            s2_rsn: Default::default(),
+            s2_seq: Default::default(),
+            irq1: Default::default(),
+            irq2: Default::default(),
+            irq_fs: Default::default(),
+            irq_rc: Default::default(),
+            irq_fsc: Default::default(),
+            fs_was: Default::default(),
+            fs_host: Default::default(),
+            fs_clear: Default::default(),
+            fs_clear_held: Default::default(),
+            aerr: Default::default(),
+            last_irq: Default::default(),
+            cur_cyc: Default::default(),
+            fs_frame: Default::default(),
+            unread: Default::default(),
+            read_prev: Default::default(),
+            running: Default::default(),
+            err_cfg: Default::default(),
+            err_wr: Default::default(),
+            hstate: Default::default(),
+            ack: Default::default(),
+            rdat: Default::default(),
+            perm: Default::default(),
+            aerr_inc: Default::default(),
+            stat: Default::default(),
+            tx_value: Default::default(),
+            irq_word: Default::default(),
+            s2_cfg: Default::default(),
+            s2_ast: Default::default(),
+            new_ast: Default::default(),
+            prev_cyc: Default::default(),
+            ast_valid: Default::default(),
+            s2_alrm: Default::default(),
+            s2_fsr: Default::default(),
+            s2_new: Default::default(),
+            ast_word: Default::default(),
+            s2_write: Default::default(),
+            s2_own: Default::default(),
+            s3_take: Default::default(),
+            host_wr: Default::default(),
+            host_req: Default::default(),
+            adr_data: Default::default(),
+            adr_cfg: Default::default(),
+        }
+    }
+}
 
 impl Logic for Mdb {
     // One long function: rust-hdl's `#[hdl_gen]` turns one `update` into
@@ -378,6 +533,7 @@ impl Logic for Mdb {
             s2_alarm,
             s2_run,
             s2_data,
+            s2_rn,
             irq1,
             irq2,
             irq_fs,
@@ -484,6 +640,15 @@ impl Logic for Mdb {
         self.s2_alarm.d.next = self.i_alarm.val();
         self.s2_run.d.next = self.running.q.val();
         self.s2_data.d.next = self.i_data.val();
+        self.s2_rn.d.next = self.i_reason.val();
+        // An alarm's reason and SEQ: D[15:12], D[11]; extended words:
+        // N1 = {SEQ, REASON[2:0]} (protocol §11).
+        self.s2_rsn.next = self.s2_data.q.val().get_bits::<4>(12);
+        self.s2_seq.next = self.s2_data.q.val().get_bit(11);
+        if self.ext.val() {
+            self.s2_rsn.next = self.s2_rn.q.val() & 7;
+            self.s2_seq.next = self.s2_rn.q.val().get_bit(3);
+        }
         // Stage 2: update data, Alive state, interrupts (protocol §7, §11).
         self.s2_cfg.next = self.cfg_rx.read_data.val();
         self.s2_ast.next = self.ast.read_data.val();
@@ -555,28 +720,40 @@ impl Logic for Mdb {
         self.cfg_rx.write_enable.next = false;
         self.cfg_rx.write_address.next = self.s2_slot.q.val();
         self.cfg_rx.write_data.next = self.s2_cfg.val() | 1;
-        if self.s2_data.q.val().get_bit(11) {
+        if self.s2_seq.val() {
             self.cfg_rx.write_data.next = self.s2_cfg.val() & 14;
         }
         self.s2_alrm.next = self.s2.q.val()
             & self.s2_ok.q.val()
             & self.s2_alarm.q.val()
             & (self.s2_slot.q.val() != self.i_home.val());
-        self.s2_fsr.next = self.s2_data.q.val().get_bits::<4>(12) == 3;
+        self.s2_fsr.next = self.s2_rsn.val() == 3;
         if self.s2_alrm.val() & !self.s2_fsr.val() & self.s2_run.q.val() & self.running.q.val() {
             self.cfg_rx.write_enable.next = true;
         }
         // (Before its host starts it, a master filters nothing.)
         self.s2_new.next = self.s2_fsr.val()
             | !self.s2_run.q.val()
-            | (self.s2_data.q.val().get_bit(11) == self.s2_cfg.val().get_bit(0));
+            | (self.s2_seq.val() == self.s2_cfg.val().get_bit(0));
         if self.s2.q.val() & !self.fs_frame.q.val() {
             self.ast.write_enable.next = true;
             if self.s2_ok.q.val() {
                 if self.s2_alrm.val() & self.s2_new.val() {
                     // rust-hdl widens only with a masked cast (a lint
                     // warning), so the slot is copied bit by bit.
-                    self.irq_word.next = self.s2_data.q.val() & 0xf000;
+                    self.irq_word.next = 0.into();
+                    if self.s2_rsn.val().get_bit(0) {
+                        self.irq_word.next = 0x1000.into();
+                    }
+                    if self.s2_rsn.val().get_bit(1) {
+                        self.irq_word.next = self.irq_word.val() | 0x2000;
+                    }
+                    if self.s2_rsn.val().get_bit(2) {
+                        self.irq_word.next = self.irq_word.val() | 0x4000;
+                    }
+                    if self.s2_rsn.val().get_bit(3) {
+                        self.irq_word.next = self.irq_word.val() | 0x8000;
+                    }
                     if self.s2_slot.q.val().get_bit(0) {
                         self.irq_word.next = self.irq_word.val() | 1;
                     }
@@ -615,17 +792,17 @@ impl Logic for Mdb {
                     }
                     self.last_irq.d.next = self.irq_word.val();
                     self.alq_push.next = true;
-                    if self.s2_data.q.val().get_bits::<4>(12) == 1 {
+                    if self.s2_rsn.val() == 1 {
                         self.irq1.d.next = true;
                     }
-                    if self.s2_data.q.val().get_bits::<4>(12) == 2 {
+                    if self.s2_rsn.val() == 2 {
                         self.irq2.d.next = true;
                     }
-                    if self.s2_data.q.val().get_bits::<4>(12) == 3 {
+                    if self.s2_rsn.val() == 3 {
                         self.irq_fs.d.next = true;
                     }
-                    if (self.s2_data.q.val().get_bits::<4>(12) >= 4)
-                        & (self.s2_data.q.val().get_bits::<4>(12) <= 6)
+                    if (self.s2_rsn.val() >= 4)
+                        & (self.s2_rsn.val() <= 6)
                     {
                         self.irq_rc.d.next = true;
                     }
@@ -635,8 +812,12 @@ impl Logic for Mdb {
                 // in stage 1; a host write of the slot in the clock of that
                 // read counts).
                 self.s2_own.next = (self.s2_cfg.val() & 10) != 0;
-                self.s2_write.next = !self.s2_alarm.q.val() & !self.s2_own.val();
-                self.t3.d.next = !self.s2_alarm.q.val() & self.s2_own.val() & self.join.q.val();
+                // An alarm word's data only in the extended variant (§6).
+                self.s2_write.next =
+                    (!self.s2_alarm.q.val() | self.ext.val()) & !self.s2_own.val();
+                self.t3.d.next = (!self.s2_alarm.q.val() | self.ext.val())
+                    & self.s2_own.val()
+                    & self.join.q.val();
                 self.t3_hv.d.next = self.cfg_tx.read_data.val().get_bit(0) | self.hwsame.q.val();
                 self.t3_slot.d.next = self.s2_slot.q.val();
                 self.t3_data.d.next = self.s2_data.q.val();
@@ -967,6 +1148,7 @@ impl Logic for Mdb {
         self.o_s2_alive.next = self.s2_alive.q.val();
         self.o_s2_alarm.next = self.s2_alarm.q.val();
         self.o_s2_data.next = self.s2_data.q.val();
+        self.o_s2_rn.next = self.s2_rn.q.val();
         self.o_running.next = self.running.q.val();
         self.o_irq1.next = self.irq1.q.val();
         self.o_irq2.next = self.irq2.q.val();

@@ -10,6 +10,10 @@
 //! groups. Idles (all ones) between packets. Words are encoded as the
 //! protocol's §4 (flags first, two odd parities last), 4B/5B, NRZI.
 //!
+//! Parameters: the word format ([`WordFormat`]); extended-alarm words
+//! (protocol §6) have six groups, N1 = `i_word_rn` after the first (0 in
+//! the headers), and a VOID is six S groups.
+//!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -20,6 +24,7 @@
 //! | `i_h0_alive` | in | 1 | clock | H0's ALIVE bit (a DATA frame's CLR), taken with `i_h0` |
 //! | `i_word_data` | in | 16 | clock | data of slot `o_slot` |
 //! | `i_word_alive`, `i_word_alarm`, `i_word_void` | in | 1 | clock | its flags / VOID |
+//! | `i_word_rn` | in | 4 | clock | its reason nibble N1 (extended-alarm words; unused otherwise) |
 //! | `o_slot` | out | 12 | clock | slot whose word is due next |
 //! | `o_take` | out | 1 | clock | the word of `o_slot` is taken in this clock (combinational) |
 //! | `o_busy` | out | 1 | clock | a packet is being sent |
@@ -36,10 +41,11 @@
 
 use crate::line::enc4b5b::Enc4b5b;
 use crate::line::nrzi_tx::NrziTx;
+use crate::line::word_rx::WordFormat;
 use rust_hdl::prelude::*;
 
 /// Packet generator.
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct PktTx {
     /// Core clock.
     pub clock: Signal<In, Clock>,
@@ -63,6 +69,8 @@ pub struct PktTx {
     pub i_word_alarm: Signal<In, Bit>,
     /// Slot word is VOID.
     pub i_word_void: Signal<In, Bit>,
+    /// Slot word's reason nibble (extended-alarm words).
+    pub i_word_rn: Signal<In, Bits<4>>,
     /// Slot whose word is due.
     pub o_slot: Signal<Out, Bits<12>>,
     /// Word taken.
@@ -84,17 +92,76 @@ pub struct PktTx {
     w_alive: DFF<Bit>,
     w_alarm: DFF<Bit>,
     w_void: DFF<Bit>,
+    w_rn: DFF<Bits<4>>,
+    // Extended-alarm words; a word's last group (4 or 5); the data group
+    // `grp` is (0..4, the last one 4; 7 the extended variant's N1).
+    ext: Constant<Bit>,
+    last_g: Constant<Bits<3>>,
+    dg: Signal<Local, Bits<3>>,
     nib: Signal<Local, Bits<4>>,
     p_a: Signal<Local, Bit>,
     p_b: Signal<Local, Bit>,
     sym: Signal<Local, Bits<5>>,
 }
 
+impl Default for PktTx {
+    fn default() -> Self {
+        Self::new(WordFormat::Basic)
+    }
+}
+
+impl PktTx {
+    /// A packet generator for words in `format`.
+    pub fn new(format: WordFormat) -> Self {
+        let ext = format == WordFormat::ExtendedAlarm;
+        Self {
+            clock: Default::default(),
+            i_start: Default::default(),
+            i_slots: Default::default(),
+            i_slots_m1: Default::default(),
+            i_h0: Default::default(),
+            i_h1: Default::default(),
+            i_h0_alive: Default::default(),
+            i_word_data: Default::default(),
+            i_word_alive: Default::default(),
+            i_word_alarm: Default::default(),
+            i_word_void: Default::default(),
+            i_word_rn: Default::default(),
+            o_slot: Default::default(),
+            o_take: Default::default(),
+            o_busy: Default::default(),
+            o_line: Default::default(),
+            enc: Default::default(),
+            tx: Default::default(),
+            half: Default::default(),
+            pend: Default::default(),
+            busy: Default::default(),
+            wcnt: Default::default(),
+            grp: Default::default(),
+            slot: Default::default(),
+            last: Default::default(),
+            w_data: Default::default(),
+            w_alive: Default::default(),
+            w_alarm: Default::default(),
+            w_void: Default::default(),
+            w_rn: Default::default(),
+            ext: Constant::new(ext),
+            last_g: Constant::new(if ext { 5u64 } else { 4 }.to_bits()),
+            dg: Default::default(),
+            nib: Default::default(),
+            p_a: Default::default(),
+            p_b: Default::default(),
+            sym: Default::default(),
+        }
+    }
+}
+
 impl Logic for PktTx {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, half, pend, busy, wcnt, grp, slot, last, w_data, w_alive, w_alarm, w_void
+            self, clock, half, pend, busy, wcnt, grp, slot, last, w_data, w_alive, w_alarm, w_void,
+            w_rn
         );
         self.tx.clock.next = self.clock.val();
         self.half.d.next = !self.half.q.val();
@@ -105,6 +172,8 @@ impl Logic for PktTx {
         // Parities of the current word (protocol §4).
         self.p_a.next = !(self.w_alarm.q.val()
             ^ self.w_alive.q.val()
+            ^ self.w_rn.q.val().get_bit(3)
+            ^ self.w_rn.q.val().get_bit(2)
             ^ self.w_data.q.val().get_bit(5)
             ^ self.w_data.q.val().get_bit(4)
             ^ self.w_data.q.val().get_bit(9)
@@ -113,6 +182,9 @@ impl Logic for PktTx {
             ^ self.w_data.q.val().get_bit(12)
             ^ self.w_data.q.val().get_bit(15));
         self.p_b.next = !(self.w_alive.q.val()
+            ^ self.w_rn.q.val().get_bit(2)
+            ^ self.w_rn.q.val().get_bit(1)
+            ^ self.w_rn.q.val().get_bit(0)
             ^ self.w_data.q.val().get_bit(1)
             ^ self.w_data.q.val().get_bit(0)
             ^ self.w_data.q.val().get_bit(4)
@@ -127,6 +199,13 @@ impl Logic for PktTx {
             ^ self.w_data.q.val().get_bit(15)
             ^ self.w_data.q.val().get_bit(14));
         // Nibble `grp` of the current word.
+        self.dg.next = self.grp.q.val();
+        if self.ext.val() & (self.grp.q.val() != 0) {
+            self.dg.next = self.grp.q.val() - 1;
+            if self.grp.q.val() == 1 {
+                self.dg.next = 7.into();
+            }
+        }
         self.nib.next = self.w_data.q.val().get_bits::<4>(0) & 3;
         if self.w_alarm.q.val() {
             self.nib.next = self.nib.val() | 8;
@@ -134,16 +213,19 @@ impl Logic for PktTx {
         if self.w_alive.q.val() {
             self.nib.next = self.nib.val() | 4;
         }
-        if self.grp.q.val() == 1 {
+        if self.dg.val() == 7 {
+            self.nib.next = self.w_rn.q.val();
+        }
+        if self.dg.val() == 1 {
             self.nib.next = self.w_data.q.val().get_bits::<4>(2);
         }
-        if self.grp.q.val() == 2 {
+        if self.dg.val() == 2 {
             self.nib.next = self.w_data.q.val().get_bits::<4>(6);
         }
-        if self.grp.q.val() == 3 {
+        if self.dg.val() == 3 {
             self.nib.next = self.w_data.q.val().get_bits::<4>(10);
         }
-        if self.grp.q.val() == 4 {
+        if self.dg.val() == 4 {
             self.nib.next = (self.w_data.q.val().get_bits::<4>(12) >> 1) & 6;
             if self.p_a.val() {
                 self.nib.next = self.nib.val() | 8;
@@ -188,13 +270,14 @@ impl Logic for PktTx {
                     self.busy.d.next = true;
                     self.pend.d.next = false;
                     self.wcnt.d.next = 0.into();
-                    self.grp.d.next = 4.into();
+                    self.grp.d.next = self.last_g.val();
                     self.slot.d.next = 0.into();
                     self.last.d.next = false;
                 }
-            } else if self.grp.q.val() == 4 {
+            } else if self.grp.q.val() == self.last_g.val() {
                 // The next word.
                 self.grp.d.next = 0.into();
+                self.w_rn.d.next = 0.into();
                 self.w_alive.d.next = false;
                 self.w_alarm.d.next = false;
                 self.w_void.d.next = false;
@@ -218,6 +301,7 @@ impl Logic for PktTx {
                     self.w_alive.d.next = self.i_word_alive.val();
                     self.w_alarm.d.next = self.i_word_alarm.val();
                     self.w_void.d.next = self.i_word_void.val();
+                    self.w_rn.d.next = self.i_word_rn.val();
                     self.o_take.next = true;
                 }
             } else {

@@ -126,9 +126,13 @@ use rust_hdl::prelude::*;
 /// whether it is a DATA frame (relayed) or not (the SM's own SEC coming
 /// back, dropped): more than J K + H0 + H1 (60) plus decoding latency.
 pub const RELAY_BITS: u64 = 76;
-// The delay line `rdl` is a `Bits<76>` read at bit 75 (rust-hdl widths are
-// literals): keep them in step with RELAY_BITS.
-const _: () = assert!(RELAY_BITS == 76);
+/// [`RELAY_BITS`] with extended-alarm words: two header words are 10 bits
+/// longer (protocol §6).
+pub const RELAY_BITS_EXT: u64 = RELAY_BITS + 10;
+// The delay line `rdl` is a `Bits<76>` read at bit 75, and `rdx` its
+// 10-bit extension for extended words (rust-hdl widths are literals):
+// keep them in step with RELAY_BITS.
+const _: () = assert!(RELAY_BITS == 76 && RELAY_BITS_EXT == 86);
 /// Bit times before its period tick at which a WD special master unwraps:
 /// the outputs are dark for 12 after the change ([`crate::node::sw_dark`]), and
 /// the previous frame and its idles have left (a period is at least the
@@ -252,6 +256,7 @@ pub struct SpecialMaster {
     takeover_lead: Constant<Bits<20>>,
     unwrap_at: Signal<Local, Bit>,
     rdl: DFF<Bits<76>>,
+    rdx: DFF<Bits<10>>,
     rcd: DFF<Bits<7>>,
     rcd_run: DFF<Bit>,
     rdata: DFF<Bit>,
@@ -267,6 +272,17 @@ pub struct SpecialMaster {
     aact: RAM<Bit, 12>,
     st_r: DFF<Bits<22>>,
     aact_r: DFF<Bit>,
+    // Extended-alarm words (protocol §6): the reason nibble of each store
+    // entry beside it (a memory of its own, removed by synthesis in the
+    // basic format), registered like the store's read data; the nibble of
+    // the word sent; INPUT's alarm SEQ and reason as the format carries
+    // them.
+    ext: Constant<Bit>,
+    store_rn: RAM<Bits<4>, 12>,
+    st_rn_r: DFF<Bits<4>>,
+    w_rn: Signal<Local, Bits<4>>,
+    rx_seq: Signal<Local, Bit>,
+    rx_rsn: Signal<Local, Bits<4>>,
     half: DFF<Bit>,
     bcnt: DFF<Bits<20>>,
     cyc: DFF<Bits<12>>,
@@ -385,9 +401,17 @@ pub struct SpecialMaster {
 }
 
 impl Default for SpecialMaster {
+    fn default() -> Self {
+        Self::new(WordFormat::Basic)
+    }
+}
+
+impl SpecialMaster {
+    /// A special master for words in `format` (protocol §4, §6).
     // One long field list: every signal and child block of the struct
     // above, each at its power-up value.
-    fn default() -> Self {
+    pub fn new(format: WordFormat) -> Self {
+        let ext = format == WordFormat::ExtendedAlarm;
         Self {
             clock: Default::default(),
             i_pi: Default::default(),
@@ -427,14 +451,14 @@ impl Default for SpecialMaster {
             i_prio: Default::default(),
             i_elect: Default::default(),
             i_flying: Default::default(),
-            rx_in: PortRx::new(WordFormat::Basic),
-            rx_bsr: PortRx::new(WordFormat::Basic),
-            ftx: Default::default(),
-            stx: Default::default(),
+            rx_in: PortRx::new(format),
+            rx_bsr: PortRx::new(format),
+            ftx: PktTx::new(format),
+            stx: PktTx::new(format),
             rep: Default::default(),
             sbox: Default::default(),
             dark: Default::default(),
-            tst: Default::default(),
+            tst: TstTx::new(format),
             swc: Default::default(),
             pend_rc: Default::default(),
             ret_rwp: Default::default(),
@@ -442,14 +466,17 @@ impl Default for SpecialMaster {
             wrapped: Default::default(),
             rw: Default::default(),
             bss_pair: Default::default(),
-            relay_len: Constant::new((RELAY_BITS - 14).to_bits()),
+            relay_len: Constant::new(
+                (if ext { RELAY_BITS_EXT } else { RELAY_BITS } - 14).to_bits(),
+            ),
             rdl: Default::default(),
+            rdx: Default::default(),
             rcd: Default::default(),
             rcd_run: Default::default(),
             rdata: Default::default(),
             relay: Default::default(),
             rlast: Default::default(),
-            mdb: Default::default(),
+            mdb: Mdb::new(format),
             store: Default::default(),
             st_used: Default::default(),
             st_used_slot: Default::default(),
@@ -521,7 +548,13 @@ impl Default for SpecialMaster {
             h1: Default::default(),
             sec_h0: Default::default(),
             st_word: Default::default(),
-            fwd: Fwd::new(WordFormat::Basic),
+            fwd: Fwd::new(format),
+            ext: Constant::new(ext),
+            store_rn: Default::default(),
+            st_rn_r: Default::default(),
+            w_rn: Default::default(),
+            rx_seq: Default::default(),
+            rx_rsn: Default::default(),
             txs: Default::default(),
             fs_cleared: Default::default(),
             cb: Default::default(),
@@ -571,6 +604,7 @@ impl Logic for SpecialMaster {
             clock,
             st_r,
             aact_r,
+            st_rn_r,
             half,
             bcnt,
             cyc,
@@ -600,6 +634,7 @@ impl Logic for SpecialMaster {
             await_rb,
             ferr_owed,
             rdl,
+            rdx,
             rcd,
             rcd_run,
             rdata,
@@ -665,6 +700,8 @@ impl Logic for SpecialMaster {
         self.mdb.clock.next = self.clock.val();
         self.store.read_clock.next = self.clock.val();
         self.store.write_clock.next = self.clock.val();
+        self.store_rn.read_clock.next = self.clock.val();
+        self.store_rn.write_clock.next = self.clock.val();
         self.sent_alarm.read_clock.next = self.clock.val();
         self.sent_alarm.write_clock.next = self.clock.val();
         self.aact.read_clock.next = self.clock.val();
@@ -732,15 +769,18 @@ impl Logic for SpecialMaster {
         self.stx.i_word_alive.next = false;
         self.stx.i_word_alarm.next = false;
         self.stx.i_word_void.next = false;
+        self.stx.i_word_rn.next = 0.into();
 
         // The word of slot ftx.o_slot (protocol §7, §8): store, data memory,
         // configuration, actuator Alive, all read at that slot.
         self.store.read_address.next = self.ftx.o_slot.val();
+        self.store_rn.read_address.next = self.ftx.o_slot.val();
         // The store's and the Alive memory's read data, registered (issue
         // 20: block RAM outputs go to one flip-flop, not through logic);
         // the slot is set 60 bit times before its word is taken and
         // advances when it is, 25 bit times before the next is due.
         self.st_r.d.next = self.store.read_data.val();
+        self.st_rn_r.d.next = self.store_rn.read_data.val();
         self.aact_r.d.next = self.aact.read_data.val();
         self.st.next = self.st_r.q.val();
         // Returned last cycle: valid bit and the previous cycle's CYC.
@@ -753,6 +793,7 @@ impl Logic for SpecialMaster {
         self.w_alive.next = self.st.val().get_bit(16);
         self.w_alarm.next = self.st.val().get_bit(17);
         self.w_void.next = !self.st_ok.val();
+        self.w_rn.next = self.st_rn_r.q.val();
         self.home.next = self.ftx.o_slot.val() == self.i_address.val();
         // Alarm queue of the home slot: FAILSAFE > RECONFIG > IRQ1 > IRQ2.
         self.reason.next = 2.into();
@@ -799,12 +840,23 @@ impl Logic for SpecialMaster {
                 self.w_alive.next = self.toggle.q.val();
                 self.w_alarm.next = false;
                 self.w_void.next = false;
+                self.w_rn.next = 0.into();
             }
             // (send_alarm only where the slot takes an alarm: 1 or 3.)
+            // Extended variant: the data memory's value stays, the alarm
+            // goes in N1 (§6).
             if self.send_alarm.val() {
-                self.w_data.next = (bit_cast::<16, 4>(self.reason.val()) | 0) << 12;
-                if self.seq_tx.val() {
-                    self.w_data.next = self.w_data.val() | 0x0800;
+                if self.ext.val() {
+                    self.w_data.next = self.mdb.o_tx_data.val();
+                    self.w_rn.next = self.reason.val() & 7;
+                    if self.seq_tx.val() {
+                        self.w_rn.next = self.w_rn.val() | 8;
+                    }
+                } else {
+                    self.w_data.next = (bit_cast::<16, 4>(self.reason.val()) | 0) << 12;
+                    if self.seq_tx.val() {
+                        self.w_data.next = self.w_data.val() | 0x0800;
+                    }
                 }
                 self.w_alive.next = self.toggle.q.val();
                 self.w_alarm.next = true;
@@ -817,7 +869,9 @@ impl Logic for SpecialMaster {
                     self.w_alive.next = !self.aact_r.q.val();
                     self.w_alarm.next = false;
                     self.w_void.next = false;
-                } else if !self.w_alarm.val() {
+                    self.w_rn.next = 0.into();
+                } else if !self.w_alarm.val() | self.ext.val() {
+                    // (An alarm passes; extended: with the data put in.)
                     self.w_data.next = self.mdb.o_tx_data.val();
                 }
             }
@@ -826,6 +880,7 @@ impl Logic for SpecialMaster {
         self.ftx.i_word_alive.next = self.w_alive.val();
         self.ftx.i_word_alarm.next = self.w_alarm.val();
         self.ftx.i_word_void.next = self.w_void.val();
+        self.ftx.i_word_rn.next = self.w_rn.val();
         // What a taken word leaves behind (in the clock it is taken): its
         // alarm flag (the retransmit-once rule), the actuator Alive, the
         // alarm queue.
@@ -1012,13 +1067,20 @@ impl Logic for SpecialMaster {
                 }
             }
         }
+        // INPUT's alarm reason and SEQ: D[15:12], D[11]; extended: N1 (§11).
+        self.rx_rsn.next = self.rx_in.o_data.val().get_bits::<4>(12);
+        self.rx_seq.next = self.rx_in.o_data.val().get_bit(11);
+        if self.ext.val() {
+            self.rx_rsn.next = self.rx_in.o_reason.val() & 7;
+            self.rx_seq.next = self.rx_in.o_reason.val().get_bit(3);
+        }
         // A FAILSAFE alarm that comes back (or the SM's own): the ring leaves
         // that failsafe only with the host's FS_CLEAR (protocol §12).
         if self.rx_in.o_wvalid.val()
             & (self.rx_in.o_kind.val() == 2)
             & self.rx_in.o_ok.val()
             & self.rx_in.o_alarm.val()
-            & (self.rx_in.o_data.val().get_bits::<4>(12) == 3)
+            & (self.rx_rsn.val() == 3)
         {
             self.fs_request.d.next = true;
         }
@@ -1053,7 +1115,7 @@ impl Logic for SpecialMaster {
             & !self.failsafe.q.val()
             & self.rx_in.o_ok.val()
             & self.rx_in.o_alarm.val()
-            & (self.rx_in.o_data.val().get_bit(11) != self.nxt.q.val())
+            & (self.rx_seq.val() != self.nxt.q.val())
         {
             self.fl_v.d.next = false;
         }
@@ -1104,7 +1166,7 @@ impl Logic for SpecialMaster {
             self.await_rb.d.next = false;
             if self.rx_in.o_ok.val()
                 & self.rx_in.o_alarm.val()
-                & (self.rx_in.o_data.val().get_bit(11) != self.nxt.q.val())
+                & (self.rx_seq.val() != self.nxt.q.val())
             {
                 self.fl_v.d.next = false;
             }
@@ -1148,6 +1210,9 @@ impl Logic for SpecialMaster {
         self.store.write_enable.next = self.mdb.o_s2.val() & self.base.val();
         self.store.write_address.next = self.mdb.o_s2_slot.val();
         self.store.write_data.next = self.st_word.val();
+        self.store_rn.write_enable.next = self.mdb.o_s2.val() & self.base.val();
+        self.store_rn.write_address.next = self.mdb.o_s2_slot.val();
+        self.store_rn.write_data.next = self.mdb.o_s2_rn.val();
         // An entry is good for one frame (protocol §8): the clock after its
         // word is taken it is written not valid, or the clock after that if
         // a returned word is written then (o_s2 is one clock per word; a
@@ -1182,6 +1247,7 @@ impl Logic for SpecialMaster {
         self.mdb.i_data.next = self.rx_in.o_data.val();
         self.mdb.i_alive.next = self.rx_in.o_alive.val();
         self.mdb.i_alarm.next = self.rx_in.o_alarm.val();
+        self.mdb.i_reason.next = self.rx_in.o_reason.val();
         self.mdb.i_ok.next = self.rx_in.o_ok.val();
         self.mdb.i_hdr_bad.next = self.rx_in.o_hdr_bad.val();
 
@@ -1208,10 +1274,17 @@ impl Logic for SpecialMaster {
         self.rep.clock.next = self.clock.val();
         self.rep.i_valid.next = self.rx_bsr.o_bvalid.val();
         self.rep.i_code.next = self.rdl.q.val().get_bit(75);
+        if self.ext.val() {
+            self.rep.i_code.next = self.rdx.q.val().get_bit(9);
+        }
         self.rep.i_phase.next = self.rx_bsr.o_phase.val();
         if self.rx_bsr.o_bvalid.val() {
             // The delay line holds code bits (level changes).
             self.rdl.d.next = self.rdl.q.val() << 1;
+            self.rdx.d.next = self.rdx.q.val() << 1;
+            if self.rdl.q.val().get_bit(75) {
+                self.rdx.d.next = (self.rdx.q.val() << 1) | 1;
+            }
             if self.rx_bsr.o_level.val() != self.rlast.q.val() {
                 self.rdl.d.next = (self.rdl.q.val() << 1) | 1;
             }
@@ -1402,6 +1475,16 @@ impl Logic for SpecialMaster {
             & (self.g1.o_nibble.val() == self.i_slots_m1.val().get_bits::<4>(2))
             & (self.g2.o_nibble.val() == self.i_slots_m1.val().get_bits::<4>(6))
             & (self.g3.o_nibble.val().get_bits::<2>(0) == self.i_slots_m1.val().get_bits::<2>(10));
+        // Extended words (protocol §6): the second group is the reason
+        // nibble, 0 in a header; S − 1's bits 9:0 follow in the same window.
+        if self.ext.val() {
+            self.jk_s.next = self.g1.o_data.val()
+                & self.g2.o_data.val()
+                & self.g3.o_data.val()
+                & (self.g1.o_nibble.val() == 0)
+                & (self.g2.o_nibble.val() == self.i_slots_m1.val().get_bits::<4>(2))
+                & (self.g3.o_nibble.val() == self.i_slots_m1.val().get_bits::<4>(6));
+        }
         self.jk_bad.next = (self.in_code.q.val().get_bits::<9>(30) == 0x1ff)
             & self.jk_ok.val()
             & (self.jk_x.val() != 0)

@@ -128,6 +128,7 @@ endmodule
 "#;
 
 use crate::harness::ring_top::{module_name as node_module, node_verilog};
+use crate::line::word_rx::WordFormat;
 
 /// Refuses a configuration the ports cannot carry.
 pub fn check(st: &NodeStatic) -> Result<(), String> {
@@ -168,7 +169,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             String::new()
         }
     ));
-    v.push_str(&node_verilog(st.kind, st.slots));
+    v.push_str(&node_verilog(st.kind, st.slots, WordFormat::Basic));
     v.push_str(DDR_IO);
     let act = st.kind == Kind::Actuator;
     let mut ports = vec![

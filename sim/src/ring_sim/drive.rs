@@ -155,13 +155,13 @@ impl Plan {
                     pattern,
                 } => {
                     let fi = fibre.index(n);
-                    let at = packet_bit(target, bit);
+                    let at = packet_bit(target, bit, cfg.word_bits() as u64);
                     let val = at | (len as u64) << 12 | (pattern as u64) << 24;
                     (i, c, When::FrameEnded(fi), (fi, field::FLIP, val))
                 }
                 Fault::Flip { fibre, target, bit } => {
                     let fi = fibre.index(n);
-                    let at = packet_bit(target, bit);
+                    let at = packet_bit(target, bit, cfg.word_bits() as u64);
                     let when = match recs[c as usize].fibres[fi] {
                         Carry::Sec { .. } => When::Secs(fi, Self::secs_before(recs, c, fi)),
                         _ => When::FrameEnded(fi),
@@ -585,7 +585,7 @@ impl<'a> Drive<'a> {
             self.sent,
             &mut self.pace_off,
             period,
-            self.cfg.slots,
+            self.cfg.word_bits() as u64 * self.cfg.slots as u64,
         )
     }
 
