@@ -34,6 +34,9 @@
 // (the reload frame) and writes an own slot only once it has a value, from
 // the ring or from its host ([`Mdb`]).
 //
+// Parameters: the word format ([`crate::line::word_rx::WordFormat`],
+// protocol §4 or §6), for the [`Slave`] and the [`Mdb`].
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
@@ -113,6 +116,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
     wire  [15:0] node__o_data;
     wire  node__o_alive;
     wire  node__o_alarm;
+    wire  [3:0] node__o_reason;
     wire  node__o_ok;
     wire  node__o_hdr_bad;
     wire  [15:0] node__o_act_data;
@@ -130,6 +134,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
     reg  [15:0] mdb__i_data;
     reg  mdb__i_alive;
     reg  mdb__i_alarm;
+    reg  [3:0] mdb__i_reason;
     reg  mdb__i_ok;
     reg  mdb__i_hdr_bad;
     reg  [11:0] mdb__i_tx_slot;
@@ -143,6 +148,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
     wire  mdb__o_s2_alive;
     wire  mdb__o_s2_alarm;
     wire  [15:0] mdb__o_s2_data;
+    wire  [3:0] mdb__o_s2_rn;
     wire  mdb__o_running;
     wire  mdb__o_irq1;
     wire  mdb__o_irq2;
@@ -188,6 +194,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         .o_data(node__o_data),
         .o_alive(node__o_alive),
         .o_alarm(node__o_alarm),
+        .o_reason(node__o_reason),
         .o_ok(node__o_ok),
         .o_hdr_bad(node__o_hdr_bad),
         .o_act_data(node__o_act_data),
@@ -215,6 +222,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         .i_data(mdb__i_data),
         .i_alive(mdb__i_alive),
         .i_alarm(mdb__i_alarm),
+        .i_reason(mdb__i_reason),
         .i_ok(mdb__i_ok),
         .i_hdr_bad(mdb__i_hdr_bad),
         .i_tx_slot(mdb__i_tx_slot),
@@ -228,6 +236,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         .o_s2_alive(mdb__o_s2_alive),
         .o_s2_alarm(mdb__o_s2_alarm),
         .o_s2_data(mdb__o_s2_data),
+        .o_s2_rn(mdb__o_s2_rn),
         .o_running(mdb__o_running),
         .o_irq1(mdb__o_irq1),
         .o_irq2(mdb__o_irq2),
@@ -287,6 +296,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         mdb__i_data = node__o_data;
         mdb__i_alive = node__o_alive;
         mdb__i_alarm = node__o_alarm;
+        mdb__i_reason = node__o_reason;
         mdb__i_ok = node__o_ok;
         mdb__i_hdr_bad = node__o_hdr_bad;
         o_irq1 = mdb__o_irq1;
@@ -410,6 +420,10 @@ endmodule // merkur_master__aact
 // A host drains the queue with: read 0x2004; while entries > 0, read 0x2003
 // (and 0x2004's CYC), write 1 to 0x2004.
 //
+// Parameters: the word format ([`WordFormat`]): in the extended-alarm
+// variant (protocol §6) an alarm's reason and SEQ come from the reason
+// nibble `i_reason` and its data is taken like a data word's.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock |
@@ -422,13 +436,13 @@ endmodule // merkur_master__aact
 // | `i_slots_m1` | in | 12 | static | slots per frame − 1 (the slot whose configuration reads LAST) |
 // | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 // | `i_mode` | in | 2 | clock | switchbox mode (status register) |
-// | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
+// | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_reason`, `i_ok` | in | | clock | received words (from the node's INPUT port; `i_reason` the extended variant's reason nibble) |
 // | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 // | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 // | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
 // | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
 // | `o_join` | out | 1 | clock | started by JOIN |
-// | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+// | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data`, `o_s2_rn` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 // | `o_running` | out | 1 | clock | the host started the ring |
 // | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
 // | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
@@ -447,7 +461,7 @@ endmodule // merkur_master__aact
 // wb ack     _________/‾‾‾\_______     data read: 2 clocks
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_ok,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
+module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_reason,i_ok,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_s2_rn,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
 
     // Module arguments
     input wire  clock;
@@ -468,6 +482,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     input wire  [15:0] i_data;
     input wire  i_alive;
     input wire  i_alarm;
+    input wire  [3:0] i_reason;
     input wire  i_ok;
     input wire  i_hdr_bad;
     input wire  [11:0] i_tx_slot;
@@ -481,6 +496,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     output reg  o_s2_alive;
     output reg  o_s2_alarm;
     output reg  [15:0] o_s2_data;
+    output reg  [3:0] o_s2_rn;
     output reg  o_running;
     output reg  o_irq1;
     output reg  o_irq2;
@@ -492,6 +508,9 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     output reg  o_fs_clear;
     input wire  i_fs_cleared;
     output reg  [15:0] o_aerr;
+
+    // Constant declarations
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  [11:0] db__read_address;
@@ -576,6 +595,8 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     reg  s2_run_q;
     reg  [15:0] s2_data_d;
     reg  [15:0] s2_data_q;
+    reg  [3:0] s2_rn_d;
+    reg  [3:0] s2_rn_q;
     reg  irq1_d;
     reg  irq1_q;
     reg  irq2_d;
@@ -627,6 +648,8 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     reg  alq_push;
     reg  alq_pop;
     reg  alq_keep;
+    reg  [3:0] s2_rsn;
+    reg  s2_seq;
     reg  [15:0] stat;
     reg  tx_value;
     reg  [15:0] irq_word;
@@ -715,6 +738,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         s2_alarm_d = s2_alarm_q;
         s2_run_d = s2_run_q;
         s2_data_d = s2_data_q;
+        s2_rn_d = s2_rn_q;
         irq1_d = irq1_q;
         irq2_d = irq2_q;
         irq_fs_d = irq_fs_q;
@@ -793,6 +817,13 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         s2_alarm_d = i_alarm;
         s2_run_d = running_q;
         s2_data_d = i_data;
+        s2_rn_d = i_reason;
+        s2_rsn = s2_data_q[(12)+:(4)];
+        s2_seq = s2_data_q[11];
+        if (ext) begin
+            s2_rsn = s2_rn_q & 4'h7;
+            s2_seq = s2_rn_q[3];
+        end
         s2_cfg = cfg_rx__read_data;
         s2_ast = ast__read_data;
         irq1_d = 1'b0;
@@ -839,20 +870,32 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         cfg_rx__write_enable = 1'b0;
         cfg_rx__write_address = s2_slot_q;
         cfg_rx__write_data = s2_cfg | 4'h1;
-        if (s2_data_q[11]) begin
+        if (s2_seq) begin
             cfg_rx__write_data = s2_cfg & 4'he;
         end
         s2_alrm = s2_q & s2_ok_q & s2_alarm_q & (s2_slot_q != i_home);
-        s2_fsr = s2_data_q[(12)+:(4)] == 4'h3;
+        s2_fsr = s2_rsn == 4'h3;
         if (s2_alrm & ~s2_fsr & s2_run_q & running_q) begin
             cfg_rx__write_enable = 1'b1;
         end
-        s2_new = s2_fsr | ~s2_run_q | (s2_data_q[11] == s2_cfg[0]);
+        s2_new = s2_fsr | ~s2_run_q | (s2_seq == s2_cfg[0]);
         if (s2_q & ~fs_frame_q) begin
             ast__write_enable = 1'b1;
             if (s2_ok_q) begin
                 if (s2_alrm & s2_new) begin
-                    irq_word = s2_data_q & 16'hf000;
+                    irq_word = 16'h0;
+                    if (s2_rsn[0]) begin
+                        irq_word = 16'h1000;
+                    end
+                    if (s2_rsn[1]) begin
+                        irq_word = irq_word | 16'h2000;
+                    end
+                    if (s2_rsn[2]) begin
+                        irq_word = irq_word | 16'h4000;
+                    end
+                    if (s2_rsn[3]) begin
+                        irq_word = irq_word | 16'h8000;
+                    end
                     if (s2_slot_q[0]) begin
                         irq_word = irq_word | 16'h1;
                     end
@@ -891,22 +934,22 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
                     end
                     last_irq_d = irq_word;
                     alq_push = 1'b1;
-                    if (s2_data_q[(12)+:(4)] == 4'h1) begin
+                    if (s2_rsn == 4'h1) begin
                         irq1_d = 1'b1;
                     end
-                    if (s2_data_q[(12)+:(4)] == 4'h2) begin
+                    if (s2_rsn == 4'h2) begin
                         irq2_d = 1'b1;
                     end
-                    if (s2_data_q[(12)+:(4)] == 4'h3) begin
+                    if (s2_rsn == 4'h3) begin
                         irq_fs_d = 1'b1;
                     end
-                    if ((s2_data_q[(12)+:(4)] >= 4'h4) & (s2_data_q[(12)+:(4)] <= 4'h6)) begin
+                    if ((s2_rsn >= 4'h4) & (s2_rsn <= 4'h6)) begin
                         irq_rc_d = 1'b1;
                     end
                 end
                 s2_own = (s2_cfg & 4'ha) != 4'h0;
-                s2_write = ~s2_alarm_q & ~s2_own;
-                t3_d = ~s2_alarm_q & s2_own & join_q;
+                s2_write = (~s2_alarm_q | ext) & ~s2_own;
+                t3_d = (~s2_alarm_q | ext) & s2_own & join_q;
                 t3_hv_d = cfg_tx__read_data[0] | hwsame_q;
                 t3_slot_d = s2_slot_q;
                 t3_data_d = s2_data_q;
@@ -1209,6 +1252,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         o_s2_alive = s2_alive_q;
         o_s2_alarm = s2_alarm_q;
         o_s2_data = s2_data_q;
+        o_s2_rn = s2_rn_q;
         o_running = running_q;
         o_irq1 = irq1_q;
         o_irq2 = irq2_q;
@@ -1280,6 +1324,8 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     always @(posedge clock) s2_run_q <= s2_run_d;
     initial s2_data_q = 16'h0;
     always @(posedge clock) s2_data_q <= s2_data_d;
+    initial s2_rn_q = 4'h0;
+    always @(posedge clock) s2_rn_q <= s2_rn_d;
     initial irq1_q = 1'h0;
     always @(posedge clock) irq1_q <= irq1_d;
     initial irq2_q = 1'h0;
@@ -1501,6 +1547,11 @@ endmodule // merkur_master__mdb__db
 // actuator's output register and the error counters. A [`crate::node::master`]
 // is this block with `i_master` = 1 and a database beside it.
 //
+// Parameters: the word format ([`WordFormat`], protocol §4 or §6), for
+// its receive ports, forwarder and TST generator; in the extended-alarm
+// variant an alarm's SEQ is read back from the reason nibble and an
+// actuator takes an alarm word's data into its output register.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -1519,7 +1570,7 @@ endmodule // merkur_master__mdb__db
 // | `o_ferr` | out | 16 | clock | frame errors: rejected headers at INPUT (saturating) |
 // | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::node::master`] |
 // | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
-// | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words and rejected headers, for a master's memories |
+// | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_reason`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words (`o_reason`: the extended variant's reason nibble, else 0) and rejected headers, for a master's memories |
 //
 // Latency: INPUT to OUTPUT 9.5–10.5 bit times from the samples at `i_pi`
 // to the line at `o_po` (the CDR, one group and a bit, the retime buffer:
@@ -1534,7 +1585,7 @@ endmodule // merkur_master__mdb__db
 // SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ sw_dark ─ SO
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_ok,o_hdr_bad,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
+module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
 
     // Module arguments
     input wire  clock;
@@ -1563,6 +1614,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     output reg  [15:0] o_data;
     output reg  o_alive;
     output reg  o_alarm;
+    output reg  [3:0] o_reason;
     output reg  o_ok;
     output reg  o_hdr_bad;
     output reg  [15:0] o_act_data;
@@ -1570,6 +1622,9 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     output reg  o_failsafe;
     output reg  [15:0] o_perr;
     output reg  [15:0] o_ferr;
+
+    // Constant declarations
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  [1:0] sbox__i_mode;
@@ -1736,6 +1791,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     reg  e_rc;
     reg  e_i1;
     reg  [3:0] reason;
+    reg  rx_seq;
     reg  wrapped;
     reg  [1:0] out_pair;
     reg  [1:0] bss_pair;
@@ -1947,6 +2003,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         o_data = rx_in__o_data;
         o_alive = rx_in__o_alive;
         o_alarm = rx_in__o_alarm;
+        o_reason = rx_in__o_reason;
         o_ok = rx_in__o_ok;
         if (i_fs_set) begin
             failsafe_d = 1'b1;
@@ -2000,7 +2057,11 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
                 end
             end
         end
-        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[11] != nxt_q)) begin
+        rx_seq = rx_in__o_data[11];
+        if (ext) begin
+            rx_seq = rx_in__o_reason[3];
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_seq != nxt_q)) begin
             fl_k_d = 2'h0;
         end
         if (armed_q & (quiet_q != 20'hfffff)) begin
@@ -2034,7 +2095,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
                 end
                 rw_d = h0_rwc_q | rx_in__o_data[15] | wrapped;
             end
-            if ((rx_in__o_kind == 2'h2) & rx_in__o_own & ~rx_in__o_alarm & i_actuator & ~failsafe_q) begin
+            if ((rx_in__o_kind == 2'h2) & rx_in__o_own & (~rx_in__o_alarm | ext) & i_actuator & ~failsafe_q) begin
                 act_data_d = rx_in__o_data;
             end
         end
@@ -2302,8 +2363,15 @@ endmodule // merkur_master__node__dark
 // The output bits go through a [`Retime`] buffer and out on the node's own
 // clock (DDR pair), so the receiver's sampling error is not passed on.
 //
-// Parameters: none (basic 25-bit words; the extended-alarm variant is not
-// implemented by this block yet).
+// Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
+// In the extended-alarm variant (protocol §6) every word has a sixth group,
+// N1 = `{SEQ, REASON[2:0]}`, after the first: the forwarder passes it on
+// (headers, data, a master's ACT slot), writes it in a fresh word (the
+// alarm's SEQ and reason, 0 in a data word) and clears it with the ALARM
+// bit when an actuator rewrites its slot; an alarm keeps the data bits
+// (the sender's value), and an actuator or a master takes an alarm word's
+// data as it takes a data word's. Data and HOP groups move one group on;
+// FS and RWC are in H0's fifth group.
 //
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
@@ -2316,7 +2384,7 @@ endmodule // merkur_master__node__dark
 // | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
 // | `i_act_out` | in | 16 | clock | actuator output register |
 // | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
-// | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (`D[11]`) |
+// | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its reason and SEQ (basic: `D[15:12]`, `D[11]`; extended: N1) |
 // | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 // | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 // | `o_slot` | out | 12 | clock | slot of the word passing |
@@ -2345,6 +2413,8 @@ endmodule // merkur_master__node__dark
 // in code   | N0 | N1 | N2 | N3 | N4 | ...
 // out code       | N0'| N1'| N2'| N3'| N4'|        N0 decides, N4' fixes the parities
 // ```
+//
+// (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
 module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,o_slot,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
@@ -2381,6 +2451,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     // Constant declarations
     localparam  jk = 10'b1100010001;
     localparam  dead_after = 4'h6;
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  prev_d;
@@ -2457,6 +2528,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     reg  f_alarm_q;
     reg  [3:0] f_reason_d;
     reg  [3:0] f_reason_q;
+    reg  [3:0] f_rn_d;
+    reg  [3:0] f_rn_q;
     reg  f_pa_d;
     reg  f_pa_q;
     reg  f_pb_d;
@@ -2509,6 +2582,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     reg  send_c;
     reg  [15:0] fresh_data;
     reg  fresh_alive;
+    reg  [3:0] fresh_rn;
+    reg  [2:0] dg;
     reg  cut;
     reg  pa_fix;
     reg  pb_fix;
@@ -2561,6 +2636,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         f_alive_d = f_alive_q;
         f_alarm_d = f_alarm_q;
         f_reason_d = f_reason_q;
+        f_rn_d = f_rn_q;
         f_pa_d = f_pa_q;
         f_pb_d = f_pb_q;
         pre_home_d = pre_home_q;
@@ -2654,6 +2730,13 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         nib = g_nib_q;
         g_data = g_dat_q;
         g_s = g_sym_s_q;
+        dg = gidx_q;
+        if (ext & (gidx_q != 3'h0)) begin
+            dg = gidx_q - 3'h1;
+            if (gidx_q == 3'h1) begin
+                dg = 3'h7;
+            end
+        end
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
         home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~dead_q & ~fs_r_q;
@@ -2678,7 +2761,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             if (own_c) begin
                 act_c = 3'h3;
                 if (i_actuator & ~i_master & ~send_c) begin
-                    if (dec_data & ~dec_nib[3]) begin
+                    if (dec_data & (~dec_nib[3] | ext)) begin
                         act_c = 3'h4;
                     end
                     if (~dec_data & ~dec_s) begin
@@ -2687,7 +2770,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
                 end
                 if (i_master & (i_slot_cfg == 2'h2) & ~send_c) begin
                     act_c = 3'h0;
-                    if (dec_data & ~dec_nib[3]) begin
+                    if (dec_data & (~dec_nib[3] | ext)) begin
                         act_c = 3'h5;
                     end
                     if (dec_s) begin
@@ -2708,7 +2791,14 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
                 fresh_alive = ~i_slot_alive;
             end
         end
-        if (send_c) begin
+        fresh_rn = 4'h0;
+        if (send_c & ext) begin
+            fresh_rn = i_alarm_reason & 4'h7;
+            if (i_alarm_seq) begin
+                fresh_rn = fresh_rn | 4'h8;
+            end
+        end
+        if (send_c & ~ext) begin
             fresh_data = 16'h0;
             if (i_alarm_reason[0]) begin
                 fresh_data = fresh_data | 16'h1000;
@@ -2731,8 +2821,9 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             f_alive_d = fresh_alive;
             f_alarm_d = send_c;
             f_reason_d = i_alarm_reason;
-            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
-            f_pb_d = ~(fresh_alive ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
+            f_rn_d = fresh_rn;
+            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_rn[3] ^ fresh_rn[2] ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
+            f_pb_d = ~(fresh_alive ^ fresh_rn[2] ^ fresh_rn[1] ^ fresh_rn[0] ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
         end
         pa_fix = 1'b0;
         pb_fix = 1'b0;
@@ -2758,16 +2849,19 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             if (f_alive_q) begin
                 nib_out = nib_out | 4'h4;
             end
-            if (gidx_q == 3'h1) begin
+            if (dg == 3'h7) begin
+                nib_out = f_rn_q;
+            end
+            if (dg == 3'h1) begin
                 nib_out = f_data_q[(2)+:(4)];
             end
-            if (gidx_q == 3'h2) begin
+            if (dg == 3'h2) begin
                 nib_out = f_data_q[(6)+:(4)];
             end
-            if (gidx_q == 3'h3) begin
+            if (dg == 3'h3) begin
                 nib_out = f_data_q[(10)+:(4)];
             end
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 nib_out = (f_data_q[(12)+:(4)] >> 1) & 4'h6;
                 if (f_pa_q) begin
                     nib_out = nib_out | 4'h8;
@@ -2779,7 +2873,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         end
         if (g_data & (act_now != 3'h0) & (act_now != 3'h3)) begin
             recode = 1'b1;
-            if ((act_now == 3'h1) & (gidx_q == 3'h3)) begin
+            if ((act_now == 3'h1) & (dg == 3'h3)) begin
                 if (fs_r_q & ~clr_h0_q) begin
                     nib_out = nib_out | 4'h8;
                 end
@@ -2790,33 +2884,36 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             if ((act_now == 3'h2) & (gidx_q == 3'h0)) begin
                 nib_out = inc2;
             end
-            if ((act_now == 3'h2) & ((gidx_q == 3'h1) | (gidx_q == 3'h2)) & carry_q) begin
+            if ((act_now == 3'h2) & ((dg == 3'h1) | (dg == 3'h2)) & carry_q) begin
                 nib_out = inc4;
             end
-            if ((act_now == 3'h2) & (gidx_q == 3'h3) & carry_q) begin
+            if ((act_now == 3'h2) & (dg == 3'h3) & carry_q) begin
                 nib_out = inc2;
             end
             if ((act_now == 3'h4) & (gidx_q == 3'h0)) begin
-                nib_out = nib & 4'hb;
+                nib_out = nib & 4'h3;
                 if (toggle_q) begin
                     nib_out = nib_out | 4'h4;
                 end
+            end
+            if ((act_now == 3'h4) & (dg == 3'h7)) begin
+                nib_out = 4'h0;
             end
             if (act_now == 3'h5) begin
                 if (gidx_q == 3'h0) begin
                     nib_out = (nib & 4'hc) | (f_data_q[(0)+:(4)] & 4'h3);
                 end
-                if (gidx_q == 3'h1) begin
+                if (dg == 3'h1) begin
                     nib_out = f_data_q[(2)+:(4)];
                 end
-                if (gidx_q == 3'h2) begin
+                if (dg == 3'h2) begin
                     nib_out = f_data_q[(6)+:(4)];
                 end
-                if (gidx_q == 3'h3) begin
+                if (dg == 3'h3) begin
                     nib_out = f_data_q[(10)+:(4)];
                 end
             end
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 pa_fix = d_a_q;
                 pb_fix = d_b_q;
                 if (act_now == 3'h5) begin
@@ -2933,7 +3030,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             c_write_d = recode;
             c_first_d = gidx_q == 3'h0;
             c_shift_d = i_bvalid;
-            c_mark_d = (gidx_q == 3'h4) & arrived_bad & ~dead_q & (action_q != 3'h3);
+            c_mark_d = (dg == 3'h4) & arrived_bad & ~dead_q & (action_q != 3'h3);
             in_pa_d = in_pa_q ^ nib[3] ^ nib[2];
             in_pb_d = in_pb_q ^ nib[2] ^ nib[1] ^ nib[0];
             in_data_d = in_data_q & g_data;
@@ -2960,11 +3057,11 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             if (gidx_q == 3'h0) begin
                 carry_d = nib[(0)+:(2)] == 2'h3;
             end
-            else begin
+            else if (dg != 3'h7) begin
                 carry_d = carry_q & (nib == 4'hf);
             end
             gidx_d = gidx_q + 3'h1;
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 gidx_d = 3'h0;
                 if (wcount_q == 2'h2) begin
                     slot_d = slot_q + 12'h1;
@@ -3116,6 +3213,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     always @(posedge clock) f_alarm_q <= f_alarm_d;
     initial f_reason_q = 4'h0;
     always @(posedge clock) f_reason_q <= f_reason_d;
+    initial f_rn_q = 4'h0;
+    always @(posedge clock) f_rn_q <= f_rn_d;
     initial f_pa_q = 1'h0;
     always @(posedge clock) f_pa_q <= f_pa_d;
     initial f_pb_q = 1'h0;
@@ -7001,6 +7100,9 @@ endmodule // merkur_master__node__swc__ctl
 // times on its own clock: J K, H0 = `{10, 0, ACK, ADDR}`, H1 = NOT H0, one
 // idle group. ACK tells the partner that its TST is heard.
 //
+// Parameters: the word format ([`WordFormat`]); extended-alarm words have
+// a reason nibble N1 = 0 after the first group, and a TST takes 75 bit times.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -7029,6 +7131,11 @@ module merkur_master__node__tst(clock,i_ack,i_address,i_restart,o_line);
     input wire  i_restart;
     output reg  [1:0] o_line;
 
+    // Constant declarations
+    localparam  ext = 1'b0;
+    localparam  h1_at = 4'h7;
+    localparam  idle_at = 4'hc;
+
     // Registers and child block ports
     reg  [4:0] enc__i_sym;
     wire  [4:0] enc__o_code;
@@ -7047,6 +7154,8 @@ module merkur_master__node__tst(clock,i_ack,i_address,i_restart,o_line);
 
     // Local signals
     reg  [15:0] word;
+    reg  [3:0] wg;
+    reg  [3:0] dg;
     reg  [3:0] nib;
     reg  p_a;
     reg  p_b;
@@ -7080,22 +7189,34 @@ module merkur_master__node__tst(clock,i_ack,i_address,i_restart,o_line);
         if (ack_q) begin
             word = word | 16'h1000;
         end
-        if (gnum_q >= 4'h7) begin
+        wg = gnum_q - 4'h2;
+        if (gnum_q >= h1_at) begin
             word = ~word;
+            wg = gnum_q - h1_at;
+        end
+        dg = wg;
+        if (ext & (wg != 4'h0)) begin
+            dg = wg - 4'h1;
+            if (wg == 4'h1) begin
+                dg = 4'h7;
+            end
         end
         p_a = ~(word[5] ^ word[4] ^ word[9] ^ word[8] ^ word[13] ^ word[12] ^ word[15]);
         p_b = ~(word[1] ^ word[0] ^ word[4] ^ word[3] ^ word[2] ^ word[8] ^ word[7] ^ word[6] ^ word[12] ^ word[11] ^ word[10] ^ word[15] ^ word[14]);
         nib = word[(0)+:(4)] & 4'h3;
-        if ((gnum_q == 4'h3) | (gnum_q == 4'h8)) begin
+        if (dg == 4'h7) begin
+            nib = 4'h0;
+        end
+        if (dg == 4'h1) begin
             nib = word[(2)+:(4)];
         end
-        if ((gnum_q == 4'h4) | (gnum_q == 4'h9)) begin
+        if (dg == 4'h2) begin
             nib = word[(6)+:(4)];
         end
-        if ((gnum_q == 4'h5) | (gnum_q == 4'ha)) begin
+        if (dg == 4'h3) begin
             nib = word[(10)+:(4)];
         end
-        if ((gnum_q == 4'h6) | (gnum_q == 4'hb)) begin
+        if (dg == 4'h4) begin
             nib = (word[(12)+:(4)] >> 1) & 4'h6;
             if (p_a) begin
                 nib = nib | 4'h8;
@@ -7123,21 +7244,21 @@ module merkur_master__node__tst(clock,i_ack,i_address,i_restart,o_line);
         if (gnum_q == 4'h1) begin
             sym = 5'h11;
         end
-        if (gnum_q == 4'hc) begin
+        if (gnum_q == idle_at) begin
             sym = 5'h12;
         end
         enc__i_sym = sym;
         tx__i_code = enc__o_code;
         if (tx__o_take) begin
             gnum_d = gnum_q + 4'h1;
-            if (gnum_q == 4'hc) begin
+            if (gnum_q == idle_at) begin
                 gnum_d = 4'h0;
                 ack_d = i_ack;
             end
         end
         if (i_restart) begin
             dark_d = 5'h18;
-            gnum_d = 4'hc;
+            gnum_d = idle_at;
         end
         o_line = 2'h0;
         if (tx__o_line) begin

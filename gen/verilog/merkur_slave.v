@@ -30,6 +30,11 @@
 // actuator's output register and the error counters. A [`crate::node::master`]
 // is this block with `i_master` = 1 and a database beside it.
 //
+// Parameters: the word format ([`WordFormat`], protocol §4 or §6), for
+// its receive ports, forwarder and TST generator; in the extended-alarm
+// variant an alarm's SEQ is read back from the reason nibble and an
+// actuator takes an alarm word's data into its output register.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -48,7 +53,7 @@
 // | `o_ferr` | out | 16 | clock | frame errors: rejected headers at INPUT (saturating) |
 // | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::node::master`] |
 // | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
-// | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words and rejected headers, for a master's memories |
+// | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_reason`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words (`o_reason`: the extended variant's reason nibble, else 0) and rejected headers, for a master's memories |
 //
 // Latency: INPUT to OUTPUT 9.5–10.5 bit times from the samples at `i_pi`
 // to the line at `o_po` (the CDR, one group and a bit, the retime buffer:
@@ -63,7 +68,7 @@
 // SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ sw_dark ─ SO
 // ```
 // --------------------------------------------------------------------------
-module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_ok,o_hdr_bad,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
+module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
 
     // Module arguments
     input wire  clock;
@@ -92,6 +97,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     output reg  [15:0] o_data;
     output reg  o_alive;
     output reg  o_alarm;
+    output reg  [3:0] o_reason;
     output reg  o_ok;
     output reg  o_hdr_bad;
     output reg  [15:0] o_act_data;
@@ -99,6 +105,9 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     output reg  o_failsafe;
     output reg  [15:0] o_perr;
     output reg  [15:0] o_ferr;
+
+    // Constant declarations
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  [1:0] sbox__i_mode;
@@ -265,6 +274,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     reg  e_rc;
     reg  e_i1;
     reg  [3:0] reason;
+    reg  rx_seq;
     reg  wrapped;
     reg  [1:0] out_pair;
     reg  [1:0] bss_pair;
@@ -476,6 +486,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         o_data = rx_in__o_data;
         o_alive = rx_in__o_alive;
         o_alarm = rx_in__o_alarm;
+        o_reason = rx_in__o_reason;
         o_ok = rx_in__o_ok;
         if (i_fs_set) begin
             failsafe_d = 1'b1;
@@ -529,7 +540,11 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
                 end
             end
         end
-        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[11] != nxt_q)) begin
+        rx_seq = rx_in__o_data[11];
+        if (ext) begin
+            rx_seq = rx_in__o_reason[3];
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_seq != nxt_q)) begin
             fl_k_d = 2'h0;
         end
         if (armed_q & (quiet_q != 20'hfffff)) begin
@@ -563,7 +578,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
                 end
                 rw_d = h0_rwc_q | rx_in__o_data[15] | wrapped;
             end
-            if ((rx_in__o_kind == 2'h2) & rx_in__o_own & ~rx_in__o_alarm & i_actuator & ~failsafe_q) begin
+            if ((rx_in__o_kind == 2'h2) & rx_in__o_own & (~rx_in__o_alarm | ext) & i_actuator & ~failsafe_q) begin
                 act_data_d = rx_in__o_data;
             end
         end
@@ -831,8 +846,15 @@ endmodule // merkur_slave__dark
 // The output bits go through a [`Retime`] buffer and out on the node's own
 // clock (DDR pair), so the receiver's sampling error is not passed on.
 //
-// Parameters: none (basic 25-bit words; the extended-alarm variant is not
-// implemented by this block yet).
+// Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
+// In the extended-alarm variant (protocol §6) every word has a sixth group,
+// N1 = `{SEQ, REASON[2:0]}`, after the first: the forwarder passes it on
+// (headers, data, a master's ACT slot), writes it in a fresh word (the
+// alarm's SEQ and reason, 0 in a data word) and clears it with the ALARM
+// bit when an actuator rewrites its slot; an alarm keeps the data bits
+// (the sender's value), and an actuator or a master takes an alarm word's
+// data as it takes a data word's. Data and HOP groups move one group on;
+// FS and RWC are in H0's fifth group.
 //
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
@@ -845,7 +867,7 @@ endmodule // merkur_slave__dark
 // | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
 // | `i_act_out` | in | 16 | clock | actuator output register |
 // | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
-// | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (`D[11]`) |
+// | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its reason and SEQ (basic: `D[15:12]`, `D[11]`; extended: N1) |
 // | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 // | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 // | `o_slot` | out | 12 | clock | slot of the word passing |
@@ -874,6 +896,8 @@ endmodule // merkur_slave__dark
 // in code   | N0 | N1 | N2 | N3 | N4 | ...
 // out code       | N0'| N1'| N2'| N3'| N4'|        N0 decides, N4' fixes the parities
 // ```
+//
+// (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
 module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,o_slot,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
@@ -910,6 +934,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     // Constant declarations
     localparam  jk = 10'b1100010001;
     localparam  dead_after = 4'h6;
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  prev_d;
@@ -986,6 +1011,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     reg  f_alarm_q;
     reg  [3:0] f_reason_d;
     reg  [3:0] f_reason_q;
+    reg  [3:0] f_rn_d;
+    reg  [3:0] f_rn_q;
     reg  f_pa_d;
     reg  f_pa_q;
     reg  f_pb_d;
@@ -1038,6 +1065,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     reg  send_c;
     reg  [15:0] fresh_data;
     reg  fresh_alive;
+    reg  [3:0] fresh_rn;
+    reg  [2:0] dg;
     reg  cut;
     reg  pa_fix;
     reg  pb_fix;
@@ -1090,6 +1119,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         f_alive_d = f_alive_q;
         f_alarm_d = f_alarm_q;
         f_reason_d = f_reason_q;
+        f_rn_d = f_rn_q;
         f_pa_d = f_pa_q;
         f_pb_d = f_pb_q;
         pre_home_d = pre_home_q;
@@ -1183,6 +1213,13 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         nib = g_nib_q;
         g_data = g_dat_q;
         g_s = g_sym_s_q;
+        dg = gidx_q;
+        if (ext & (gidx_q != 3'h0)) begin
+            dg = gidx_q - 3'h1;
+            if (gidx_q == 3'h1) begin
+                dg = 3'h7;
+            end
+        end
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
         home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~dead_q & ~fs_r_q;
@@ -1207,7 +1244,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             if (own_c) begin
                 act_c = 3'h3;
                 if (i_actuator & ~i_master & ~send_c) begin
-                    if (dec_data & ~dec_nib[3]) begin
+                    if (dec_data & (~dec_nib[3] | ext)) begin
                         act_c = 3'h4;
                     end
                     if (~dec_data & ~dec_s) begin
@@ -1216,7 +1253,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 end
                 if (i_master & (i_slot_cfg == 2'h2) & ~send_c) begin
                     act_c = 3'h0;
-                    if (dec_data & ~dec_nib[3]) begin
+                    if (dec_data & (~dec_nib[3] | ext)) begin
                         act_c = 3'h5;
                     end
                     if (dec_s) begin
@@ -1237,7 +1274,14 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 fresh_alive = ~i_slot_alive;
             end
         end
-        if (send_c) begin
+        fresh_rn = 4'h0;
+        if (send_c & ext) begin
+            fresh_rn = i_alarm_reason & 4'h7;
+            if (i_alarm_seq) begin
+                fresh_rn = fresh_rn | 4'h8;
+            end
+        end
+        if (send_c & ~ext) begin
             fresh_data = 16'h0;
             if (i_alarm_reason[0]) begin
                 fresh_data = fresh_data | 16'h1000;
@@ -1260,8 +1304,9 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             f_alive_d = fresh_alive;
             f_alarm_d = send_c;
             f_reason_d = i_alarm_reason;
-            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
-            f_pb_d = ~(fresh_alive ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
+            f_rn_d = fresh_rn;
+            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_rn[3] ^ fresh_rn[2] ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
+            f_pb_d = ~(fresh_alive ^ fresh_rn[2] ^ fresh_rn[1] ^ fresh_rn[0] ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
         end
         pa_fix = 1'b0;
         pb_fix = 1'b0;
@@ -1287,16 +1332,19 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             if (f_alive_q) begin
                 nib_out = nib_out | 4'h4;
             end
-            if (gidx_q == 3'h1) begin
+            if (dg == 3'h7) begin
+                nib_out = f_rn_q;
+            end
+            if (dg == 3'h1) begin
                 nib_out = f_data_q[(2)+:(4)];
             end
-            if (gidx_q == 3'h2) begin
+            if (dg == 3'h2) begin
                 nib_out = f_data_q[(6)+:(4)];
             end
-            if (gidx_q == 3'h3) begin
+            if (dg == 3'h3) begin
                 nib_out = f_data_q[(10)+:(4)];
             end
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 nib_out = (f_data_q[(12)+:(4)] >> 1) & 4'h6;
                 if (f_pa_q) begin
                     nib_out = nib_out | 4'h8;
@@ -1308,7 +1356,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         end
         if (g_data & (act_now != 3'h0) & (act_now != 3'h3)) begin
             recode = 1'b1;
-            if ((act_now == 3'h1) & (gidx_q == 3'h3)) begin
+            if ((act_now == 3'h1) & (dg == 3'h3)) begin
                 if (fs_r_q & ~clr_h0_q) begin
                     nib_out = nib_out | 4'h8;
                 end
@@ -1319,33 +1367,36 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             if ((act_now == 3'h2) & (gidx_q == 3'h0)) begin
                 nib_out = inc2;
             end
-            if ((act_now == 3'h2) & ((gidx_q == 3'h1) | (gidx_q == 3'h2)) & carry_q) begin
+            if ((act_now == 3'h2) & ((dg == 3'h1) | (dg == 3'h2)) & carry_q) begin
                 nib_out = inc4;
             end
-            if ((act_now == 3'h2) & (gidx_q == 3'h3) & carry_q) begin
+            if ((act_now == 3'h2) & (dg == 3'h3) & carry_q) begin
                 nib_out = inc2;
             end
             if ((act_now == 3'h4) & (gidx_q == 3'h0)) begin
-                nib_out = nib & 4'hb;
+                nib_out = nib & 4'h3;
                 if (toggle_q) begin
                     nib_out = nib_out | 4'h4;
                 end
+            end
+            if ((act_now == 3'h4) & (dg == 3'h7)) begin
+                nib_out = 4'h0;
             end
             if (act_now == 3'h5) begin
                 if (gidx_q == 3'h0) begin
                     nib_out = (nib & 4'hc) | (f_data_q[(0)+:(4)] & 4'h3);
                 end
-                if (gidx_q == 3'h1) begin
+                if (dg == 3'h1) begin
                     nib_out = f_data_q[(2)+:(4)];
                 end
-                if (gidx_q == 3'h2) begin
+                if (dg == 3'h2) begin
                     nib_out = f_data_q[(6)+:(4)];
                 end
-                if (gidx_q == 3'h3) begin
+                if (dg == 3'h3) begin
                     nib_out = f_data_q[(10)+:(4)];
                 end
             end
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 pa_fix = d_a_q;
                 pb_fix = d_b_q;
                 if (act_now == 3'h5) begin
@@ -1462,7 +1513,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             c_write_d = recode;
             c_first_d = gidx_q == 3'h0;
             c_shift_d = i_bvalid;
-            c_mark_d = (gidx_q == 3'h4) & arrived_bad & ~dead_q & (action_q != 3'h3);
+            c_mark_d = (dg == 3'h4) & arrived_bad & ~dead_q & (action_q != 3'h3);
             in_pa_d = in_pa_q ^ nib[3] ^ nib[2];
             in_pb_d = in_pb_q ^ nib[2] ^ nib[1] ^ nib[0];
             in_data_d = in_data_q & g_data;
@@ -1489,11 +1540,11 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             if (gidx_q == 3'h0) begin
                 carry_d = nib[(0)+:(2)] == 2'h3;
             end
-            else begin
+            else if (dg != 3'h7) begin
                 carry_d = carry_q & (nib == 4'hf);
             end
             gidx_d = gidx_q + 3'h1;
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 gidx_d = 3'h0;
                 if (wcount_q == 2'h2) begin
                     slot_d = slot_q + 12'h1;
@@ -1645,6 +1696,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     always @(posedge clock) f_alarm_q <= f_alarm_d;
     initial f_reason_q = 4'h0;
     always @(posedge clock) f_reason_q <= f_reason_d;
+    initial f_rn_q = 4'h0;
+    always @(posedge clock) f_rn_q <= f_rn_d;
     initial f_pa_q = 1'h0;
     always @(posedge clock) f_pa_q <= f_pa_d;
     initial f_pb_q = 1'h0;
@@ -5530,6 +5583,9 @@ endmodule // merkur_slave__swc__ctl
 // times on its own clock: J K, H0 = `{10, 0, ACK, ADDR}`, H1 = NOT H0, one
 // idle group. ACK tells the partner that its TST is heard.
 //
+// Parameters: the word format ([`WordFormat`]); extended-alarm words have
+// a reason nibble N1 = 0 after the first group, and a TST takes 75 bit times.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -5558,6 +5614,11 @@ module merkur_slave__tst(clock,i_ack,i_address,i_restart,o_line);
     input wire  i_restart;
     output reg  [1:0] o_line;
 
+    // Constant declarations
+    localparam  ext = 1'b0;
+    localparam  h1_at = 4'h7;
+    localparam  idle_at = 4'hc;
+
     // Registers and child block ports
     reg  [4:0] enc__i_sym;
     wire  [4:0] enc__o_code;
@@ -5576,6 +5637,8 @@ module merkur_slave__tst(clock,i_ack,i_address,i_restart,o_line);
 
     // Local signals
     reg  [15:0] word;
+    reg  [3:0] wg;
+    reg  [3:0] dg;
     reg  [3:0] nib;
     reg  p_a;
     reg  p_b;
@@ -5609,22 +5672,34 @@ module merkur_slave__tst(clock,i_ack,i_address,i_restart,o_line);
         if (ack_q) begin
             word = word | 16'h1000;
         end
-        if (gnum_q >= 4'h7) begin
+        wg = gnum_q - 4'h2;
+        if (gnum_q >= h1_at) begin
             word = ~word;
+            wg = gnum_q - h1_at;
+        end
+        dg = wg;
+        if (ext & (wg != 4'h0)) begin
+            dg = wg - 4'h1;
+            if (wg == 4'h1) begin
+                dg = 4'h7;
+            end
         end
         p_a = ~(word[5] ^ word[4] ^ word[9] ^ word[8] ^ word[13] ^ word[12] ^ word[15]);
         p_b = ~(word[1] ^ word[0] ^ word[4] ^ word[3] ^ word[2] ^ word[8] ^ word[7] ^ word[6] ^ word[12] ^ word[11] ^ word[10] ^ word[15] ^ word[14]);
         nib = word[(0)+:(4)] & 4'h3;
-        if ((gnum_q == 4'h3) | (gnum_q == 4'h8)) begin
+        if (dg == 4'h7) begin
+            nib = 4'h0;
+        end
+        if (dg == 4'h1) begin
             nib = word[(2)+:(4)];
         end
-        if ((gnum_q == 4'h4) | (gnum_q == 4'h9)) begin
+        if (dg == 4'h2) begin
             nib = word[(6)+:(4)];
         end
-        if ((gnum_q == 4'h5) | (gnum_q == 4'ha)) begin
+        if (dg == 4'h3) begin
             nib = word[(10)+:(4)];
         end
-        if ((gnum_q == 4'h6) | (gnum_q == 4'hb)) begin
+        if (dg == 4'h4) begin
             nib = (word[(12)+:(4)] >> 1) & 4'h6;
             if (p_a) begin
                 nib = nib | 4'h8;
@@ -5652,21 +5727,21 @@ module merkur_slave__tst(clock,i_ack,i_address,i_restart,o_line);
         if (gnum_q == 4'h1) begin
             sym = 5'h11;
         end
-        if (gnum_q == 4'hc) begin
+        if (gnum_q == idle_at) begin
             sym = 5'h12;
         end
         enc__i_sym = sym;
         tx__i_code = enc__o_code;
         if (tx__o_take) begin
             gnum_d = gnum_q + 4'h1;
-            if (gnum_q == 4'hc) begin
+            if (gnum_q == idle_at) begin
                 gnum_d = 4'h0;
                 ack_d = i_ack;
             end
         end
         if (i_restart) begin
             dark_d = 5'h18;
-            gnum_d = 4'hc;
+            gnum_d = idle_at;
         end
         o_line = 2'h0;
         if (tx__o_line) begin

@@ -90,6 +90,12 @@
 // 19) — and a packet the relay was holding from the old BSR line is
 // dropped.
 //
+// Parameters: the word format ([`WordFormat`], protocol §4 or §6). With
+// extended-alarm words the store keeps each entry's reason nibble beside
+// it (`store_rn`), the home slot's alarm keeps the data memory's value and
+// goes in N1, an ACT slot's alarm word gets the data memory's value too,
+// and the secondary relay holds a packet back [`RELAY_BITS_EXT`] bits.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
@@ -173,6 +179,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     localparam  one = 20'h1;
     localparam  jk_bits = 10'b1100010001;
     localparam  takeover_lead = 20'h30;
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  [3:0] rx_in__i_samples;
@@ -238,6 +245,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  ftx__i_word_alive;
     reg  ftx__i_word_alarm;
     reg  ftx__i_word_void;
+    reg  [3:0] ftx__i_word_rn;
     wire  [11:0] ftx__o_slot;
     wire  ftx__o_take;
     wire  ftx__o_busy;
@@ -251,6 +259,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  stx__i_word_alive;
     reg  stx__i_word_alarm;
     reg  stx__i_word_void;
+    reg  [3:0] stx__i_word_rn;
     wire  [11:0] stx__o_slot;
     wire  stx__o_take;
     wire  stx__o_busy;
@@ -305,6 +314,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  sw_flush_q;
     reg  [75:0] rdl_d;
     reg  [75:0] rdl_q;
+    reg  [9:0] rdx_d;
+    reg  [9:0] rdx_q;
     reg  [6:0] rcd_d;
     reg  [6:0] rcd_q;
     reg  rcd_run_d;
@@ -325,6 +336,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  [15:0] mdb__i_data;
     reg  mdb__i_alive;
     reg  mdb__i_alarm;
+    reg  [3:0] mdb__i_reason;
     reg  mdb__i_ok;
     reg  mdb__i_hdr_bad;
     reg  [11:0] mdb__i_tx_slot;
@@ -338,6 +350,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     wire  mdb__o_s2_alive;
     wire  mdb__o_s2_alarm;
     wire  [15:0] mdb__o_s2_data;
+    wire  [3:0] mdb__o_s2_rn;
     wire  mdb__o_running;
     wire  mdb__o_irq1;
     wire  mdb__o_irq2;
@@ -372,6 +385,13 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  [21:0] st_r_q;
     reg  aact_r_d;
     reg  aact_r_q;
+    reg  [11:0] store_rn__read_address;
+    wire  [3:0] store_rn__read_data;
+    reg  [11:0] store_rn__write_address;
+    reg  [3:0] store_rn__write_data;
+    reg  store_rn__write_enable;
+    reg  [3:0] st_rn_r_d;
+    reg  [3:0] st_rn_r_q;
     reg  half_d;
     reg  half_q;
     reg  [19:0] bcnt_d;
@@ -542,6 +562,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  rw;
     reg  [1:0] bss_pair;
     reg  unwrap_at;
+    reg  [3:0] w_rn;
+    reg  rx_seq;
+    reg  [3:0] rx_rsn;
     reg  [2:0] cyc_back;
     reg  [11:0] ret_num;
     reg  [11:0] cyc_gap;
@@ -652,6 +675,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_word_alive(ftx__i_word_alive),
         .i_word_alarm(ftx__i_word_alarm),
         .i_word_void(ftx__i_word_void),
+        .i_word_rn(ftx__i_word_rn),
         .o_slot(ftx__o_slot),
         .o_take(ftx__o_take),
         .o_busy(ftx__o_busy),
@@ -669,6 +693,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_word_alive(stx__i_word_alive),
         .i_word_alarm(stx__i_word_alarm),
         .i_word_void(stx__i_word_void),
+        .i_word_rn(stx__i_word_rn),
         .o_slot(stx__o_slot),
         .o_take(stx__o_take),
         .o_busy(stx__o_busy),
@@ -753,6 +778,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_data(mdb__i_data),
         .i_alive(mdb__i_alive),
         .i_alarm(mdb__i_alarm),
+        .i_reason(mdb__i_reason),
         .i_ok(mdb__i_ok),
         .i_hdr_bad(mdb__i_hdr_bad),
         .i_tx_slot(mdb__i_tx_slot),
@@ -766,6 +792,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .o_s2_alive(mdb__o_s2_alive),
         .o_s2_alarm(mdb__o_s2_alarm),
         .o_s2_data(mdb__o_s2_data),
+        .o_s2_rn(mdb__o_s2_rn),
         .o_running(mdb__o_running),
         .o_irq1(mdb__o_irq1),
         .o_irq2(mdb__o_irq2),
@@ -804,6 +831,15 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .write_clock(clock),
         .write_data(aact__write_data),
         .write_enable(aact__write_enable)
+    );
+    merkur_special_master__store_rn store_rn(
+        .read_address(store_rn__read_address),
+        .read_clock(clock),
+        .read_data(store_rn__read_data),
+        .write_address(store_rn__write_address),
+        .write_clock(clock),
+        .write_data(store_rn__write_data),
+        .write_enable(store_rn__write_enable)
     );
     merkur_special_master__fwd fwd(
         .clock(clock),
@@ -884,6 +920,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(*) begin
         st_r_d = st_r_q;
         aact_r_d = aact_r_q;
+        st_rn_r_d = st_rn_r_q;
         half_d = half_q;
         bcnt_d = bcnt_q;
         cyc_d = cyc_q;
@@ -913,6 +950,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         await_rb_d = await_rb_q;
         ferr_owed_d = ferr_owed_q;
         rdl_d = rdl_q;
+        rdx_d = rdx_q;
         rcd_d = rcd_q;
         rcd_run_d = rcd_run_q;
         rdata_d = rdata_q;
@@ -1006,8 +1044,11 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         stx__i_word_alive = 1'b0;
         stx__i_word_alarm = 1'b0;
         stx__i_word_void = 1'b0;
+        stx__i_word_rn = 4'h0;
         store__read_address = ftx__o_slot;
+        store_rn__read_address = ftx__o_slot;
         st_r_d = store__read_data;
+        st_rn_r_d = store_rn__read_data;
         aact_r_d = aact__read_data;
         st = st_r_q;
         prev_cyc = cyc_q[(0)+:(3)] - 3'h1;
@@ -1016,6 +1057,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         w_alive = st[16];
         w_alarm = st[17];
         w_void = ~st_ok;
+        w_rn = st_rn_r_q;
         home = ftx__o_slot == i_address;
         reason = 4'h2;
         if (pend_i1_q) begin
@@ -1046,11 +1088,21 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
                 w_alive = toggle_q;
                 w_alarm = 1'b0;
                 w_void = 1'b0;
+                w_rn = 4'h0;
             end
             if (send_alarm) begin
-                w_data = (({12'h0, reason}) | 16'h0) << 12;
-                if (seq_tx) begin
-                    w_data = w_data | 16'h800;
+                if (ext) begin
+                    w_data = mdb__o_tx_data;
+                    w_rn = reason & 4'h7;
+                    if (seq_tx) begin
+                        w_rn = w_rn | 4'h8;
+                    end
+                end
+                else begin
+                    w_data = (({12'h0, reason}) | 16'h0) << 12;
+                    if (seq_tx) begin
+                        w_data = w_data | 16'h800;
+                    end
                 end
                 w_alive = toggle_q;
                 w_alarm = 1'b1;
@@ -1062,8 +1114,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
                     w_alive = ~aact_r_q;
                     w_alarm = 1'b0;
                     w_void = 1'b0;
+                    w_rn = 4'h0;
                 end
-                else if (~w_alarm) begin
+                else if (~w_alarm | ext) begin
                     w_data = mdb__o_tx_data;
                 end
             end
@@ -1072,6 +1125,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         ftx__i_word_alive = w_alive;
         ftx__i_word_alarm = w_alarm;
         ftx__i_word_void = w_void;
+        ftx__i_word_rn = w_rn;
         sent_alarm__write_enable = ftx__o_take;
         sent_alarm__write_address = ftx__o_slot;
         sent_alarm__write_data = w_alarm & ~w_void;
@@ -1215,7 +1269,13 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
                 end
             end
         end
-        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[(12)+:(4)] == 4'h3)) begin
+        rx_rsn = rx_in__o_data[(12)+:(4)];
+        rx_seq = rx_in__o_data[11];
+        if (ext) begin
+            rx_rsn = rx_in__o_reason & 4'h7;
+            rx_seq = rx_in__o_reason[3];
+        end
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_ok & rx_in__o_alarm & (rx_rsn == 4'h3)) begin
             fs_request_d = 1'b1;
         end
         if (armed_q & (quiet_q == i_cs_timeout)) begin
@@ -1241,7 +1301,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
                 end
             end
         end
-        if (~base & rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[11] != nxt_q)) begin
+        if (~base & rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_seq != nxt_q)) begin
             fl_v_d = 1'b0;
         end
         swc__i_armed = armed_q;
@@ -1270,7 +1330,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         end
         if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & await_rb_q & ~failsafe_q) begin
             await_rb_d = 1'b0;
-            if (rx_in__o_ok & rx_in__o_alarm & (rx_in__o_data[11] != nxt_q)) begin
+            if (rx_in__o_ok & rx_in__o_alarm & (rx_seq != nxt_q)) begin
                 fl_v_d = 1'b0;
             end
         end
@@ -1302,6 +1362,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         store__write_enable = mdb__o_s2 & base;
         store__write_address = mdb__o_s2_slot;
         store__write_data = st_word;
+        store_rn__write_enable = mdb__o_s2 & base & ext;
+        store_rn__write_address = mdb__o_s2_slot;
+        store_rn__write_data = mdb__o_s2_rn;
         if (st_used_q & ~mdb__o_s2) begin
             st_used_d = 1'b0;
             store__write_enable = 1'b1;
@@ -1322,6 +1385,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         mdb__i_data = rx_in__o_data;
         mdb__i_alive = rx_in__o_alive;
         mdb__i_alarm = rx_in__o_alarm;
+        mdb__i_reason = rx_in__o_reason;
         mdb__i_ok = rx_in__o_ok;
         mdb__i_hdr_bad = rx_in__o_hdr_bad;
         o_irq1 = mdb__o_irq1;
@@ -1341,9 +1405,16 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         o_running = mdb__o_running;
         rep__i_valid = rx_bsr__o_bvalid;
         rep__i_code = rdl_q[75];
+        if (ext) begin
+            rep__i_code = rdx_q[9];
+        end
         rep__i_phase = rx_bsr__o_phase;
         if (rx_bsr__o_bvalid) begin
             rdl_d = rdl_q << 1;
+            rdx_d = rdx_q << 1;
+            if (rdl_q[75]) begin
+                rdx_d = (rdx_q << 1) | 10'h1;
+            end
             if (rx_bsr__o_level != rlast_q) begin
                 rdl_d = (rdl_q << 1) | 76'h1;
             end
@@ -1447,6 +1518,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         g2__i_code = in_code_q[(5)+:(5)];
         g3__i_code = in_code_q[(0)+:(5)];
         jk_s = g1__o_data & g2__o_data & g3__o_data & (g1__o_nibble == i_slots_m1[(2)+:(4)]) & (g2__o_nibble == i_slots_m1[(6)+:(4)]) & (g3__o_nibble[(0)+:(2)] == i_slots_m1[(10)+:(2)]);
+        if (ext) begin
+            jk_s = g1__o_data & g2__o_data & g3__o_data & (g1__o_nibble == 4'h0) & (g2__o_nibble == i_slots_m1[(2)+:(4)]) & (g3__o_nibble == i_slots_m1[(6)+:(4)]);
+        end
         jk_bad = (in_code_q[(30)+:(9)] == 9'h1ff) & jk_ok & (jk_x != 10'h0) & ((g0__o_data & (g0__o_nibble[(0)+:(2)] == i_slots_m1[(0)+:(2)])) | jk_x[0]) & jk_s;
         if (half_q & (since_jk_q != 20'hfffff)) begin
             since_jk_d = since_jk_q + 20'h1;
@@ -1542,6 +1616,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) sw_flush_q <= sw_flush_d;
     initial rdl_q = 76'h0;
     always @(posedge clock) rdl_q <= rdl_d;
+    initial rdx_q = 10'h0;
+    always @(posedge clock) rdx_q <= rdx_d;
     initial rcd_q = 7'h0;
     always @(posedge clock) rcd_q <= rcd_d;
     initial rcd_run_q = 1'h0;
@@ -1560,6 +1636,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) st_r_q <= st_r_d;
     initial aact_r_q = 1'h0;
     always @(posedge clock) aact_r_q <= aact_r_d;
+    initial st_rn_r_q = 4'h0;
+    always @(posedge clock) st_rn_r_q <= st_rn_r_d;
     initial half_q = 1'h0;
     always @(posedge clock) half_q <= half_d;
     initial bcnt_q = 20'h0;
@@ -1812,6 +1890,10 @@ endmodule // merkur_special_master__dark
 // groups. Idles (all ones) between packets. Words are encoded as the
 // protocol's §4 (flags first, two odd parities last), 4B/5B, NRZI.
 //
+// Parameters: the word format ([`WordFormat`]); extended-alarm words
+// (protocol §6) have six groups, N1 = `i_word_rn` after the first (0 in
+// the headers), and a VOID is six S groups.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -1822,6 +1904,7 @@ endmodule // merkur_special_master__dark
 // | `i_h0_alive` | in | 1 | clock | H0's ALIVE bit (a DATA frame's CLR), taken with `i_h0` |
 // | `i_word_data` | in | 16 | clock | data of slot `o_slot` |
 // | `i_word_alive`, `i_word_alarm`, `i_word_void` | in | 1 | clock | its flags / VOID |
+// | `i_word_rn` | in | 4 | clock | its reason nibble N1 (extended-alarm words; unused otherwise) |
 // | `o_slot` | out | 12 | clock | slot whose word is due next |
 // | `o_take` | out | 1 | clock | the word of `o_slot` is taken in this clock (combinational) |
 // | `o_busy` | out | 1 | clock | a packet is being sent |
@@ -1836,7 +1919,7 @@ endmodule // merkur_special_master__dark
 // o_take   ______________________^ (slot 0)  ^ (slot 1)  ...
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h0_alive,i_word_data,i_word_alive,i_word_alarm,i_word_void,o_slot,o_take,o_busy,o_line);
+module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h0_alive,i_word_data,i_word_alive,i_word_alarm,i_word_void,i_word_rn,o_slot,o_take,o_busy,o_line);
 
     // Module arguments
     input wire  clock;
@@ -1850,10 +1933,15 @@ module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
     input wire  i_word_alive;
     input wire  i_word_alarm;
     input wire  i_word_void;
+    input wire  [3:0] i_word_rn;
     output reg  [11:0] o_slot;
     output reg  o_take;
     output reg  o_busy;
     output reg  [1:0] o_line;
+
+    // Constant declarations
+    localparam  ext = 1'b0;
+    localparam  last_g = 3'b100;
 
     // Registers and child block ports
     reg  [4:0] enc__i_sym;
@@ -1884,8 +1972,11 @@ module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
     reg  w_alarm_q;
     reg  w_void_d;
     reg  w_void_q;
+    reg  [3:0] w_rn_d;
+    reg  [3:0] w_rn_q;
 
     // Local signals
+    reg  [2:0] dg;
     reg  [3:0] nib;
     reg  p_a;
     reg  p_b;
@@ -1917,13 +2008,21 @@ module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
         w_alive_d = w_alive_q;
         w_alarm_d = w_alarm_q;
         w_void_d = w_void_q;
+        w_rn_d = w_rn_q;
         half_d = ~half_q;
         tx__i_bit_en = half_q;
         if (i_start & ~busy_q) begin
             pend_d = 1'b1;
         end
-        p_a = ~(w_alarm_q ^ w_alive_q ^ w_data_q[5] ^ w_data_q[4] ^ w_data_q[9] ^ w_data_q[8] ^ w_data_q[13] ^ w_data_q[12] ^ w_data_q[15]);
-        p_b = ~(w_alive_q ^ w_data_q[1] ^ w_data_q[0] ^ w_data_q[4] ^ w_data_q[3] ^ w_data_q[2] ^ w_data_q[8] ^ w_data_q[7] ^ w_data_q[6] ^ w_data_q[12] ^ w_data_q[11] ^ w_data_q[10] ^ w_data_q[15] ^ w_data_q[14]);
+        p_a = ~(w_alarm_q ^ w_alive_q ^ w_rn_q[3] ^ w_rn_q[2] ^ w_data_q[5] ^ w_data_q[4] ^ w_data_q[9] ^ w_data_q[8] ^ w_data_q[13] ^ w_data_q[12] ^ w_data_q[15]);
+        p_b = ~(w_alive_q ^ w_rn_q[2] ^ w_rn_q[1] ^ w_rn_q[0] ^ w_data_q[1] ^ w_data_q[0] ^ w_data_q[4] ^ w_data_q[3] ^ w_data_q[2] ^ w_data_q[8] ^ w_data_q[7] ^ w_data_q[6] ^ w_data_q[12] ^ w_data_q[11] ^ w_data_q[10] ^ w_data_q[15] ^ w_data_q[14]);
+        dg = grp_q;
+        if (ext & (grp_q != 3'h0)) begin
+            dg = grp_q - 3'h1;
+            if (grp_q == 3'h1) begin
+                dg = 3'h7;
+            end
+        end
         nib = w_data_q[(0)+:(4)] & 4'h3;
         if (w_alarm_q) begin
             nib = nib | 4'h8;
@@ -1931,16 +2030,19 @@ module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
         if (w_alive_q) begin
             nib = nib | 4'h4;
         end
-        if (grp_q == 3'h1) begin
+        if (dg == 3'h7) begin
+            nib = w_rn_q;
+        end
+        if (dg == 3'h1) begin
             nib = w_data_q[(2)+:(4)];
         end
-        if (grp_q == 3'h2) begin
+        if (dg == 3'h2) begin
             nib = w_data_q[(6)+:(4)];
         end
-        if (grp_q == 3'h3) begin
+        if (dg == 3'h3) begin
             nib = w_data_q[(10)+:(4)];
         end
-        if (grp_q == 3'h4) begin
+        if (dg == 3'h4) begin
             nib = (w_data_q[(12)+:(4)] >> 1) & 4'h6;
             if (p_a) begin
                 nib = nib | 4'h8;
@@ -1983,13 +2085,14 @@ module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
                     busy_d = 1'b1;
                     pend_d = 1'b0;
                     wcnt_d = 2'h0;
-                    grp_d = 3'h4;
+                    grp_d = last_g;
                     slot_d = 12'h0;
                     last_d = 1'b0;
                 end
             end
-            else if (grp_q == 3'h4) begin
+            else if (grp_q == last_g) begin
                 grp_d = 3'h0;
+                w_rn_d = 4'h0;
                 w_alive_d = 1'b0;
                 w_alarm_d = 1'b0;
                 w_void_d = 1'b0;
@@ -2013,6 +2116,9 @@ module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
                     w_alive_d = i_word_alive;
                     w_alarm_d = i_word_alarm;
                     w_void_d = i_word_void;
+                    if (ext) begin
+                        w_rn_d = i_word_rn;
+                    end
                     o_take = 1'b1;
                 end
             end
@@ -2051,6 +2157,8 @@ module merkur_special_master__ftx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
     always @(posedge clock) w_alarm_q <= w_alarm_d;
     initial w_void_q = 1'h0;
     always @(posedge clock) w_void_q <= w_void_d;
+    initial w_rn_q = 4'h0;
+    always @(posedge clock) w_rn_q <= w_rn_d;
 endmodule // merkur_special_master__ftx
 // --------------------------------------------------------------------------
 // `enc`: Enc4b5b, 4B/5B encoder. (rtl/src/line/enc4b5b.rs)
@@ -2265,8 +2373,15 @@ endmodule // merkur_special_master__ftx__tx
 // The output bits go through a [`Retime`] buffer and out on the node's own
 // clock (DDR pair), so the receiver's sampling error is not passed on.
 //
-// Parameters: none (basic 25-bit words; the extended-alarm variant is not
-// implemented by this block yet).
+// Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
+// In the extended-alarm variant (protocol §6) every word has a sixth group,
+// N1 = `{SEQ, REASON[2:0]}`, after the first: the forwarder passes it on
+// (headers, data, a master's ACT slot), writes it in a fresh word (the
+// alarm's SEQ and reason, 0 in a data word) and clears it with the ALARM
+// bit when an actuator rewrites its slot; an alarm keeps the data bits
+// (the sender's value), and an actuator or a master takes an alarm word's
+// data as it takes a data word's. Data and HOP groups move one group on;
+// FS and RWC are in H0's fifth group.
 //
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
@@ -2279,7 +2394,7 @@ endmodule // merkur_special_master__ftx__tx
 // | `i_sensor_data` | in | 16 | clock | sensor value (sampled at its slot) |
 // | `i_act_out` | in | 16 | clock | actuator output register |
 // | `i_fs`, `i_wrapped` | in | 1 | clock | node in failsafe / wrapped |
-// | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its SEQ (`D[11]`) |
+// | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its reason and SEQ (basic: `D[15:12]`, `D[11]`; extended: N1) |
 // | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 // | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 // | `o_slot` | out | 12 | clock | slot of the word passing |
@@ -2308,6 +2423,8 @@ endmodule // merkur_special_master__ftx__tx
 // in code   | N0 | N1 | N2 | N3 | N4 | ...
 // out code       | N0'| N1'| N2'| N3'| N4'|        N0 decides, N4' fixes the parities
 // ```
+//
+// (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
 module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,o_slot,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
@@ -2344,6 +2461,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     // Constant declarations
     localparam  jk = 10'b1100010001;
     localparam  dead_after = 4'h6;
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  prev_d;
@@ -2420,6 +2538,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     reg  f_alarm_q;
     reg  [3:0] f_reason_d;
     reg  [3:0] f_reason_q;
+    reg  [3:0] f_rn_d;
+    reg  [3:0] f_rn_q;
     reg  f_pa_d;
     reg  f_pa_q;
     reg  f_pb_d;
@@ -2472,6 +2592,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     reg  send_c;
     reg  [15:0] fresh_data;
     reg  fresh_alive;
+    reg  [3:0] fresh_rn;
+    reg  [2:0] dg;
     reg  cut;
     reg  pa_fix;
     reg  pb_fix;
@@ -2524,6 +2646,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         f_alive_d = f_alive_q;
         f_alarm_d = f_alarm_q;
         f_reason_d = f_reason_q;
+        f_rn_d = f_rn_q;
         f_pa_d = f_pa_q;
         f_pb_d = f_pb_q;
         pre_home_d = pre_home_q;
@@ -2617,6 +2740,13 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         nib = g_nib_q;
         g_data = g_dat_q;
         g_s = g_sym_s_q;
+        dg = gidx_q;
+        if (ext & (gidx_q != 3'h0)) begin
+            dg = gidx_q - 3'h1;
+            if (gidx_q == 3'h1) begin
+                dg = 3'h7;
+            end
+        end
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
         home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~dead_q & ~fs_r_q;
@@ -2641,7 +2771,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             if (own_c) begin
                 act_c = 3'h3;
                 if (i_actuator & ~i_master & ~send_c) begin
-                    if (dec_data & ~dec_nib[3]) begin
+                    if (dec_data & (~dec_nib[3] | ext)) begin
                         act_c = 3'h4;
                     end
                     if (~dec_data & ~dec_s) begin
@@ -2650,7 +2780,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
                 end
                 if (i_master & (i_slot_cfg == 2'h2) & ~send_c) begin
                     act_c = 3'h0;
-                    if (dec_data & ~dec_nib[3]) begin
+                    if (dec_data & (~dec_nib[3] | ext)) begin
                         act_c = 3'h5;
                     end
                     if (dec_s) begin
@@ -2671,7 +2801,14 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
                 fresh_alive = ~i_slot_alive;
             end
         end
-        if (send_c) begin
+        fresh_rn = 4'h0;
+        if (send_c & ext) begin
+            fresh_rn = i_alarm_reason & 4'h7;
+            if (i_alarm_seq) begin
+                fresh_rn = fresh_rn | 4'h8;
+            end
+        end
+        if (send_c & ~ext) begin
             fresh_data = 16'h0;
             if (i_alarm_reason[0]) begin
                 fresh_data = fresh_data | 16'h1000;
@@ -2694,8 +2831,9 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             f_alive_d = fresh_alive;
             f_alarm_d = send_c;
             f_reason_d = i_alarm_reason;
-            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
-            f_pb_d = ~(fresh_alive ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
+            f_rn_d = fresh_rn;
+            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_rn[3] ^ fresh_rn[2] ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
+            f_pb_d = ~(fresh_alive ^ fresh_rn[2] ^ fresh_rn[1] ^ fresh_rn[0] ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
         end
         pa_fix = 1'b0;
         pb_fix = 1'b0;
@@ -2721,16 +2859,19 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             if (f_alive_q) begin
                 nib_out = nib_out | 4'h4;
             end
-            if (gidx_q == 3'h1) begin
+            if (dg == 3'h7) begin
+                nib_out = f_rn_q;
+            end
+            if (dg == 3'h1) begin
                 nib_out = f_data_q[(2)+:(4)];
             end
-            if (gidx_q == 3'h2) begin
+            if (dg == 3'h2) begin
                 nib_out = f_data_q[(6)+:(4)];
             end
-            if (gidx_q == 3'h3) begin
+            if (dg == 3'h3) begin
                 nib_out = f_data_q[(10)+:(4)];
             end
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 nib_out = (f_data_q[(12)+:(4)] >> 1) & 4'h6;
                 if (f_pa_q) begin
                     nib_out = nib_out | 4'h8;
@@ -2742,7 +2883,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         end
         if (g_data & (act_now != 3'h0) & (act_now != 3'h3)) begin
             recode = 1'b1;
-            if ((act_now == 3'h1) & (gidx_q == 3'h3)) begin
+            if ((act_now == 3'h1) & (dg == 3'h3)) begin
                 if (fs_r_q & ~clr_h0_q) begin
                     nib_out = nib_out | 4'h8;
                 end
@@ -2753,33 +2894,36 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             if ((act_now == 3'h2) & (gidx_q == 3'h0)) begin
                 nib_out = inc2;
             end
-            if ((act_now == 3'h2) & ((gidx_q == 3'h1) | (gidx_q == 3'h2)) & carry_q) begin
+            if ((act_now == 3'h2) & ((dg == 3'h1) | (dg == 3'h2)) & carry_q) begin
                 nib_out = inc4;
             end
-            if ((act_now == 3'h2) & (gidx_q == 3'h3) & carry_q) begin
+            if ((act_now == 3'h2) & (dg == 3'h3) & carry_q) begin
                 nib_out = inc2;
             end
             if ((act_now == 3'h4) & (gidx_q == 3'h0)) begin
-                nib_out = nib & 4'hb;
+                nib_out = nib & 4'h3;
                 if (toggle_q) begin
                     nib_out = nib_out | 4'h4;
                 end
+            end
+            if ((act_now == 3'h4) & (dg == 3'h7)) begin
+                nib_out = 4'h0;
             end
             if (act_now == 3'h5) begin
                 if (gidx_q == 3'h0) begin
                     nib_out = (nib & 4'hc) | (f_data_q[(0)+:(4)] & 4'h3);
                 end
-                if (gidx_q == 3'h1) begin
+                if (dg == 3'h1) begin
                     nib_out = f_data_q[(2)+:(4)];
                 end
-                if (gidx_q == 3'h2) begin
+                if (dg == 3'h2) begin
                     nib_out = f_data_q[(6)+:(4)];
                 end
-                if (gidx_q == 3'h3) begin
+                if (dg == 3'h3) begin
                     nib_out = f_data_q[(10)+:(4)];
                 end
             end
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 pa_fix = d_a_q;
                 pb_fix = d_b_q;
                 if (act_now == 3'h5) begin
@@ -2896,7 +3040,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             c_write_d = recode;
             c_first_d = gidx_q == 3'h0;
             c_shift_d = i_bvalid;
-            c_mark_d = (gidx_q == 3'h4) & arrived_bad & ~dead_q & (action_q != 3'h3);
+            c_mark_d = (dg == 3'h4) & arrived_bad & ~dead_q & (action_q != 3'h3);
             in_pa_d = in_pa_q ^ nib[3] ^ nib[2];
             in_pb_d = in_pb_q ^ nib[2] ^ nib[1] ^ nib[0];
             in_data_d = in_data_q & g_data;
@@ -2923,11 +3067,11 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             if (gidx_q == 3'h0) begin
                 carry_d = nib[(0)+:(2)] == 2'h3;
             end
-            else begin
+            else if (dg != 3'h7) begin
                 carry_d = carry_q & (nib == 4'hf);
             end
             gidx_d = gidx_q + 3'h1;
-            if (gidx_q == 3'h4) begin
+            if (dg == 3'h4) begin
                 gidx_d = 3'h0;
                 if (wcount_q == 2'h2) begin
                     slot_d = slot_q + 12'h1;
@@ -3079,6 +3223,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     always @(posedge clock) f_alarm_q <= f_alarm_d;
     initial f_reason_q = 4'h0;
     always @(posedge clock) f_reason_q <= f_reason_d;
+    initial f_rn_q = 4'h0;
+    always @(posedge clock) f_rn_q <= f_rn_d;
     initial f_pa_q = 1'h0;
     always @(posedge clock) f_pa_q <= f_pa_d;
     initial f_pb_q = 1'h0;
@@ -3874,6 +4020,10 @@ endmodule // merkur_special_master__g3__rom
 // A host drains the queue with: read 0x2004; while entries > 0, read 0x2003
 // (and 0x2004's CYC), write 1 to 0x2004.
 //
+// Parameters: the word format ([`WordFormat`]): in the extended-alarm
+// variant (protocol §6) an alarm's reason and SEQ come from the reason
+// nibble `i_reason` and its data is taken like a data word's.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock |
@@ -3886,13 +4036,13 @@ endmodule // merkur_special_master__g3__rom
 // | `i_slots_m1` | in | 12 | static | slots per frame − 1 (the slot whose configuration reads LAST) |
 // | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 // | `i_mode` | in | 2 | clock | switchbox mode (status register) |
-// | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_ok` | in | | clock | received words (from the node's INPUT port) |
+// | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_reason`, `i_ok` | in | | clock | received words (from the node's INPUT port; `i_reason` the extended variant's reason nibble) |
 // | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 // | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 // | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
 // | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
 // | `o_join` | out | 1 | clock | started by JOIN |
-// | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+// | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data`, `o_s2_rn` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
 // | `o_running` | out | 1 | clock | the host started the ring |
 // | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
 // | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
@@ -3911,7 +4061,7 @@ endmodule // merkur_special_master__g3__rom
 // wb ack     _________/‾‾‾\_______     data read: 2 clocks
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_ok,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
+module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_reason,i_ok,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_s2_rn,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
 
     // Module arguments
     input wire  clock;
@@ -3932,6 +4082,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     input wire  [15:0] i_data;
     input wire  i_alive;
     input wire  i_alarm;
+    input wire  [3:0] i_reason;
     input wire  i_ok;
     input wire  i_hdr_bad;
     input wire  [11:0] i_tx_slot;
@@ -3945,6 +4096,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     output reg  o_s2_alive;
     output reg  o_s2_alarm;
     output reg  [15:0] o_s2_data;
+    output reg  [3:0] o_s2_rn;
     output reg  o_running;
     output reg  o_irq1;
     output reg  o_irq2;
@@ -3956,6 +4108,9 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     output reg  o_fs_clear;
     input wire  i_fs_cleared;
     output reg  [15:0] o_aerr;
+
+    // Constant declarations
+    localparam  ext = 1'b0;
 
     // Registers and child block ports
     reg  [11:0] db__read_address;
@@ -4040,6 +4195,8 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     reg  s2_run_q;
     reg  [15:0] s2_data_d;
     reg  [15:0] s2_data_q;
+    reg  [3:0] s2_rn_d;
+    reg  [3:0] s2_rn_q;
     reg  irq1_d;
     reg  irq1_q;
     reg  irq2_d;
@@ -4091,6 +4248,8 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     reg  alq_push;
     reg  alq_pop;
     reg  alq_keep;
+    reg  [3:0] s2_rsn;
+    reg  s2_seq;
     reg  [15:0] stat;
     reg  tx_value;
     reg  [15:0] irq_word;
@@ -4179,6 +4338,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         s2_alarm_d = s2_alarm_q;
         s2_run_d = s2_run_q;
         s2_data_d = s2_data_q;
+        s2_rn_d = s2_rn_q;
         irq1_d = irq1_q;
         irq2_d = irq2_q;
         irq_fs_d = irq_fs_q;
@@ -4257,6 +4417,13 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         s2_alarm_d = i_alarm;
         s2_run_d = running_q;
         s2_data_d = i_data;
+        s2_rn_d = i_reason;
+        s2_rsn = s2_data_q[(12)+:(4)];
+        s2_seq = s2_data_q[11];
+        if (ext) begin
+            s2_rsn = s2_rn_q & 4'h7;
+            s2_seq = s2_rn_q[3];
+        end
         s2_cfg = cfg_rx__read_data;
         s2_ast = ast__read_data;
         irq1_d = 1'b0;
@@ -4303,20 +4470,32 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         cfg_rx__write_enable = 1'b0;
         cfg_rx__write_address = s2_slot_q;
         cfg_rx__write_data = s2_cfg | 4'h1;
-        if (s2_data_q[11]) begin
+        if (s2_seq) begin
             cfg_rx__write_data = s2_cfg & 4'he;
         end
         s2_alrm = s2_q & s2_ok_q & s2_alarm_q & (s2_slot_q != i_home);
-        s2_fsr = s2_data_q[(12)+:(4)] == 4'h3;
+        s2_fsr = s2_rsn == 4'h3;
         if (s2_alrm & ~s2_fsr & s2_run_q & running_q) begin
             cfg_rx__write_enable = 1'b1;
         end
-        s2_new = s2_fsr | ~s2_run_q | (s2_data_q[11] == s2_cfg[0]);
+        s2_new = s2_fsr | ~s2_run_q | (s2_seq == s2_cfg[0]);
         if (s2_q & ~fs_frame_q) begin
             ast__write_enable = 1'b1;
             if (s2_ok_q) begin
                 if (s2_alrm & s2_new) begin
-                    irq_word = s2_data_q & 16'hf000;
+                    irq_word = 16'h0;
+                    if (s2_rsn[0]) begin
+                        irq_word = 16'h1000;
+                    end
+                    if (s2_rsn[1]) begin
+                        irq_word = irq_word | 16'h2000;
+                    end
+                    if (s2_rsn[2]) begin
+                        irq_word = irq_word | 16'h4000;
+                    end
+                    if (s2_rsn[3]) begin
+                        irq_word = irq_word | 16'h8000;
+                    end
                     if (s2_slot_q[0]) begin
                         irq_word = irq_word | 16'h1;
                     end
@@ -4355,22 +4534,22 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
                     end
                     last_irq_d = irq_word;
                     alq_push = 1'b1;
-                    if (s2_data_q[(12)+:(4)] == 4'h1) begin
+                    if (s2_rsn == 4'h1) begin
                         irq1_d = 1'b1;
                     end
-                    if (s2_data_q[(12)+:(4)] == 4'h2) begin
+                    if (s2_rsn == 4'h2) begin
                         irq2_d = 1'b1;
                     end
-                    if (s2_data_q[(12)+:(4)] == 4'h3) begin
+                    if (s2_rsn == 4'h3) begin
                         irq_fs_d = 1'b1;
                     end
-                    if ((s2_data_q[(12)+:(4)] >= 4'h4) & (s2_data_q[(12)+:(4)] <= 4'h6)) begin
+                    if ((s2_rsn >= 4'h4) & (s2_rsn <= 4'h6)) begin
                         irq_rc_d = 1'b1;
                     end
                 end
                 s2_own = (s2_cfg & 4'ha) != 4'h0;
-                s2_write = ~s2_alarm_q & ~s2_own;
-                t3_d = ~s2_alarm_q & s2_own & join_q;
+                s2_write = (~s2_alarm_q | ext) & ~s2_own;
+                t3_d = (~s2_alarm_q | ext) & s2_own & join_q;
                 t3_hv_d = cfg_tx__read_data[0] | hwsame_q;
                 t3_slot_d = s2_slot_q;
                 t3_data_d = s2_data_q;
@@ -4673,6 +4852,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         o_s2_alive = s2_alive_q;
         o_s2_alarm = s2_alarm_q;
         o_s2_data = s2_data_q;
+        o_s2_rn = s2_rn_q;
         o_running = running_q;
         o_irq1 = irq1_q;
         o_irq2 = irq2_q;
@@ -4744,6 +4924,8 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     always @(posedge clock) s2_run_q <= s2_run_d;
     initial s2_data_q = 16'h0;
     always @(posedge clock) s2_data_q <= s2_data_d;
+    initial s2_rn_q = 4'h0;
+    always @(posedge clock) s2_rn_q <= s2_rn_d;
     initial irq1_q = 1'h0;
     always @(posedge clock) irq1_q <= irq1_d;
     initial irq2_q = 1'h0;
@@ -7987,10 +8169,41 @@ module merkur_special_master__store(read_address,read_clock,read_data,write_addr
 
 endmodule // merkur_special_master__store
 // --------------------------------------------------------------------------
+// `store_rn` of `merkur_special_master`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__store_rn(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  [3:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  [3:0] write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[3:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {4{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__store_rn
+// --------------------------------------------------------------------------
 // `stx`: PktTx, Packet generator. (rtl/src/node/pkt_tx.rs)
 // Documented at module `merkur_special_master__ftx` above.
 // --------------------------------------------------------------------------
-module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h0_alive,i_word_data,i_word_alive,i_word_alarm,i_word_void,o_slot,o_take,o_busy,o_line);
+module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h0_alive,i_word_data,i_word_alive,i_word_alarm,i_word_void,i_word_rn,o_slot,o_take,o_busy,o_line);
 
     // Module arguments
     input wire  clock;
@@ -8004,10 +8217,15 @@ module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
     input wire  i_word_alive;
     input wire  i_word_alarm;
     input wire  i_word_void;
+    input wire  [3:0] i_word_rn;
     output reg  [11:0] o_slot;
     output reg  o_take;
     output reg  o_busy;
     output reg  [1:0] o_line;
+
+    // Constant declarations
+    localparam  ext = 1'b0;
+    localparam  last_g = 3'b100;
 
     // Registers and child block ports
     reg  [4:0] enc__i_sym;
@@ -8038,8 +8256,11 @@ module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
     reg  w_alarm_q;
     reg  w_void_d;
     reg  w_void_q;
+    reg  [3:0] w_rn_d;
+    reg  [3:0] w_rn_q;
 
     // Local signals
+    reg  [2:0] dg;
     reg  [3:0] nib;
     reg  p_a;
     reg  p_b;
@@ -8071,13 +8292,21 @@ module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
         w_alive_d = w_alive_q;
         w_alarm_d = w_alarm_q;
         w_void_d = w_void_q;
+        w_rn_d = w_rn_q;
         half_d = ~half_q;
         tx__i_bit_en = half_q;
         if (i_start & ~busy_q) begin
             pend_d = 1'b1;
         end
-        p_a = ~(w_alarm_q ^ w_alive_q ^ w_data_q[5] ^ w_data_q[4] ^ w_data_q[9] ^ w_data_q[8] ^ w_data_q[13] ^ w_data_q[12] ^ w_data_q[15]);
-        p_b = ~(w_alive_q ^ w_data_q[1] ^ w_data_q[0] ^ w_data_q[4] ^ w_data_q[3] ^ w_data_q[2] ^ w_data_q[8] ^ w_data_q[7] ^ w_data_q[6] ^ w_data_q[12] ^ w_data_q[11] ^ w_data_q[10] ^ w_data_q[15] ^ w_data_q[14]);
+        p_a = ~(w_alarm_q ^ w_alive_q ^ w_rn_q[3] ^ w_rn_q[2] ^ w_data_q[5] ^ w_data_q[4] ^ w_data_q[9] ^ w_data_q[8] ^ w_data_q[13] ^ w_data_q[12] ^ w_data_q[15]);
+        p_b = ~(w_alive_q ^ w_rn_q[2] ^ w_rn_q[1] ^ w_rn_q[0] ^ w_data_q[1] ^ w_data_q[0] ^ w_data_q[4] ^ w_data_q[3] ^ w_data_q[2] ^ w_data_q[8] ^ w_data_q[7] ^ w_data_q[6] ^ w_data_q[12] ^ w_data_q[11] ^ w_data_q[10] ^ w_data_q[15] ^ w_data_q[14]);
+        dg = grp_q;
+        if (ext & (grp_q != 3'h0)) begin
+            dg = grp_q - 3'h1;
+            if (grp_q == 3'h1) begin
+                dg = 3'h7;
+            end
+        end
         nib = w_data_q[(0)+:(4)] & 4'h3;
         if (w_alarm_q) begin
             nib = nib | 4'h8;
@@ -8085,16 +8314,19 @@ module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
         if (w_alive_q) begin
             nib = nib | 4'h4;
         end
-        if (grp_q == 3'h1) begin
+        if (dg == 3'h7) begin
+            nib = w_rn_q;
+        end
+        if (dg == 3'h1) begin
             nib = w_data_q[(2)+:(4)];
         end
-        if (grp_q == 3'h2) begin
+        if (dg == 3'h2) begin
             nib = w_data_q[(6)+:(4)];
         end
-        if (grp_q == 3'h3) begin
+        if (dg == 3'h3) begin
             nib = w_data_q[(10)+:(4)];
         end
-        if (grp_q == 3'h4) begin
+        if (dg == 3'h4) begin
             nib = (w_data_q[(12)+:(4)] >> 1) & 4'h6;
             if (p_a) begin
                 nib = nib | 4'h8;
@@ -8137,13 +8369,14 @@ module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
                     busy_d = 1'b1;
                     pend_d = 1'b0;
                     wcnt_d = 2'h0;
-                    grp_d = 3'h4;
+                    grp_d = last_g;
                     slot_d = 12'h0;
                     last_d = 1'b0;
                 end
             end
-            else if (grp_q == 3'h4) begin
+            else if (grp_q == last_g) begin
                 grp_d = 3'h0;
+                w_rn_d = 4'h0;
                 w_alive_d = 1'b0;
                 w_alarm_d = 1'b0;
                 w_void_d = 1'b0;
@@ -8167,6 +8400,9 @@ module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
                     w_alive_d = i_word_alive;
                     w_alarm_d = i_word_alarm;
                     w_void_d = i_word_void;
+                    if (ext) begin
+                        w_rn_d = i_word_rn;
+                    end
                     o_take = 1'b1;
                 end
             end
@@ -8205,6 +8441,8 @@ module merkur_special_master__stx(clock,i_start,i_slots,i_slots_m1,i_h0,i_h1,i_h
     always @(posedge clock) w_alarm_q <= w_alarm_d;
     initial w_void_q = 1'h0;
     always @(posedge clock) w_void_q <= w_void_d;
+    initial w_rn_q = 4'h0;
+    always @(posedge clock) w_rn_q <= w_rn_d;
 endmodule // merkur_special_master__stx
 // --------------------------------------------------------------------------
 // `enc`: Enc4b5b, 4B/5B encoder. (rtl/src/line/enc4b5b.rs)
@@ -8851,6 +9089,9 @@ endmodule // merkur_special_master__swc__ctl
 // times on its own clock: J K, H0 = `{10, 0, ACK, ADDR}`, H1 = NOT H0, one
 // idle group. ACK tells the partner that its TST is heard.
 //
+// Parameters: the word format ([`WordFormat`]); extended-alarm words have
+// a reason nibble N1 = 0 after the first group, and a TST takes 75 bit times.
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -8879,6 +9120,11 @@ module merkur_special_master__tst(clock,i_ack,i_address,i_restart,o_line);
     input wire  i_restart;
     output reg  [1:0] o_line;
 
+    // Constant declarations
+    localparam  ext = 1'b0;
+    localparam  h1_at = 4'h7;
+    localparam  idle_at = 4'hc;
+
     // Registers and child block ports
     reg  [4:0] enc__i_sym;
     wire  [4:0] enc__o_code;
@@ -8897,6 +9143,8 @@ module merkur_special_master__tst(clock,i_ack,i_address,i_restart,o_line);
 
     // Local signals
     reg  [15:0] word;
+    reg  [3:0] wg;
+    reg  [3:0] dg;
     reg  [3:0] nib;
     reg  p_a;
     reg  p_b;
@@ -8930,22 +9178,34 @@ module merkur_special_master__tst(clock,i_ack,i_address,i_restart,o_line);
         if (ack_q) begin
             word = word | 16'h1000;
         end
-        if (gnum_q >= 4'h7) begin
+        wg = gnum_q - 4'h2;
+        if (gnum_q >= h1_at) begin
             word = ~word;
+            wg = gnum_q - h1_at;
+        end
+        dg = wg;
+        if (ext & (wg != 4'h0)) begin
+            dg = wg - 4'h1;
+            if (wg == 4'h1) begin
+                dg = 4'h7;
+            end
         end
         p_a = ~(word[5] ^ word[4] ^ word[9] ^ word[8] ^ word[13] ^ word[12] ^ word[15]);
         p_b = ~(word[1] ^ word[0] ^ word[4] ^ word[3] ^ word[2] ^ word[8] ^ word[7] ^ word[6] ^ word[12] ^ word[11] ^ word[10] ^ word[15] ^ word[14]);
         nib = word[(0)+:(4)] & 4'h3;
-        if ((gnum_q == 4'h3) | (gnum_q == 4'h8)) begin
+        if (dg == 4'h7) begin
+            nib = 4'h0;
+        end
+        if (dg == 4'h1) begin
             nib = word[(2)+:(4)];
         end
-        if ((gnum_q == 4'h4) | (gnum_q == 4'h9)) begin
+        if (dg == 4'h2) begin
             nib = word[(6)+:(4)];
         end
-        if ((gnum_q == 4'h5) | (gnum_q == 4'ha)) begin
+        if (dg == 4'h3) begin
             nib = word[(10)+:(4)];
         end
-        if ((gnum_q == 4'h6) | (gnum_q == 4'hb)) begin
+        if (dg == 4'h4) begin
             nib = (word[(12)+:(4)] >> 1) & 4'h6;
             if (p_a) begin
                 nib = nib | 4'h8;
@@ -8973,21 +9233,21 @@ module merkur_special_master__tst(clock,i_ack,i_address,i_restart,o_line);
         if (gnum_q == 4'h1) begin
             sym = 5'h11;
         end
-        if (gnum_q == 4'hc) begin
+        if (gnum_q == idle_at) begin
             sym = 5'h12;
         end
         enc__i_sym = sym;
         tx__i_code = enc__o_code;
         if (tx__o_take) begin
             gnum_d = gnum_q + 4'h1;
-            if (gnum_q == 4'hc) begin
+            if (gnum_q == idle_at) begin
                 gnum_d = 4'h0;
                 ack_d = i_ack;
             end
         end
         if (i_restart) begin
             dark_d = 5'h18;
-            gnum_d = 4'hc;
+            gnum_d = idle_at;
         end
         o_line = 2'h0;
         if (tx__o_line) begin
@@ -9210,6 +9470,12 @@ endmodule // merkur_special_master__tst__tx
 // before and after, so a wrap never cuts the frame it is sending (issue
 // 19) — and a packet the relay was holding from the old BSR line is
 // dropped.
+//
+// Parameters: the word format ([`WordFormat`], protocol §4 or §6). With
+// extended-alarm words the store keeps each entry's reason nibble beside
+// it (`store_rn`), the home slot's alarm keeps the data memory's value and
+// goes in N1, an ACT slot's alarm word gets the data memory's value too,
+// and the secondary relay holds a packet back [`RELAY_BITS_EXT`] bits.
 //
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|

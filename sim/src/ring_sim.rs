@@ -13,7 +13,6 @@
 
 use crate::verilator::Model;
 use crate::wishbone::Wishbone;
-use merkur_rtl::line::word_rx::WordFormat;
 use crate::Rng;
 use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
 use merkur_model::line::{Lead, Word};
@@ -22,6 +21,7 @@ use merkur_model::scenario::{IrqLine, Kind};
 use merkur_rtl::harness::ring_top::{
     cap_slots, cfg as field, ring_verilog_with, status as st, INC_NOMINAL, TICKS_PER_BIT,
 };
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::node::mdb::{ST_FS_CLEAR, ST_FS_HOST, ST_JOIN, ST_RUN, ST_STOP, WB_CFG, WB_STATUS};
 use std::path::Path;
 use std::time::{Duration, Instant};

@@ -4,6 +4,7 @@
 //! constrained (and nothing else is).
 
 use merkur_model::scenario::Kind;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::top::boards::{self, Board};
 use merkur_rtl::top::synth_top::{node_top, NodeStatic};
 use merkur_rtl::top::ulx3s::ulx3s_verilog;
@@ -100,6 +101,7 @@ fn every_top_level_port_is_constrained() {
         slots: 9,
         period: 330,
         diag: true,
+        format: WordFormat::Basic,
     };
     for kind in [Kind::Sensor, Kind::Actuator] {
         check_covers(

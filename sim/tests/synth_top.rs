@@ -6,6 +6,7 @@
 
 use merkur_model::scenario::Kind;
 use merkur_rtl::emit::verilog::WAIVERS;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::top::synth_top::{node_top, NodeStatic, DDR_IO};
 use merkur_rtl::top::ulx3s::{ulx3s_verilog, PLL_BLACKBOX};
 use merkur_rtl::top::xem6010::{
@@ -65,6 +66,7 @@ fn st(kind: Kind) -> NodeStatic {
         slots: 9,
         period: 330,
         diag: true,
+        format: WordFormat::Basic,
     }
 }
 

@@ -19,6 +19,7 @@ use merkur_model::config::Config;
 use merkur_model::scenario::Kind;
 use merkur_rtl::emit::verilog;
 use merkur_rtl::harness::ring_top::node_verilog;
+use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::top::boards;
 use merkur_rtl::top::synth_top::{self, node_top, NodeStatic};
 use merkur_rtl::top::xem6010;
@@ -315,7 +316,7 @@ fn blocks_needed(mems: &[(usize, usize)], depth: usize, bits: u64) -> u64 {
 /// the target's block RAM, naming the slot count, the need, the device's
 /// limit and the largest slot count that fits this node kind.
 fn memory_budget(b: &BlockRam, k: usize, st: &NodeStatic) -> Result<(), String> {
-    let mems = verilog::memories(&node_verilog(st.kind, 4096, merkur_rtl::line::word_rx::WordFormat::Basic));
+    let mems = verilog::memories(&node_verilog(st.kind, 4096, st.format));
     let depth = verilog::mem_depth(st.slots);
     let need = blocks_needed(&mems, depth, b.bits);
     if need <= b.count {
@@ -753,6 +754,11 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
             slots: cfg.slots,
             period: cfg.period,
             diag: o.diag,
+            format: if cfg.ext {
+                WordFormat::ExtendedAlarm
+            } else {
+                WordFormat::Basic
+            },
         })
         .collect();
     for (&k, st) in nodes.iter().zip(&statics) {

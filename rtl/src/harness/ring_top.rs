@@ -637,7 +637,12 @@ pub fn ring_verilog_with(
             .replace("@REQUEST@", &cfg::REQUEST.to_string())
             .replace("@SENSOR@", &cfg::SENSOR.to_string()),
     );
-    out.push_str(&top(kinds, cap, restarts, format == WordFormat::ExtendedAlarm));
+    out.push_str(&top(
+        kinds,
+        cap,
+        restarts,
+        format == WordFormat::ExtendedAlarm,
+    ));
     out
 }
 

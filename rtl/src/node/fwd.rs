@@ -37,7 +37,7 @@
 //!
 //! Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
 //! In the extended-alarm variant (protocol §6) every word has a sixth group,
-//! N1 = {SEQ, REASON[2:0]}, after the first: the forwarder passes it on
+//! N1 = `{SEQ, REASON[2:0]}`, after the first: the forwarder passes it on
 //! (headers, data, a master's ACT slot), writes it in a fresh word (the
 //! alarm's SEQ and reason, 0 in a data word) and clears it with the ALARM
 //! bit when an actuator rewrites its slot; an alarm keeps the data bits

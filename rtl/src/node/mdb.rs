@@ -801,9 +801,7 @@ impl Logic for Mdb {
                     if self.s2_rsn.val() == 3 {
                         self.irq_fs.d.next = true;
                     }
-                    if (self.s2_rsn.val() >= 4)
-                        & (self.s2_rsn.val() <= 6)
-                    {
+                    if (self.s2_rsn.val() >= 4) & (self.s2_rsn.val() <= 6) {
                         self.irq_rc.d.next = true;
                     }
                 }
@@ -813,8 +811,7 @@ impl Logic for Mdb {
                 // read counts).
                 self.s2_own.next = (self.s2_cfg.val() & 10) != 0;
                 // An alarm word's data only in the extended variant (§6).
-                self.s2_write.next =
-                    (!self.s2_alarm.q.val() | self.ext.val()) & !self.s2_own.val();
+                self.s2_write.next = (!self.s2_alarm.q.val() | self.ext.val()) & !self.s2_own.val();
                 self.t3.d.next = (!self.s2_alarm.q.val() | self.ext.val())
                     & self.s2_own.val()
                     & self.join.q.val();

@@ -301,7 +301,11 @@ impl Logic for PktTx {
                     self.w_alive.d.next = self.i_word_alive.val();
                     self.w_alarm.d.next = self.i_word_alarm.val();
                     self.w_void.d.next = self.i_word_void.val();
-                    self.w_rn.d.next = self.i_word_rn.val();
+                    // (Basic words have none: a constant 0 here lets
+                    // synthesis drop whatever feeds `i_word_rn`.)
+                    if self.ext.val() {
+                        self.w_rn.d.next = self.i_word_rn.val();
+                    }
                     self.o_take.next = true;
                 }
             } else {

@@ -74,6 +74,12 @@
 //! 19) — and a packet the relay was holding from the old BSR line is
 //! dropped.
 //!
+//! Parameters: the word format ([`WordFormat`], protocol §4 or §6). With
+//! extended-alarm words the store keeps each entry's reason nibble beside
+//! it (`store_rn`), the home slot's alarm keeps the data memory's value and
+//! goes in N1, an ACT slot's alarm word gets the data memory's value too,
+//! and the secondary relay holds a packet back [`RELAY_BITS_EXT`] bits.
+//!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
@@ -1210,7 +1216,7 @@ impl Logic for SpecialMaster {
         self.store.write_enable.next = self.mdb.o_s2.val() & self.base.val();
         self.store.write_address.next = self.mdb.o_s2_slot.val();
         self.store.write_data.next = self.st_word.val();
-        self.store_rn.write_enable.next = self.mdb.o_s2.val() & self.base.val();
+        self.store_rn.write_enable.next = self.mdb.o_s2.val() & self.base.val() & self.ext.val();
         self.store_rn.write_address.next = self.mdb.o_s2_slot.val();
         self.store_rn.write_data.next = self.mdb.o_s2_rn.val();
         // An entry is good for one frame (protocol §8): the clock after its

@@ -87,6 +87,9 @@ pub struct NodeStatic {
     /// a sensor has `i_sensor`, an actuator its register on `o_act`, and
     /// synthesis drops the counters that nothing reads (docs/synthesis.md).
     pub diag: bool,
+    /// The word format of the ring (protocol §4, or §6 with
+    /// `[frame] alarm_bits = true`).
+    pub format: WordFormat,
 }
 
 /// The device-independent capture and output stages (see the module doc).
@@ -169,7 +172,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             String::new()
         }
     ));
-    v.push_str(&node_verilog(st.kind, st.slots, WordFormat::Basic));
+    v.push_str(&node_verilog(st.kind, st.slots, st.format));
     v.push_str(DDR_IO);
     let act = st.kind == Kind::Actuator;
     let mut ports = vec![
