@@ -637,7 +637,7 @@ fn synth_refuses_a_ring_too_large_for_the_device() {
     let err = text(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("slots 2100: node 0 (special_master) needs at least 55 SB_RAM40_4K")
+        err.contains("slots 2100: node 0 (special_master) needs at least 59 SB_RAM40_4K")
             && err.contains("the iCE40-HX8K has 32; at most 2048 slots fit"),
         "{err}"
     );

@@ -91,8 +91,8 @@
 // dropped.
 //
 // Parameters: the word format ([`WordFormat`], protocol §4 or §6). With
-// extended-alarm words the store keeps each entry's reason nibble beside
-// it (`store_rn`), the home slot's alarm keeps the data memory's value and
+// extended-alarm words the store keeps each entry's reason nibble in its
+// top four bits (0 with basic words), the home slot's alarm keeps the data memory's value and
 // goes in N1, an ACT slot's alarm word gets the data memory's value too,
 // and the secondary relay holds a packet back [`RELAY_BITS_EXT`] bits.
 //
@@ -363,9 +363,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  mdb__i_fs_cleared;
     wire  [15:0] mdb__o_aerr;
     reg  [11:0] store__read_address;
-    wire  [21:0] store__read_data;
+    wire  [25:0] store__read_data;
     reg  [11:0] store__write_address;
-    reg  [21:0] store__write_data;
+    reg  [25:0] store__write_data;
     reg  store__write_enable;
     reg  st_used_d;
     reg  st_used_q;
@@ -381,17 +381,10 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  [11:0] aact__write_address;
     reg  aact__write_data;
     reg  aact__write_enable;
-    reg  [21:0] st_r_d;
-    reg  [21:0] st_r_q;
+    reg  [25:0] st_r_d;
+    reg  [25:0] st_r_q;
     reg  aact_r_d;
     reg  aact_r_q;
-    reg  [11:0] store_rn__read_address;
-    wire  [3:0] store_rn__read_data;
-    reg  [11:0] store_rn__write_address;
-    reg  [3:0] store_rn__write_data;
-    reg  store_rn__write_enable;
-    reg  [3:0] st_rn_r_d;
-    reg  [3:0] st_rn_r_q;
     reg  half_d;
     reg  half_q;
     reg  [19:0] bcnt_d;
@@ -573,7 +566,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  clr_fail;
     reg  seq_tx;
     reg  tick;
-    reg  [21:0] st;
+    reg  [25:0] st;
     reg  st_ok;
     reg  [2:0] prev_cyc;
     reg  [3:0] reason;
@@ -586,7 +579,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  [15:0] h0;
     reg  [15:0] h1;
     reg  [15:0] sec_h0;
-    reg  [21:0] st_word;
+    reg  [25:0] st_word;
     reg  base;
     reg  [9:0] jk_x;
     reg  [9:0] jk_z;
@@ -832,15 +825,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .write_data(aact__write_data),
         .write_enable(aact__write_enable)
     );
-    merkur_special_master__store_rn store_rn(
-        .read_address(store_rn__read_address),
-        .read_clock(clock),
-        .read_data(store_rn__read_data),
-        .write_address(store_rn__write_address),
-        .write_clock(clock),
-        .write_data(store_rn__write_data),
-        .write_enable(store_rn__write_enable)
-    );
     merkur_special_master__fwd fwd(
         .clock(clock),
         .i_bvalid(fwd__i_bvalid),
@@ -920,7 +904,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(*) begin
         st_r_d = st_r_q;
         aact_r_d = aact_r_q;
-        st_rn_r_d = st_rn_r_q;
         half_d = half_q;
         bcnt_d = bcnt_q;
         cyc_d = cyc_q;
@@ -1046,9 +1029,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         stx__i_word_void = 1'b0;
         stx__i_word_rn = 4'h0;
         store__read_address = ftx__o_slot;
-        store_rn__read_address = ftx__o_slot;
         st_r_d = store__read_data;
-        st_rn_r_d = store_rn__read_data;
         aact_r_d = aact__read_data;
         st = st_r_q;
         prev_cyc = cyc_q[(0)+:(3)] - 3'h1;
@@ -1057,7 +1038,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         w_alive = st[16];
         w_alarm = st[17];
         w_void = ~st_ok;
-        w_rn = st_rn_r_q;
+        w_rn = st[(22)+:(4)];
         home = ftx__o_slot == i_address;
         reason = 4'h2;
         if (pend_i1_q) begin
@@ -1349,27 +1330,27 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
             failsafe_d = 1'b1;
         end
         sent_alarm__read_address = rx_in__o_slot;
-        st_word = (({6'h0, mdb__o_s2_data}) | 22'h0) | ((({19'h0, ret_cyc_q}) | 22'h0) << 19);
+        st_word = (({10'h0, mdb__o_s2_data}) | 26'h0) | ((({23'h0, ret_cyc_q}) | 26'h0) << 19);
+        if (ext) begin
+            st_word = st_word | ((({22'h0, mdb__o_s2_rn}) | 26'h0) << 22);
+        end
         if (mdb__o_s2_alive) begin
-            st_word = st_word | 22'h10000;
+            st_word = st_word | 26'h10000;
         end
         if (mdb__o_s2_alarm) begin
-            st_word = st_word | 22'h20000;
+            st_word = st_word | 26'h20000;
         end
         if (mdb__o_s2_ok & ~(mdb__o_s2_alarm & sent_alarm__read_data)) begin
-            st_word = st_word | 22'h40000;
+            st_word = st_word | 26'h40000;
         end
         store__write_enable = mdb__o_s2 & base;
         store__write_address = mdb__o_s2_slot;
         store__write_data = st_word;
-        store_rn__write_enable = mdb__o_s2 & base & ext;
-        store_rn__write_address = mdb__o_s2_slot;
-        store_rn__write_data = mdb__o_s2_rn;
         if (st_used_q & ~mdb__o_s2) begin
             st_used_d = 1'b0;
             store__write_enable = 1'b1;
             store__write_address = st_used_slot_q;
-            store__write_data = 22'h0;
+            store__write_data = 26'h0;
         end
         if (ftx__o_take) begin
             st_used_d = 1'b1;
@@ -1632,12 +1613,10 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) st_used_q <= st_used_d;
     initial st_used_slot_q = 12'h0;
     always @(posedge clock) st_used_slot_q <= st_used_slot_d;
-    initial st_r_q = 22'h0;
+    initial st_r_q = 26'h0;
     always @(posedge clock) st_r_q <= st_r_d;
     initial aact_r_q = 1'h0;
     always @(posedge clock) aact_r_q <= aact_r_d;
-    initial st_rn_r_q = 4'h0;
-    always @(posedge clock) st_rn_r_q <= st_rn_r_d;
     initial half_q = 1'h0;
     always @(posedge clock) half_q <= half_d;
     initial bcnt_q = 20'h0;
@@ -8146,19 +8125,19 @@ module merkur_special_master__store(read_address,read_clock,read_data,write_addr
     // Module arguments
     input wire  [11:0] read_address;
     input wire  read_clock;
-    output reg  [21:0] read_data;
+    output reg  [25:0] read_data;
     input wire  [11:0] write_address;
     input wire  write_clock;
-    input wire  [21:0] write_data;
+    input wire  [25:0] write_data;
     input wire  write_enable;
 
     // Update code (custom)
-    reg[21:0] mem[255:0];
+    reg[25:0] mem[255:0];
     integer mem_i;
     initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
 
     always @(posedge read_clock) begin
-       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {22{1'b0}};
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {26{1'b0}};
     end
 
     always @(posedge write_clock) begin
@@ -8168,37 +8147,6 @@ module merkur_special_master__store(read_address,read_clock,read_data,write_addr
     end
 
 endmodule // merkur_special_master__store
-// --------------------------------------------------------------------------
-// `store_rn` of `merkur_special_master`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
-// `read_address` on `read_clock`.
-// --------------------------------------------------------------------------
-module merkur_special_master__store_rn(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
-
-    // Module arguments
-    input wire  [11:0] read_address;
-    input wire  read_clock;
-    output reg  [3:0] read_data;
-    input wire  [11:0] write_address;
-    input wire  write_clock;
-    input wire  [3:0] write_data;
-    input wire  write_enable;
-
-    // Update code (custom)
-    reg[3:0] mem[255:0];
-    integer mem_i;
-    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
-
-    always @(posedge read_clock) begin
-       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {4{1'b0}};
-    end
-
-    always @(posedge write_clock) begin
-       if (write_enable && write_address[11:8] == 4'd0) begin
-          mem[write_address[7:0]] <= write_data;
-       end
-    end
-
-endmodule // merkur_special_master__store_rn
 // --------------------------------------------------------------------------
 // `stx`: PktTx, Packet generator. (rtl/src/node/pkt_tx.rs)
 // Documented at module `merkur_special_master__ftx` above.
@@ -9472,8 +9420,8 @@ endmodule // merkur_special_master__tst__tx
 // dropped.
 //
 // Parameters: the word format ([`WordFormat`], protocol §4 or §6). With
-// extended-alarm words the store keeps each entry's reason nibble beside
-// it (`store_rn`), the home slot's alarm keeps the data memory's value and
+// extended-alarm words the store keeps each entry's reason nibble in its
+// top four bits (0 with basic words), the home slot's alarm keeps the data memory's value and
 // goes in N1, an ACT slot's alarm word gets the data memory's value too,
 // and the secondary relay holds a packet back [`RELAY_BITS_EXT`] bits.
 //

@@ -75,8 +75,8 @@
 //! dropped.
 //!
 //! Parameters: the word format ([`WordFormat`], protocol §4 or §6). With
-//! extended-alarm words the store keeps each entry's reason nibble beside
-//! it (`store_rn`), the home slot's alarm keeps the data memory's value and
+//! extended-alarm words the store keeps each entry's reason nibble in its
+//! top four bits (0 with basic words), the home slot's alarm keeps the data memory's value and
 //! goes in N1, an ACT slot's alarm word gets the data memory's value too,
 //! and the secondary relay holds a packet back [`RELAY_BITS_EXT`] bits.
 //!
@@ -269,23 +269,18 @@ pub struct SpecialMaster {
     relay: DFF<Bit>,
     rlast: DFF<Bit>,
     mdb: Mdb,
-    store: RAM<Bits<22>, 12>,
+    store: RAM<Bits<26>, 12>,
     /// A store entry was sent: mark it not valid (in the next clock the
     /// return path does not write).
     st_used: DFF<Bit>,
     st_used_slot: DFF<Bits<12>>,
     sent_alarm: RAM<Bit, 12>,
     aact: RAM<Bit, 12>,
-    st_r: DFF<Bits<22>>,
+    st_r: DFF<Bits<26>>,
     aact_r: DFF<Bit>,
-    // Extended-alarm words (protocol §6): the reason nibble of each store
-    // entry beside it (a memory of its own, removed by synthesis in the
-    // basic format), registered like the store's read data; the nibble of
-    // the word sent; INPUT's alarm SEQ and reason as the format carries
-    // them.
+    // Extended-alarm words (protocol §6); the reason nibble of the word
+    // sent; INPUT's alarm SEQ and reason as the format carries them.
     ext: Constant<Bit>,
-    store_rn: RAM<Bits<4>, 12>,
-    st_rn_r: DFF<Bits<4>>,
     w_rn: Signal<Local, Bits<4>>,
     rx_seq: Signal<Local, Bit>,
     rx_rsn: Signal<Local, Bits<4>>,
@@ -341,7 +336,7 @@ pub struct SpecialMaster {
     await_rb: DFF<Bit>,
     seq_tx: Signal<Local, Bit>,
     tick: Signal<Local, Bit>,
-    st: Signal<Local, Bits<22>>,
+    st: Signal<Local, Bits<26>>,
     st_ok: Signal<Local, Bit>,
     prev_cyc: Signal<Local, Bits<3>>,
     reason: Signal<Local, Bits<4>>,
@@ -354,7 +349,7 @@ pub struct SpecialMaster {
     h0: Signal<Local, Bits<16>>,
     h1: Signal<Local, Bits<16>>,
     sec_h0: Signal<Local, Bits<16>>,
-    st_word: Signal<Local, Bits<22>>,
+    st_word: Signal<Local, Bits<26>>,
     // A backup before its election: a master (protocol §8).
     fwd: Fwd,
     txs: SlotSel,
@@ -556,8 +551,6 @@ impl SpecialMaster {
             st_word: Default::default(),
             fwd: Fwd::new(format),
             ext: Constant::new(ext),
-            store_rn: Default::default(),
-            st_rn_r: Default::default(),
             w_rn: Default::default(),
             rx_seq: Default::default(),
             rx_rsn: Default::default(),
@@ -610,7 +603,6 @@ impl Logic for SpecialMaster {
             clock,
             st_r,
             aact_r,
-            st_rn_r,
             half,
             bcnt,
             cyc,
@@ -706,8 +698,6 @@ impl Logic for SpecialMaster {
         self.mdb.clock.next = self.clock.val();
         self.store.read_clock.next = self.clock.val();
         self.store.write_clock.next = self.clock.val();
-        self.store_rn.read_clock.next = self.clock.val();
-        self.store_rn.write_clock.next = self.clock.val();
         self.sent_alarm.read_clock.next = self.clock.val();
         self.sent_alarm.write_clock.next = self.clock.val();
         self.aact.read_clock.next = self.clock.val();
@@ -780,13 +770,11 @@ impl Logic for SpecialMaster {
         // The word of slot ftx.o_slot (protocol §7, §8): store, data memory,
         // configuration, actuator Alive, all read at that slot.
         self.store.read_address.next = self.ftx.o_slot.val();
-        self.store_rn.read_address.next = self.ftx.o_slot.val();
         // The store's and the Alive memory's read data, registered (issue
         // 20: block RAM outputs go to one flip-flop, not through logic);
         // the slot is set 60 bit times before its word is taken and
         // advances when it is, 25 bit times before the next is due.
         self.st_r.d.next = self.store.read_data.val();
-        self.st_rn_r.d.next = self.store_rn.read_data.val();
         self.aact_r.d.next = self.aact.read_data.val();
         self.st.next = self.st_r.q.val();
         // Returned last cycle: valid bit and the previous cycle's CYC.
@@ -799,7 +787,7 @@ impl Logic for SpecialMaster {
         self.w_alive.next = self.st.val().get_bit(16);
         self.w_alarm.next = self.st.val().get_bit(17);
         self.w_void.next = !self.st_ok.val();
-        self.w_rn.next = self.st_rn_r.q.val();
+        self.w_rn.next = self.st.val().get_bits::<4>(22);
         self.home.next = self.ftx.o_slot.val() == self.i_address.val();
         // Alarm queue of the home slot: FAILSAFE > RECONFIG > IRQ1 > IRQ2.
         self.reason.next = 2.into();
@@ -1197,12 +1185,17 @@ impl Logic for SpecialMaster {
         if self.mdb.o_irq_fs.val() {
             self.failsafe.d.next = true;
         }
-        // The return store: {CYC, valid, ALARM, ALIVE, data}; a bad or VOID
-        // word, or an alarm coming back after the SM sent an alarm in that
-        // slot, is stored as not valid (sent as VOID).
+        // The return store: {N1 (extended words; 0 with basic ones), CYC,
+        // valid, ALARM, ALIVE, data}; a bad or VOID word, or an alarm coming
+        // back after the SM sent an alarm in that slot, is stored as not
+        // valid (sent as VOID).
         self.sent_alarm.read_address.next = self.rx_in.o_slot.val();
-        self.st_word.next = (bit_cast::<22, 16>(self.mdb.o_s2_data.val()) | 0)
-            | ((bit_cast::<22, 3>(self.ret_cyc.q.val()) | 0) << 19);
+        self.st_word.next = (bit_cast::<26, 16>(self.mdb.o_s2_data.val()) | 0)
+            | ((bit_cast::<26, 3>(self.ret_cyc.q.val()) | 0) << 19);
+        if self.ext.val() {
+            self.st_word.next =
+                self.st_word.val() | ((bit_cast::<26, 4>(self.mdb.o_s2_rn.val()) | 0) << 22);
+        }
         if self.mdb.o_s2_alive.val() {
             self.st_word.next = self.st_word.val() | 0x10000;
         }
@@ -1216,9 +1209,6 @@ impl Logic for SpecialMaster {
         self.store.write_enable.next = self.mdb.o_s2.val() & self.base.val();
         self.store.write_address.next = self.mdb.o_s2_slot.val();
         self.store.write_data.next = self.st_word.val();
-        self.store_rn.write_enable.next = self.mdb.o_s2.val() & self.base.val() & self.ext.val();
-        self.store_rn.write_address.next = self.mdb.o_s2_slot.val();
-        self.store_rn.write_data.next = self.mdb.o_s2_rn.val();
         // An entry is good for one frame (protocol §8): the clock after its
         // word is taken it is written not valid, or the clock after that if
         // a returned word is written then (o_s2 is one clock per word; a
