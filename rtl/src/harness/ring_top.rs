@@ -727,11 +727,11 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
                 &mut v,
                 &format!(
                     "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
-                     \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                     \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k};\n    wire [3:0] u_reason_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                      \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
                      \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
                      \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
-                     \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
+                     \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_reason(u_reason_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
                      \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
                      \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire [15:0] frames_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    assign irq1_{k} = 1'b0;\n    assign irq2_{k} = 1'b0;\n    assign irqfs_{k} = 1'b0;\n    assign irqrc_{k} = 1'b0;\n    assign irqfsc_{k} = 1'b0;"
                 ),

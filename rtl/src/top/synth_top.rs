@@ -319,13 +319,13 @@ fn slave_instance(
         "    // Master-mode outputs of the slave module, unused in a slave.\n\
          \x20   /* verilator lint_off UNUSEDSIGNAL */\n\
          \x20   wire [11:0] nc_fwd_slot;\n    wire nc_regen;\n    wire nc_wvalid;\n    wire [1:0] nc_kind;\n\
-         \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire nc_ok;\n    wire nc_hdr_bad;\n\
+         \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire [3:0] nc_reason;\n    wire nc_ok;\n    wire nc_hdr_bad;\n\
          \x20   /* verilator lint_on UNUSEDSIGNAL */\n\
          \x20   {}  node(\n        {common},\n\
          \x20       .i_actuator(1'b{actb}), .i_sensor_data({sensor}),\n\
          \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
          \x20       .o_fwd_slot(nc_fwd_slot), .o_regen(nc_regen), .o_wvalid(nc_wvalid), .o_kind(nc_kind),\n\
-         \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad),\n\
+         \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_reason(nc_reason), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad),\n\
          \x20       .o_act_data(act_data));\n",
         node_module(st.kind)
     ));
