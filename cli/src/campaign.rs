@@ -817,7 +817,9 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
             // which a receiver reads as a slip, not as one bit error).
             let Carry::Data(fr) = carry else { continue };
             let ones = code_ones(cfg, fr);
-            let bits = 60 + 25 * cfg.slots;
+            // Line bits per word: 25, or 30 with extended-alarm words (§6).
+            let w = cfg.word_bits() as usize;
+            let bits = 10 + w * (2 + cfg.slots);
             // P(at least one error in the packet), then a uniform position
             // among the bits the harness can place.
             let p = 1.0 - (1.0 - ber).powi(bits as i32);
@@ -827,14 +829,17 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
             let at = ones[r.below(ones.len() as u64) as usize];
             let (target, bit) = match at {
                 0..=9 => (FlipTarget::Cs, at),
-                10..=34 => (FlipTarget::H0, at - 10),
-                35..=59 => (FlipTarget::H1, at - 35),
-                _ => (FlipTarget::Slot((at - 60) / 25), (at - 60) % 25),
+                _ if at < 10 + w => (FlipTarget::H0, at - 10),
+                _ if at < 10 + 2 * w => (FlipTarget::H1, at - 10 - w),
+                _ => (
+                    FlipTarget::Slot((at - 10 - 2 * w) / w),
+                    (at - 10 - 2 * w) % w,
+                ),
             };
             // A word's last bit also hits the next word (protocol §4).
             let word = |a: usize| match a {
                 0..=9 => 0,
-                _ => 1 + (a - 10) / 25,
+                _ => 1 + (a - 10) / w,
             };
             let sec = false;
             let words = [word(at), word(at + 1)];
@@ -877,7 +882,7 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
 /// among the bits the harness can reach (from 2 on) in words whose code the
 /// model knows (good or VOID).
 fn code_ones(cfg: &Config, fr: &merkur_model::ring::Frame) -> Vec<usize> {
-    use merkur_model::line::{push_group, word_code_bits, CODE_J, CODE_K, CODE_S};
+    use merkur_model::line::{push_group, void_code_bits, word_code_bits, CODE_J, CODE_K};
     let merkur_model::ring::HeaderRx::Ok(h) = fr.hdr else {
         return vec![];
     };
@@ -892,14 +897,8 @@ fn code_ones(cfg: &Config, fr: &merkur_model::ring::Frame) -> Vec<usize> {
     for w in &fr.words {
         match w {
             Slot::Data(d) => code.extend(word_code_bits(d, cfg.ext).into_iter().map(Some)),
-            Slot::Void => {
-                let mut v = vec![];
-                for _ in 0..5 {
-                    push_group(&mut v, CODE_S);
-                }
-                code.extend(v.into_iter().map(Some));
-            }
-            _ => code.extend(std::iter::repeat(None).take(25)),
+            Slot::Void => code.extend(void_code_bits(cfg.ext).into_iter().map(Some)),
+            _ => code.extend(std::iter::repeat(None).take(cfg.word_bits() as usize)),
         }
     }
     code.iter()
