@@ -210,7 +210,12 @@ fn delivered(recs: &[CycleRecord], k: usize) -> Vec<(u32, Entry)> {
 /// An alarm a node sent inside a recovery window: (cycle, its slot, reason).
 type Sent = (u32, u16, u8);
 
-/// The alarms the model's nodes send inside recovery windows.
+/// The alarms the model's nodes send inside recovery windows, and the
+/// RECONFIG of every switchbox change there (protocol §13: a RECONFIG
+/// alarm of a mode its sender had in the window is bit timing, as for the
+/// values a node holds — e.g. a node that wraps at a second fault sends it
+/// in the RTL when a frame starts between its wrap and its failsafe, where
+/// the model's node fails safe at the same cycle's end and sends nothing).
 fn sent_in_windows(
     cfg: &Config,
     recs: &[CycleRecord],
@@ -219,11 +224,13 @@ fn sent_in_windows(
     recs.iter()
         .flat_map(|rec| &rec.events)
         .filter(|ev| win(ev.cycle).is_some())
-        .filter_map(|ev| match ev.kind {
-            EventKind::AlarmTx { reason, .. } => {
-                Some((ev.cycle, cfg.nodes[ev.node].address as u16, reason))
+        .filter_map(|ev| {
+            let slot = cfg.nodes[ev.node].address as u16;
+            match ev.kind {
+                EventKind::AlarmTx { reason, .. } => Some((ev.cycle, slot, reason)),
+                EventKind::Mode { to, .. } => Some((ev.cycle, slot, reason::reconfig(to))),
+                _ => None,
             }
-            _ => None,
         })
         .collect()
 }
