@@ -30,6 +30,11 @@
 // actuator's output register and the error counters. A [`crate::node::master`]
 // is this block with `i_master` = 1 and a database beside it.
 //
+// Retransmission on demand (protocol §8): the forwarder fills a sensor's
+// requests and puts an actuator's Alive into its copy; an actuator takes
+// a good copy of its slot from an RTX into its output register (no Alive
+// check), and an RTX's bad request words count in `o_perr`.
+//
 // Parameters: the word format ([`WordFormat`], protocol §4 or §6), for
 // its receive ports, forwarder and TST generator; in the extended-alarm
 // variant an alarm's SEQ is read back from the reason nibble and an
@@ -209,7 +214,16 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     reg  fwd__i_alarm_req;
     reg  [3:0] fwd__i_alarm_reason;
     reg  fwd__i_alarm_seq;
+    reg  fwd__i_armed;
+    reg  fwd__i_wvalid;
+    reg  [1:0] fwd__i_wkind;
+    reg  fwd__i_wodd;
+    reg  fwd__i_wok;
+    reg  fwd__i_walarm;
+    reg  [15:0] fwd__i_wdata;
+    reg  [1:0] fwd__i_ptype;
     wire  [11:0] fwd__o_slot;
+    wire  fwd__o_rtx_own;
     wire  fwd__o_regen;
     wire  fwd__o_alarm_sent;
     wire  [3:0] fwd__o_sent_reason;
@@ -410,7 +424,16 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         .i_slot_cfg(i_slot_cfg),
         .i_slot_data(i_slot_data),
         .i_slot_alive(i_slot_alive),
+        .i_armed(fwd__i_armed),
+        .i_wvalid(fwd__i_wvalid),
+        .i_wkind(fwd__i_wkind),
+        .i_wodd(fwd__i_wodd),
+        .i_wok(fwd__i_wok),
+        .i_walarm(fwd__i_walarm),
+        .i_wdata(fwd__i_wdata),
+        .i_ptype(fwd__i_ptype),
         .o_slot(fwd__o_slot),
+        .o_rtx_own(fwd__o_rtx_own),
         .o_regen(fwd__o_regen),
         .o_alarm_sent(fwd__o_alarm_sent),
         .o_sent_reason(fwd__o_sent_reason),
@@ -467,7 +490,15 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         fwd__i_bvalid = rx_in__o_bvalid;
         fwd__i_level = rx_in__o_level;
         fwd__i_phase = rx_in__o_phase;
-        fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0));
+        fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0) & (rx_in__o_ptype != 2'h3));
+        fwd__i_armed = armed_q;
+        fwd__i_wvalid = rx_in__o_wvalid;
+        fwd__i_wkind = rx_in__o_kind;
+        fwd__i_wodd = rx_in__o_slot[0];
+        fwd__i_wok = rx_in__o_ok;
+        fwd__i_walarm = rx_in__o_alarm;
+        fwd__i_wdata = rx_in__o_data;
+        fwd__i_ptype = rx_in__o_ptype;
         if (~rx_in__o_inpkt) begin
             fwd_cut_d = 1'b0;
         end
@@ -582,7 +613,10 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
                 act_data_d = rx_in__o_data;
             end
         end
-        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & ~rx_in__o_ok & ~rx_in__o_void & (perr_q != 16'hffff)) begin
+        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h3) & rx_in__o_slot[0] & rx_in__o_ok & ~rx_in__o_alarm & fwd__o_rtx_own & i_actuator & ~failsafe_q) begin
+            act_data_d = rx_in__o_data;
+        end
+        if (rx_in__o_wvalid & ((rx_in__o_kind == 2'h2) | ((rx_in__o_kind == 2'h3) & ~failsafe_q)) & ~rx_in__o_ok & ~rx_in__o_void & (perr_q != 16'hffff)) begin
             perr_d = perr_q + 16'h1;
         end
         if (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & ~(rx_in__o_ok & (rx_in__o_ptype == 2'h2))) begin
@@ -846,6 +880,21 @@ endmodule // merkur_slave__dark
 // The output bits go through a [`Retime`] buffer and out on the node's own
 // clock (DDR pair), so the receiver's sampling error is not passed on.
 //
+// Retransmission on demand (protocol §8): a good H0 of type 11 on the
+// input port's word bus (`i_wvalid` …) makes the packet an RTX. Its H0 is
+// treated as a frame's (FS and RWC are already 1 there, so nothing
+// changes), H1 passes unchanged, and the request words pass on, marked
+// when they arrive bad; the packet ends at the third idle group. A data
+// word whose good index word named the home slot is written: a
+// **sensor** (armed, not in failsafe) writes `{the value it wrote into
+// this cycle's frame, its Alive there}` over whatever the word brings; an
+// **actuator** puts that Alive into a data word (its master's copy). A
+// node that wrote into the RTX without having processed the cycle's
+// frame (the last header before it was not an RTX's and no frame ended
+// since) toggles its Alive flip-flop at the RTX's end, as the frame
+// would have. A master's requests (`i_master`) are not handled yet: its
+// forwarder passes them on.
+//
 // Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
 // In the extended-alarm variant (protocol §6) every word has a sixth group,
 // N1 = `{SEQ, REASON[2:0]}`, after the first: the forwarder passes it on
@@ -870,7 +919,10 @@ endmodule // merkur_slave__dark
 // | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its reason and SEQ (basic: `D[15:12]`, `D[11]`; extended: N1) |
 // | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 // | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
+// | `i_armed` | in | 1 | clock | the node has processed a good header (it may fill RTX requests) |
+// | `i_wvalid`, `i_wkind`, `i_wodd`, `i_wok`, `i_walarm`, `i_wdata`, `i_ptype` | in | 1, 2, 1, 1, 1, 16, 2 | clock | INPUT's words from the receive port ([`crate::line::word_rx`]: `i_wodd` is `o_slot`'s bit 0, an RTX data word) |
 // | `o_slot` | out | 12 | clock | slot of the word passing |
+// | `o_rtx_own` | out | 1 | clock | the RTX request passing names the home slot (from its good index word to the next index word) |
 // | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 // | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 // | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
@@ -899,7 +951,7 @@ endmodule // merkur_slave__dark
 //
 // (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
-module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,o_slot,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
+module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
     // Module arguments
     input wire  clock;
@@ -922,7 +974,16 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     input wire  [1:0] i_slot_cfg;
     input wire  [15:0] i_slot_data;
     input wire  i_slot_alive;
+    input wire  i_armed;
+    input wire  i_wvalid;
+    input wire  [1:0] i_wkind;
+    input wire  i_wodd;
+    input wire  i_wok;
+    input wire  i_walarm;
+    input wire  [15:0] i_wdata;
+    input wire  [1:0] i_ptype;
     output reg  [11:0] o_slot;
+    output reg  o_rtx_own;
     output reg  o_regen;
     output reg  o_alarm_sent;
     output reg  [3:0] o_sent_reason;
@@ -987,6 +1048,18 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     reg  dead_q;
     reg  [2:0] action_d;
     reg  [2:0] action_q;
+    reg  rtx_d;
+    reg  rtx_q;
+    reg  [11:0] idx_d;
+    reg  [11:0] idx_q;
+    reg  idx_ok_d;
+    reg  idx_ok_q;
+    reg  framed_d;
+    reg  framed_q;
+    reg  rtx_wrote_d;
+    reg  rtx_wrote_q;
+    reg  [15:0] h_data_d;
+    reg  [15:0] h_data_q;
     reg  in_pa_d;
     reg  in_pa_q;
     reg  in_pb_d;
@@ -1062,6 +1135,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     reg  [3:0] diff;
     reg  home_c;
     reg  own_c;
+    reg  rtx_own_c;
+    reg  alive_now;
     reg  send_c;
     reg  [15:0] fresh_data;
     reg  fresh_alive;
@@ -1112,6 +1187,12 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         slot_d = slot_q;
         dead_d = dead_q;
         action_d = action_q;
+        rtx_d = rtx_q;
+        idx_d = idx_q;
+        idx_ok_d = idx_ok_q;
+        framed_d = framed_q;
+        rtx_wrote_d = rtx_wrote_q;
+        h_data_d = h_data_q;
         d_a_d = d_a_q;
         d_b_d = d_b_q;
         carry_d = carry_q;
@@ -1222,11 +1303,13 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         end
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
-        home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~dead_q & ~fs_r_q;
+        home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~rtx_q & ~dead_q & ~fs_r_q;
+        rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & (idx_q == i_address) & ~i_master & ~dead_q & ~fs_r_q;
+        alive_now = toggle_q ^ (rtx_q & framed_q);
         send_c = home_c & i_alarm_req & ~prev_alarm_q & (~i_master | (i_slot_cfg != 2'h0));
         own_c = home_c;
         if (i_master) begin
-            own_c = (wcount_q == 2'h2) & (i_slot_cfg != 2'h0) & ((i_slot_cfg != 2'h3) | send_c) & ~dead_q & ~fs_r_q;
+            own_c = (wcount_q == 2'h2) & ~rtx_q & (i_slot_cfg != 2'h0) & ((i_slot_cfg != 2'h3) | send_c) & ~dead_q & ~fs_r_q;
         end
         pre_home_d = home_c;
         pre_own_d = own_c;
@@ -1237,7 +1320,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 if (wcount_q == 2'h0) begin
                     act_c = 3'h1;
                 end
-                if (wcount_q == 2'h1) begin
+                if ((wcount_q == 2'h1) & ~rtx_q) begin
                     act_c = 3'h2;
                 end
             end
@@ -1261,6 +1344,14 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                     end
                 end
             end
+            if (rtx_own_c) begin
+                if (~i_actuator & i_armed) begin
+                    act_c = 3'h3;
+                end
+                if (i_actuator & dec_data & (~dec_nib[3] | ext)) begin
+                    act_c = 3'h4;
+                end
+            end
         end
         act_now = g_act_q;
         fresh_alive = toggle_q;
@@ -1272,6 +1363,12 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             fresh_data = i_slot_data;
             if (i_slot_cfg == 2'h2) begin
                 fresh_alive = ~i_slot_alive;
+            end
+        end
+        if (rtx_q) begin
+            fresh_alive = alive_now;
+            if (framed_q) begin
+                fresh_data = h_data_q;
             end
         end
         fresh_rn = 4'h0;
@@ -1375,7 +1472,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             end
             if ((act_now == 3'h4) & (gidx_q == 3'h0)) begin
                 nib_out = nib & 4'h3;
-                if (toggle_q) begin
+                if (alive_now) begin
                     nib_out = nib_out | 4'h4;
                 end
             end
@@ -1503,6 +1600,9 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 slot_d = 12'h0;
                 dead_d = 1'b0;
                 idles_d = 2'h0;
+                rtx_d = 1'b0;
+                idx_ok_d = 1'b0;
+                rtx_wrote_d = 1'b0;
             end
         end
         c_pend_d = 1'b0;
@@ -1531,7 +1631,11 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 action_d = act_now;
                 carry_d = 1'b0;
                 regen_d = pre_own_q & i_master & (i_slot_cfg == 2'h2) & (act_now == 3'h3);
+                if ((act_now >= 3'h3) & rtx_q) begin
+                    rtx_wrote_d = 1'b1;
+                end
                 if (pre_home_q) begin
+                    h_data_d = i_sensor_data;
                     prev_alarm_d = f_alarm_q;
                     sent_d = f_alarm_q;
                     sent_reason_d = f_reason_q;
@@ -1548,11 +1652,12 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 gidx_d = 3'h0;
                 if (wcount_q == 2'h2) begin
                     slot_d = slot_q + 12'h1;
-                    if (slot_q == i_slots_m1) begin
+                    if ((slot_q == i_slots_m1) & ~rtx_q) begin
                         inpkt_d = 1'b0;
                         if (~dead_q) begin
                             done_d = 1'b1;
                             toggle_d = ~toggle_q;
+                            framed_d = 1'b1;
                         end
                     end
                 end
@@ -1603,15 +1708,31 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         if (cut) begin
             inpkt_d = 1'b0;
             idles_d = 2'h0;
-            if (inpkt_q & (wcount_q == 2'h2) & ~dead_q) begin
+            if (inpkt_q & (wcount_q == 2'h2) & ~dead_q & ~rtx_q) begin
                 done_d = 1'b1;
                 toggle_d = ~toggle_q;
+                framed_d = 1'b1;
             end
+            if (inpkt_q & rtx_q & rtx_wrote_q & ~framed_q) begin
+                toggle_d = ~toggle_q;
+                framed_d = 1'b1;
+            end
+        end
+        if (i_wvalid & (i_wkind == 2'h0)) begin
+            rtx_d = i_wok & (i_ptype == 2'h3);
+            if (~(i_wok & (i_ptype == 2'h3))) begin
+                framed_d = 1'b0;
+            end
+        end
+        if (i_wvalid & (i_wkind == 2'h3) & ~i_wodd) begin
+            idx_d = i_wdata[(0)+:(12)];
+            idx_ok_d = i_wok & ~i_walarm & (i_wdata[(12)+:(4)] == 4'h0) & (i_wdata[(0)+:(12)] <= i_slots_m1);
         end
         if (i_hdr_bad) begin
             dead_d = 1'b1;
         end
         o_slot = slot_q;
+        o_rtx_own = idx_ok_q & (idx_q == i_address);
         o_regen = regen_q;
         o_alarm_sent = sent_q;
         o_sent_reason = sent_reason_q;
@@ -1672,6 +1793,18 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     always @(posedge clock) dead_q <= dead_d;
     initial action_q = 3'h0;
     always @(posedge clock) action_q <= action_d;
+    initial rtx_q = 1'h0;
+    always @(posedge clock) rtx_q <= rtx_d;
+    initial idx_q = 12'h0;
+    always @(posedge clock) idx_q <= idx_d;
+    initial idx_ok_q = 1'h0;
+    always @(posedge clock) idx_ok_q <= idx_ok_d;
+    initial framed_q = 1'h0;
+    always @(posedge clock) framed_q <= framed_d;
+    initial rtx_wrote_q = 1'h0;
+    always @(posedge clock) rtx_wrote_q <= rtx_wrote_d;
+    initial h_data_q = 16'h0;
+    always @(posedge clock) h_data_q <= h_data_d;
     initial in_pa_q = 1'h0;
     always @(posedge clock) in_pa_q <= in_pa_d;
     initial in_pb_q = 1'h0;
@@ -3225,7 +3358,8 @@ endmodule // merkur_slave__rx_bsr__mon__framer
 // Purpose: the receive half of the paper's slot shift register. It collects
 // the code groups of a packet (from [`crate::line::framer_rx`]) into words,
 // decodes them (4B/5B), checks both odd parities, counts words into header
-// words and slots, checks the header (type, slot count), compares the slot
+// words and slots (or a retransmission packet's request words, protocol
+// §8), checks the header (type, slot count), compares the slot
 // number with the node's address (DIP switches → `i_address`) and tells the
 // framer when the packet ends: after its last word, or at the third idle
 // group in a row (a packet cut short upstream: the word in progress and the
@@ -3246,8 +3380,8 @@ endmodule // merkur_slave__rx_bsr__mon__framer
 // | `i_address` | in | 12 | static | node address (home slot) |
 // | `o_end` | out | 1 | clock | packet over (to the framer's `i_end`) |
 // | `o_wvalid` | out | 1 | clock | a word is complete |
-// | `o_kind` | out | 2 | clock | 0 H0, 1 H1, 2 slot |
-// | `o_slot` | out | 12 | clock | slot number (when `o_kind` = 2) |
+// | `o_kind` | out | 2 | clock | 0 H0, 1 H1, 2 slot, 3 an RTX's request word (after a good RTX head: H1 = NOT H0) |
+// | `o_slot` | out | 12 | clock | slot number (`o_kind` = 2); the request word's number (`o_kind` = 3: even an index word, odd a data word) |
 // | `o_data` | out | 16 | clock | data bits |
 // | `o_alive`, `o_alarm` | out | 1 | clock | flag bits |
 // | `o_reason` | out | 4 | clock | reason nibble (ext only, else 0) |
@@ -3257,7 +3391,7 @@ endmodule // merkur_slave__rx_bsr__mon__framer
 // | `o_marked` | out | 1 | clock | bad, its last group T: a forwarder marked it (damaged on an earlier fibre, protocol §4) |
 // | `o_own` | out | 1 | clock | slot word of `i_address` |
 // | `o_hdr_bad` | out | 1 | clock | DATA header rejected; packet dropped |
-// | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST) |
+// | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST, 11 RTX) |
 //
 // Latency: outputs are registered, one clock after the word's last group;
 // the word's fields (`o_kind` … `o_ptype`) are the decoder's own registers,
@@ -3553,12 +3687,17 @@ module merkur_slave__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_s
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
+                else if ((ptype_q == 2'h3) & compl_r_q) begin
+                    wcount_d = 2'h3;
+                    slot_d = 12'h0;
+                    adv_d = 1'b0;
+                end
                 else if (ptype_q != 2'h0) begin
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
             end
-            else if (slot_q == i_slots_m1) begin
+            else if ((kind_r_q == 2'h2) & (slot_q == i_slots_m1)) begin
                 end_r_d = 1'b1;
                 active_d = 1'b0;
             end
@@ -4762,12 +4901,17 @@ module merkur_slave__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_sl
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
+                else if ((ptype_q == 2'h3) & compl_r_q) begin
+                    wcount_d = 2'h3;
+                    slot_d = 12'h0;
+                    adv_d = 1'b0;
+                end
                 else if (ptype_q != 2'h0) begin
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
             end
-            else if (slot_q == i_slots_m1) begin
+            else if ((kind_r_q == 2'h2) & (slot_q == i_slots_m1)) begin
                 end_r_d = 1'b1;
                 active_d = 1'b0;
             end

@@ -7,7 +7,7 @@ use merkur_model::line::{
     lead_of, mark_code_bits, push_group, void_code_bits, word_code_bits, Lead, Word, CODE_I,
     CODE_J, CODE_K,
 };
-use merkur_model::ring::{Frame, HeaderRx, Slot};
+use merkur_model::ring::{rtx_head, Frame, HeaderRx, Slot};
 
 /// Code bits of a bad word whose first group shows `lead` (the model keeps
 /// only that of a bad word): a word with that first group and an error in
@@ -56,15 +56,33 @@ pub fn frame_code(code: &mut Vec<u8>, f: &Frame, slots: usize, ext: bool, rng: &
     };
     code.extend(word_code_bits(&h.h0(slots), ext));
     code.extend(word_code_bits(&h.h1(), ext));
-    for w in &f.words {
+    slot_code(code, &f.words, ext, rng);
+}
+
+/// Appends the code bits of slot words (bad ones rebuilt by [`bad_word`]).
+fn slot_code(code: &mut Vec<u8>, words: &[Slot], ext: bool, rng: &mut Rng) {
+    for w in words {
         match w {
             Slot::Data(d) => code.extend(word_code_bits(d, ext)),
             Slot::Void => code.extend(void_code_bits(ext)),
             Slot::Bad(l) => code.extend(bad_word(*l, ext, rng)),
             Slot::Marked(l) => code.extend(mark_code_bits(&bad_word(*l, ext, rng))),
-            Slot::Missing => panic!("frame_code needs a complete frame"),
+            Slot::Missing => panic!("stimulus needs complete packets"),
         }
     }
+}
+
+/// Appends the code bits of a retransmission packet that repairs the frame
+/// of cycle `cyc` (protocol §8: J K, the head of
+/// [`merkur_model::ring::rtx_head`], the request words as the model has
+/// them on a fibre, [`merkur_model::ring::RtxOnFibre`]).
+pub fn rtx_code(code: &mut Vec<u8>, cyc: u32, words: &[Slot], ext: bool, rng: &mut Rng) {
+    push_group(code, CODE_J);
+    push_group(code, CODE_K);
+    for w in rtx_head(cyc) {
+        code.extend(word_code_bits(&w, ext));
+    }
+    slot_code(code, words, ext, rng);
 }
 
 /// Appends one TST packet (protocol §5) and its idle group: 65 bit times

@@ -8,11 +8,13 @@
 
 use merkur_model::config::{self, Config};
 use merkur_model::line::{nrzi_encode, push_group, CODE_I};
-use merkur_model::ring::{self, sensor_value, Carry, CycleRecord, EventKind, HeaderRx, Slot};
+use merkur_model::ring::{
+    self, rtx_head, sensor_value, Carry, CycleRecord, EventKind, HeaderRx, RtxOnFibre, Slot,
+};
 use merkur_model::scenario::Kind;
 use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::{emit::verilog::block_verilog, line::monitor::Monitor, node::fwd::Fwd};
-use merkur_sim::stim::{frame_code, seen, PacketReader, Seen};
+use merkur_sim::stim::{frame_code, rtx_code, seen, PacketReader, Seen};
 use merkur_sim::{line_samples, pair_to_samples, repo_root, sample_words, verilator::Model, Rng};
 
 fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64) {
@@ -22,29 +24,55 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
     let mut code = vec![];
     (0..8).for_each(|_| push_group(&mut code, CODE_I));
     let mut cycles = vec![];
+    // Packets expected on Pk: (cycle, what, (header words, slot words)
+    // unless the model's Pk was hit itself).
+    let mut expect = vec![];
     for r in recs {
         let (Carry::Data(fi), Carry::Data(fo)) = (&r.fibres[inp], &r.fibres[k]) else {
             continue;
         };
-        // The model's Pk already carries errors injected on Pk itself.
+        // The model's Pk already carries errors injected on Pk itself: the
+        // cycle's packets go through (the node's Alive toggles) unchecked.
         let hit_out = cfg.faults.iter().any(|(c, f)| {
             *c == r.cycle
                 && matches!(f, config::Fault::Flip { fibre: config::Fibre::P(x), .. } if *x == k)
         });
-        if hit_out {
-            continue;
-        }
         if fi.hdr != fo.hdr && !matches!(fi.hdr, HeaderRx::Ok(_))
             || fi.words.contains(&Slot::Missing)
         {
             continue;
         }
         if !matches!(fi.hdr, HeaderRx::Ok(_)) {
+            // A frame the node misses is not fed (this stimulus has no
+            // damaged headers). With retransmission the node's Alive then
+            // depends on the cycle's RTX (protocol §8: it toggles when it
+            // fills a request): the check ends here.
+            if cfg.critical.contains(&true) {
+                break;
+            }
             continue;
         }
         let start = code.len();
         frame_code(&mut code, fi, cfg.slots, cfg.ext, &mut rng);
         cycles.push((r.cycle, start, fo.clone()));
+        let want = match fo.hdr {
+            HeaderRx::Ok(h) if !hit_out => Some((
+                vec![h.h0(cfg.slots).data, h.h1().data],
+                fo.words.iter().map(seen).collect::<Vec<Seen>>(),
+            )),
+            _ => None,
+        };
+        expect.push((r.cycle, "frame", want));
+        // The cycle's retransmission packet (protocol §8), 20 bit times
+        // after the frame, as it arrives on P(k-1) and leaves on Pk.
+        if let Some((ri, ro)) = rtx_through(r, inp, k) {
+            (0..4).for_each(|_| push_group(&mut code, CODE_I));
+            rtx_code(&mut code, r.cycle, &ri.words, cfg.ext, &mut rng);
+            let head = rtx_head(r.cycle).map(|w| w.data).to_vec();
+            let want = (head, ro.words.iter().map(seen).collect());
+            expect.push((r.cycle, "retransmission", (!hit_out).then_some(want)));
+        }
+        (0..4).for_each(|_| push_group(&mut code, CODE_I));
         while code.len() < start + cfg.period as usize || code.len() % 5 != 0 {
             push_group(&mut code, CODE_I);
         }
@@ -95,6 +123,21 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         p(&mi, "o_hdr_bad"),
     );
     let (oclk, osmp) = (p(&mo, "clock"), p(&mo, "i_samples"));
+    // The input port's words, as a node wires them to its forwarder (for
+    // the retransmission packet's requests; the node is armed).
+    f.set(p(&f, "i_armed"), 1);
+    let bus: Vec<(usize, usize, bool)> = [
+        ("i_wvalid", "o_wvalid", false),
+        ("i_wkind", "o_kind", false),
+        ("i_wodd", "o_slot", true),
+        ("i_wok", "o_ok", false),
+        ("i_walarm", "o_alarm", false),
+        ("i_wdata", "o_data", false),
+        ("i_ptype", "o_ptype", false),
+    ]
+    .iter()
+    .map(|&(a, b, bit0)| (p(&f, a), p(&mi, b), bit0))
+    .collect();
     let mut reader = PacketReader::new(&mo);
     let slot = cfg.nodes[k].address;
     let mut ci = 0usize;
@@ -134,6 +177,10 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         f.set(fl, mi.get(ilv));
         f.set(fph, mi.get(iph));
         f.set(fhb, mi.get(ihb));
+        for &(fi, mi_port, bit0) in &bus {
+            let v = mi.get(mi_port);
+            f.set(fi, if bit0 { v & 1 } else { v });
+        }
         f.tick(fclk);
         mo.set(osmp, pair_to_samples(f.get(fline)));
         mo.tick(oclk);
@@ -144,19 +191,24 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         "node {k} of {n} ({}), {ppm} ppm, seed {seed} (MERKUR_SEED)",
         cfg.nodes[k].kind.name()
     );
-    assert_eq!(got.len(), cycles.len(), "{ctx}: frames out");
-    for ((c, _, fo), (hdr, slots)) in cycles.iter().zip(&got) {
-        let HeaderRx::Ok(h) = fo.hdr else {
-            unreachable!()
+    assert_eq!(got.len(), expect.len(), "{ctx}: packets out");
+    for ((c, what, want), (hdr, slots)) in expect.iter().zip(&got) {
+        let Some((head, want)) = want else {
+            continue;
         };
-        assert_eq!(
-            hdr,
-            &vec![h.h0(cfg.slots).data, h.h1().data],
-            "{ctx}: cycle {c}: header out"
-        );
-        let want: Vec<Seen> = fo.words.iter().map(seen).collect();
-        assert_eq!(slots, &want, "{ctx}: cycle {c}: slots out");
+        assert_eq!(hdr, head, "{ctx}: cycle {c}: {what}: header out");
+        assert_eq!(slots, want, "{ctx}: cycle {c}: {what}: words out");
     }
+}
+
+/// The retransmission packet of cycle `r` as the model has it arriving on
+/// fibre `inp` and, forwarded by the node between them, on fibre `out`:
+/// when its head arrives intact and complete.
+fn rtx_through(r: &CycleRecord, inp: usize, out: usize) -> Option<(&RtxOnFibre, &RtxOnFibre)> {
+    let x = r.rtx.as_ref()?;
+    let i = x.fibres.windows(2).position(|w| w == [inp, out])?;
+    let (ri, ro) = (&x.on[i], &x.on[i + 1]);
+    (ri.head_ok && !ri.words.contains(&Slot::Missing)).then_some((ri, ro))
 }
 
 fn run(name: &str, nodes: &[usize], ppm: f64) {
@@ -172,6 +224,15 @@ fn run(name: &str, nodes: &[usize], ppm: f64) {
 #[test]
 fn sensors_and_actuators_forward_like_the_model() {
     run("ring8.toml", &[1, 2, 5, 7], 1000.0);
+}
+
+#[test]
+fn retransmission_requests_forward_like_the_model() {
+    // Sensors 1, 2 and 4 fill their critical slots' requests (a copy hit
+    // before the writer is written over); actuator 7 puts its Alive into
+    // the copy master 3 filled; the others pass the packet on, marking
+    // the words that arrive bad.
+    run("ring8_rtx.toml", &[1, 2, 4, 5, 6, 7], -700.0);
 }
 
 #[test]

@@ -101,6 +101,17 @@ impl Slot {
     }
 }
 
+/// The two header words of the retransmission packet that repairs the
+/// frame of cycle `cyc` (protocol §5, §8): H0 = `{11, 11, CYC[11:0]}`,
+/// H1 = NOT H0.
+pub fn rtx_head(cyc: u32) -> [Word; 2] {
+    let h0 = 0xf000 | (cyc as u16 & 0xfff);
+    [h0, !h0].map(|data| Word {
+        data,
+        ..Word::default()
+    })
+}
+
 /// Decoded header fields (docs/protocol.md §5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Header {

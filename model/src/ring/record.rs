@@ -83,6 +83,18 @@ pub struct RtxRecord {
     /// Nodes whose INPUT it reached with its start delimiter and header
     /// intact (a packet for §12's rule 4).
     pub jk: Vec<usize>,
+    /// Per fibre of `fibres`: the packet as it arrives at the fibre's far
+    /// end (errors on the fibre included; not in the trace).
+    pub on: Vec<RtxOnFibre>,
+}
+
+/// The retransmission packet on one fibre (protocol §8).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RtxOnFibre {
+    /// Its head (J K, H0, H1) arrives intact.
+    pub head_ok: bool,
+    /// Index and data words, pair by pair.
+    pub words: Vec<Slot>,
 }
 
 /// Recovery windows the spec promises (docs/protocol.md §13): for each

@@ -51,6 +51,7 @@ impl Ring {
             back: vec![false; k],
             fibres: vec![],
             jk: vec![],
+            on: vec![],
         };
         if k == 0 {
             return Some(rec);
@@ -92,6 +93,10 @@ impl Ring {
                 }
             }
             rec.fibres.push(self.fibre_index(fib));
+            rec.on.push(RtxOnFibre {
+                head_ok: p.head_ok,
+                words: p.words.clone(),
+            });
             let (r, port) = self.dst(fib);
             if !self.nodes[r].up || f.cut_node.iter().any(|(x, _)| *x == r) {
                 break;
@@ -201,8 +206,8 @@ impl Ring {
         }
     }
 
-    /// Node `k` fills the data word of every request for a slot it writes
-    /// that arrives VOID: the value it wrote into this cycle's frame (or
+    /// Node `k` fills the data word of every request for a slot it writes,
+    /// whatever it arrives as (VOID, or damaged on the way): the value it wrote into this cycle's frame (or
     /// would have, had it not missed it), with the Alive bit it wrote
     /// there (an actuator slot: the actuator's, as last seen), never an
     /// alarm (§8). Returns whether it filled one.
@@ -213,9 +218,6 @@ impl Ring {
             let Some(s) = self.rtx_index(&p.words[2 * i]) else {
                 continue;
             };
-            if p.words[2 * i + 1] != Slot::Void {
-                continue;
-            }
             let nd = &self.nodes[k];
             let (data, alive) = match (self.cfg.nodes[k].kind, self.cfg.slot_kind[s]) {
                 (Kind::Sensor, SlotKind::Sensor) if self.cfg.nodes[k].address == s => {

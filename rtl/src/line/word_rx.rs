@@ -3,7 +3,8 @@
 //! Purpose: the receive half of the paper's slot shift register. It collects
 //! the code groups of a packet (from [`crate::line::framer_rx`]) into words,
 //! decodes them (4B/5B), checks both odd parities, counts words into header
-//! words and slots, checks the header (type, slot count), compares the slot
+//! words and slots (or a retransmission packet's request words, protocol
+//! §8), checks the header (type, slot count), compares the slot
 //! number with the node's address (DIP switches → `i_address`) and tells the
 //! framer when the packet ends: after its last word, or at the third idle
 //! group in a row (a packet cut short upstream: the word in progress and the
@@ -24,8 +25,8 @@
 //! | `i_address` | in | 12 | static | node address (home slot) |
 //! | `o_end` | out | 1 | clock | packet over (to the framer's `i_end`) |
 //! | `o_wvalid` | out | 1 | clock | a word is complete |
-//! | `o_kind` | out | 2 | clock | 0 H0, 1 H1, 2 slot |
-//! | `o_slot` | out | 12 | clock | slot number (when `o_kind` = 2) |
+//! | `o_kind` | out | 2 | clock | 0 H0, 1 H1, 2 slot, 3 an RTX's request word (after a good RTX head: H1 = NOT H0) |
+//! | `o_slot` | out | 12 | clock | slot number (`o_kind` = 2); the request word's number (`o_kind` = 3: even an index word, odd a data word) |
 //! | `o_data` | out | 16 | clock | data bits |
 //! | `o_alive`, `o_alarm` | out | 1 | clock | flag bits |
 //! | `o_reason` | out | 4 | clock | reason nibble (ext only, else 0) |
@@ -35,7 +36,7 @@
 //! | `o_marked` | out | 1 | clock | bad, its last group T: a forwarder marked it (damaged on an earlier fibre, protocol §4) |
 //! | `o_own` | out | 1 | clock | slot word of `i_address` |
 //! | `o_hdr_bad` | out | 1 | clock | DATA header rejected; packet dropped |
-//! | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST) |
+//! | `o_ptype` | out | 2 | clock | packet type from a good H0 (00 DATA, 01 SEC, 10 TST, 11 RTX) |
 //!
 //! Latency: outputs are registered, one clock after the word's last group;
 //! the word's fields (`o_kind` … `o_ptype`) are the decoder's own registers,
@@ -79,7 +80,7 @@ pub struct WordRx {
     pub o_end: Signal<Out, Bit>,
     /// Word complete.
     pub o_wvalid: Signal<Out, Bit>,
-    /// 0 H0, 1 H1, 2 slot.
+    /// 0 H0, 1 H1, 2 slot, 3 RTX request word.
     pub o_kind: Signal<Out, Bits<2>>,
     /// Slot number.
     pub o_slot: Signal<Out, Bits<12>>,
@@ -403,16 +404,22 @@ impl Logic for WordRx {
                     self.active.d.next = false;
                 }
             } else if self.kind_r.q.val() == 1 {
-                // H1; SEC and TST packets end here.
+                // H1; SEC and TST packets end here, and an RTX whose H1 is
+                // not NOT H0. An RTX goes on with its request words
+                // (kind 3, numbered from 0 in `o_slot`) until the idles.
                 if !self.ok_r.q.val() | self.alarm0.q.val() {
                     self.hdr_bad_r.d.next = self.ptype.q.val() == 0;
                     self.end_r.d.next = true;
                     self.active.d.next = false;
+                } else if (self.ptype.q.val() == 3) & self.compl_r.q.val() {
+                    self.wcount.d.next = 3.into();
+                    self.slot.d.next = 0.into();
+                    self.adv.d.next = false;
                 } else if self.ptype.q.val() != 0 {
                     self.end_r.d.next = true;
                     self.active.d.next = false;
                 }
-            } else if self.slot.q.val() == self.i_slots_m1.val() {
+            } else if (self.kind_r.q.val() == 2) & (self.slot.q.val() == self.i_slots_m1.val()) {
                 self.end_r.d.next = true;
                 self.active.d.next = false;
             }

@@ -35,6 +35,21 @@
 //! The output bits go through a [`Retime`] buffer and out on the node's own
 //! clock (DDR pair), so the receiver's sampling error is not passed on.
 //!
+//! Retransmission on demand (protocol §8): a good H0 of type 11 on the
+//! input port's word bus (`i_wvalid` …) makes the packet an RTX. Its H0 is
+//! treated as a frame's (FS and RWC are already 1 there, so nothing
+//! changes), H1 passes unchanged, and the request words pass on, marked
+//! when they arrive bad; the packet ends at the third idle group. A data
+//! word whose good index word named the home slot is written: a
+//! **sensor** (armed, not in failsafe) writes `{the value it wrote into
+//! this cycle's frame, its Alive there}` over whatever the word brings; an
+//! **actuator** puts that Alive into a data word (its master's copy). A
+//! node that wrote into the RTX without having processed the cycle's
+//! frame (the last header before it was not an RTX's and no frame ended
+//! since) toggles its Alive flip-flop at the RTX's end, as the frame
+//! would have. A master's requests (`i_master`) are not handled yet: its
+//! forwarder passes them on.
+//!
 //! Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
 //! In the extended-alarm variant (protocol §6) every word has a sixth group,
 //! N1 = `{SEQ, REASON[2:0]}`, after the first: the forwarder passes it on
@@ -59,7 +74,10 @@
 //! | `i_alarm_req`, `i_alarm_reason`, `i_alarm_seq` | in | 1, 4, 1 | clock | alarm to send, its reason and SEQ (basic: `D[15:12]`, `D[11]`; extended: N1) |
 //! | `i_master` | in | 1 | static | master mode: per-slot writes from `i_slot_cfg` |
 //! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
+//! | `i_armed` | in | 1 | clock | the node has processed a good header (it may fill RTX requests) |
+//! | `i_wvalid`, `i_wkind`, `i_wodd`, `i_wok`, `i_walarm`, `i_wdata`, `i_ptype` | in | 1, 2, 1, 1, 1, 16, 2 | clock | INPUT's words from the receive port ([`crate::line::word_rx`]: `i_wodd` is `o_slot`'s bit 0, an RTX data word) |
 //! | `o_slot` | out | 12 | clock | slot of the word passing |
+//! | `o_rtx_own` | out | 1 | clock | the RTX request passing names the home slot (from its good index word to the next index word) |
 //! | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 //! | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 //! | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
@@ -147,8 +165,29 @@ pub struct Fwd {
     pub i_slot_data: Signal<In, Bits<16>>,
     /// Last actuator Alive seen in slot `o_slot` (ACT slots).
     pub i_slot_alive: Signal<In, Bit>,
+    /// The node is armed (has processed a good header): it may fill
+    /// retransmission requests (protocol §8).
+    pub i_armed: Signal<In, Bit>,
+    /// INPUT's words, from the receive port ([`crate::line::word_rx`]): a
+    /// word is complete.
+    pub i_wvalid: Signal<In, Bit>,
+    /// Its kind (0 H0, 1 H1, 2 slot, 3 RTX request word).
+    pub i_wkind: Signal<In, Bits<2>>,
+    /// An RTX request word is a data word (odd number), not an index word.
+    pub i_wodd: Signal<In, Bit>,
+    /// The word is good.
+    pub i_wok: Signal<In, Bit>,
+    /// Its ALARM bit.
+    pub i_walarm: Signal<In, Bit>,
+    /// Its data.
+    pub i_wdata: Signal<In, Bits<16>>,
+    /// The packet's type (from a good H0).
+    pub i_ptype: Signal<In, Bits<2>>,
     /// Slot number of the word now passing (for the memory look-ups).
     pub o_slot: Signal<Out, Bits<12>>,
+    /// The RTX request being passed names the home slot (from its good
+    /// index word until the next index word).
+    pub o_rtx_own: Signal<Out, Bit>,
     /// A VOID in an ACT slot was regenerated (the Alive flips).
     pub o_regen: Signal<Out, Bit>,
     /// Alarm sent.
@@ -196,6 +235,17 @@ pub struct Fwd {
     slot: DFF<Bits<12>>,
     dead: DFF<Bit>,
     action: DFF<Bits<3>>,
+    // Retransmission on demand (protocol §8): the packet is an RTX; the
+    // slot its last index word named, and whether that word was good and
+    // named a slot; a frame was processed since the last header that was
+    // not an RTX's (the node toggled its Alive for this cycle); the node
+    // wrote into this RTX; its home slot's sensor value in the last frame.
+    rtx: DFF<Bit>,
+    idx: DFF<Bits<12>>,
+    idx_ok: DFF<Bit>,
+    framed: DFF<Bit>,
+    rtx_wrote: DFF<Bit>,
+    h_data: DFF<Bits<16>>,
     // The incoming word so far (for the mark): parities, all data, all S.
     in_pa: DFF<Bit>,
     in_pb: DFF<Bit>,
@@ -245,6 +295,8 @@ pub struct Fwd {
     diff: Signal<Local, Bits<4>>,
     home_c: Signal<Local, Bit>,
     own_c: Signal<Local, Bit>,
+    rtx_own_c: Signal<Local, Bit>,
+    alive_now: Signal<Local, Bit>,
     send_c: Signal<Local, Bit>,
     fresh_data: Signal<Local, Bits<16>>,
     fresh_alive: Signal<Local, Bit>,
@@ -291,6 +343,15 @@ impl Fwd {
             i_slot_cfg: Default::default(),
             i_slot_data: Default::default(),
             i_slot_alive: Default::default(),
+            i_armed: Default::default(),
+            i_wvalid: Default::default(),
+            i_wkind: Default::default(),
+            i_wodd: Default::default(),
+            i_wok: Default::default(),
+            i_walarm: Default::default(),
+            i_wdata: Default::default(),
+            i_ptype: Default::default(),
+            o_rtx_own: Default::default(),
             o_slot: Default::default(),
             o_regen: Default::default(),
             o_alarm_sent: Default::default(),
@@ -327,6 +388,12 @@ impl Fwd {
             slot: Default::default(),
             dead: Default::default(),
             action: Default::default(),
+            rtx: Default::default(),
+            idx: Default::default(),
+            idx_ok: Default::default(),
+            framed: Default::default(),
+            rtx_wrote: Default::default(),
+            h_data: Default::default(),
             in_pa: Default::default(),
             in_pb: Default::default(),
             in_data: Default::default(),
@@ -373,6 +440,8 @@ impl Fwd {
             diff: Default::default(),
             home_c: Default::default(),
             own_c: Default::default(),
+            rtx_own_c: Default::default(),
+            alive_now: Default::default(),
             send_c: Default::default(),
             fresh_data: Default::default(),
             fresh_alive: Default::default(),
@@ -422,6 +491,12 @@ impl Logic for Fwd {
             slot,
             dead,
             action,
+            rtx,
+            idx,
+            idx_ok,
+            framed,
+            rtx_wrote,
+            h_data,
             d_a,
             d_b,
             carry,
@@ -548,8 +623,22 @@ impl Logic for Fwd {
         // reads registers): whether the next word is the node's.
         self.home_c.next = (self.wcount.q.val() == 2)
             & (self.slot.q.val() == self.i_address.val())
+            & !self.rtx.q.val()
             & !self.dead.q.val()
             & !self.fs_r.q.val();
+        // An RTX's data word whose index word named the home slot (a
+        // master's requests are not handled here yet).
+        self.rtx_own_c.next = self.rtx.q.val()
+            & (self.wcount.q.val() == 2)
+            & self.slot.q.val().get_bit(0)
+            & self.idx_ok.q.val()
+            & (self.idx.q.val() == self.i_address.val())
+            & !self.i_master.val()
+            & !self.dead.q.val()
+            & !self.fs_r.q.val();
+        // The Alive bit the node wrote in this cycle's frame: the
+        // flip-flop toggled at the frame's end when it processed it.
+        self.alive_now.next = self.toggle.q.val() ^ (self.rtx.q.val() & self.framed.q.val());
         // An alarm goes in the home slot when the node writes it (a master:
         // when its configuration lets it, `i_slot_cfg` not 0).
         self.send_c.next = self.home_c.val()
@@ -560,6 +649,7 @@ impl Logic for Fwd {
         if self.i_master.val() {
             // 3: a home slot without a value (protocol §12): only an alarm.
             self.own_c.next = (self.wcount.q.val() == 2)
+                & !self.rtx.q.val()
                 & (self.i_slot_cfg.val() != 0)
                 & ((self.i_slot_cfg.val() != 3) | self.send_c.val())
                 & !self.dead.q.val()
@@ -577,7 +667,7 @@ impl Logic for Fwd {
                 if self.wcount.q.val() == 0 {
                     self.act_c.next = 1.into();
                 }
-                if self.wcount.q.val() == 1 {
+                if (self.wcount.q.val() == 1) & !self.rtx.q.val() {
                     self.act_c.next = 2.into();
                 }
             }
@@ -609,6 +699,21 @@ impl Logic for Fwd {
                     }
                 }
             }
+            // An RTX request for the home slot (protocol §8): a sensor,
+            // armed, fills the data word with the word it wrote into the
+            // frame; an actuator puts its Alive into a data word (the copy
+            // its master filled).
+            if self.rtx_own_c.val() {
+                if !self.i_actuator.val() & self.i_armed.val() {
+                    self.act_c.next = 3.into();
+                }
+                if self.i_actuator.val()
+                    & self.dec_data.val()
+                    & (!self.dec_nib.val().get_bit(3) | self.ext.val())
+                {
+                    self.act_c.next = 4.into();
+                }
+            }
         }
         self.act_now.next = self.g_act.q.val();
         // The fresh word (own slot) and its parities (protocol §4): the f_*
@@ -623,6 +728,14 @@ impl Logic for Fwd {
             self.fresh_data.next = self.i_slot_data.val();
             if self.i_slot_cfg.val() == 2 {
                 self.fresh_alive.next = !self.i_slot_alive.val();
+            }
+        }
+        // An RTX fill: the frame's value again (a node that missed the
+        // frame: the value it would have written), with its Alive.
+        if self.rtx.q.val() {
+            self.fresh_alive.next = self.alive_now.val();
+            if self.framed.q.val() {
+                self.fresh_data.next = self.h_data.q.val();
             }
         }
         self.fresh_rn.next = 0.into();
@@ -763,7 +876,7 @@ impl Logic for Fwd {
             // basic variant) and, extended, the reason nibble too.
             if (self.act_now.val() == 4) & (self.gidx.q.val() == 0) {
                 self.nib_out.next = self.nib.val() & 3;
-                if self.toggle.q.val() {
+                if self.alive_now.val() {
                     self.nib_out.next = self.nib_out.val() | 4;
                 }
             }
@@ -927,6 +1040,9 @@ impl Logic for Fwd {
                 self.slot.d.next = 0.into();
                 self.dead.d.next = false;
                 self.idles.d.next = 0.into();
+                self.rtx.d.next = false;
+                self.idx_ok.d.next = false;
+                self.rtx_wrote.d.next = false;
             }
         }
         // Stage B: the group completed in the clock before (groups complete
@@ -973,7 +1089,11 @@ impl Logic for Fwd {
                     & self.i_master.val()
                     & (self.i_slot_cfg.val() == 2)
                     & (self.act_now.val() == 3);
+                if (self.act_now.val() >= 3) & self.rtx.q.val() {
+                    self.rtx_wrote.d.next = true;
+                }
                 if self.pre_home.q.val() {
+                    self.h_data.d.next = self.i_sensor_data.val();
                     self.prev_alarm.d.next = self.f_alarm.q.val();
                     self.sent.d.next = self.f_alarm.q.val();
                     self.sent_reason.d.next = self.f_reason.q.val();
@@ -990,11 +1110,12 @@ impl Logic for Fwd {
                 self.gidx.d.next = 0.into();
                 if self.wcount.q.val() == 2 {
                     self.slot.d.next = self.slot.q.val() + 1;
-                    if self.slot.q.val() == self.i_slots_m1.val() {
+                    if (self.slot.q.val() == self.i_slots_m1.val()) & !self.rtx.q.val() {
                         self.inpkt.d.next = false;
                         if !self.dead.q.val() {
                             self.done.d.next = true;
                             self.toggle.d.next = !self.toggle.q.val();
+                            self.framed.d.next = true;
                         }
                     }
                 } else {
@@ -1069,15 +1190,44 @@ impl Logic for Fwd {
         if self.cut.val() {
             self.inpkt.d.next = false;
             self.idles.d.next = 0.into();
-            if self.inpkt.q.val() & (self.wcount.q.val() == 2) & !self.dead.q.val() {
+            if self.inpkt.q.val()
+                & (self.wcount.q.val() == 2)
+                & !self.dead.q.val()
+                & !self.rtx.q.val()
+            {
                 self.done.d.next = true;
                 self.toggle.d.next = !self.toggle.q.val();
+                self.framed.d.next = true;
             }
+            // A node that missed the frame but wrote into the RTX toggles
+            // as if it had processed the frame (protocol §8).
+            if self.inpkt.q.val() & self.rtx.q.val() & self.rtx_wrote.q.val() & !self.framed.q.val()
+            {
+                self.toggle.d.next = !self.toggle.q.val();
+                self.framed.d.next = true;
+            }
+        }
+        // INPUT's words: a good H0 of type 11 makes the packet an RTX; any
+        // other H0 starts a new cycle's packets (no frame processed yet).
+        // An RTX's good index word names the slot of the next data word.
+        if self.i_wvalid.val() & (self.i_wkind.val() == 0) {
+            self.rtx.d.next = self.i_wok.val() & (self.i_ptype.val() == 3);
+            if !(self.i_wok.val() & (self.i_ptype.val() == 3)) {
+                self.framed.d.next = false;
+            }
+        }
+        if self.i_wvalid.val() & (self.i_wkind.val() == 3) & !self.i_wodd.val() {
+            self.idx.d.next = self.i_wdata.val().get_bits::<12>(0);
+            self.idx_ok.d.next = self.i_wok.val()
+                & !self.i_walarm.val()
+                & (self.i_wdata.val().get_bits::<4>(12) == 0)
+                & (self.i_wdata.val().get_bits::<12>(0) <= self.i_slots_m1.val());
         }
         if self.i_hdr_bad.val() {
             self.dead.d.next = true;
         }
         self.o_slot.next = self.slot.q.val();
+        self.o_rtx_own.next = self.idx_ok.q.val() & (self.idx.q.val() == self.i_address.val());
         self.o_regen.next = self.regen.q.val();
         self.o_alarm_sent.next = self.sent.q.val();
         self.o_sent_reason.next = self.sent_reason.q.val();

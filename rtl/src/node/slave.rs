@@ -14,6 +14,11 @@
 //! actuator's output register and the error counters. A [`crate::node::master`]
 //! is this block with `i_master` = 1 and a database beside it.
 //!
+//! Retransmission on demand (protocol §8): the forwarder fills a sensor's
+//! requests and puts an actuator's Alive into its copy; an actuator takes
+//! a good copy of its slot from an RTX into its output register (no Alive
+//! check), and an RTX's bad request words count in `o_perr`.
+//!
 //! Parameters: the word format ([`WordFormat`], protocol §4 or §6), for
 //! its receive ports, forwarder and TST generator; in the extended-alarm
 //! variant an alarm's SEQ is read back from the reason nibble and an
@@ -303,11 +308,21 @@ impl Logic for Slave {
         self.fwd.i_phase.next = self.rx_in.o_phase.val();
         // A rejected header, or a SEC/TST packet on INPUT (a wrapped node's
         // INPUT is a secondary fibre): passed on unchanged, not processed.
+        // An RTX (type 11) is processed: its requests (protocol §8).
         self.fwd.i_hdr_bad.next = self.rx_in.o_hdr_bad.val()
             | (self.rx_in.o_wvalid.val()
                 & (self.rx_in.o_kind.val() == 0)
                 & self.rx_in.o_ok.val()
-                & (self.rx_in.o_ptype.val() != 0));
+                & (self.rx_in.o_ptype.val() != 0)
+                & (self.rx_in.o_ptype.val() != 3));
+        self.fwd.i_armed.next = self.armed.q.val();
+        self.fwd.i_wvalid.next = self.rx_in.o_wvalid.val();
+        self.fwd.i_wkind.next = self.rx_in.o_kind.val();
+        self.fwd.i_wodd.next = self.rx_in.o_slot.val().get_bit(0);
+        self.fwd.i_wok.next = self.rx_in.o_ok.val();
+        self.fwd.i_walarm.next = self.rx_in.o_alarm.val();
+        self.fwd.i_wdata.next = self.rx_in.o_data.val();
+        self.fwd.i_ptype.next = self.rx_in.o_ptype.val();
         // A TST on INPUT (a wrapped neighbour's link test, before this node
         // has wrapped) is for this node only: from its H0 on the rest goes
         // out as idles, so the next node sees no TST (protocol §9).
@@ -483,10 +498,25 @@ impl Logic for Slave {
                 self.act_data.d.next = self.rx_in.o_data.val();
             }
         }
-        // Error counters (saturating): bad slot words; missed cycles, one
-        // per clock from the CYC gap.
+        // An RTX's copy of the actuator's slot (protocol §8): a good data
+        // word after a good index word that named it; no Alive check.
         if self.rx_in.o_wvalid.val()
-            & (self.rx_in.o_kind.val() == 2)
+            & (self.rx_in.o_kind.val() == 3)
+            & self.rx_in.o_slot.val().get_bit(0)
+            & self.rx_in.o_ok.val()
+            & !self.rx_in.o_alarm.val()
+            & self.fwd.o_rtx_own.val()
+            & self.i_actuator.val()
+            & !self.failsafe.q.val()
+        {
+            self.act_data.d.next = self.rx_in.o_data.val();
+        }
+        // Error counters (saturating): bad slot words (an RTX's request
+        // words too, outside failsafe); missed cycles, one per clock from
+        // the CYC gap.
+        if self.rx_in.o_wvalid.val()
+            & ((self.rx_in.o_kind.val() == 2)
+                | ((self.rx_in.o_kind.val() == 3) & !self.failsafe.q.val()))
             & !self.rx_in.o_ok.val()
             & !self.rx_in.o_void.val()
             & (self.perr.q.val() != 0xffff)

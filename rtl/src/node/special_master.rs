@@ -1368,7 +1368,16 @@ impl Logic for SpecialMaster {
             | (self.rx_in.o_wvalid.val()
                 & (self.rx_in.o_kind.val() == 0)
                 & self.rx_in.o_ok.val()
-                & (self.rx_in.o_ptype.val() != 0));
+                & (self.rx_in.o_ptype.val() != 0)
+                & (self.rx_in.o_ptype.val() != 3));
+        self.fwd.i_armed.next = self.armed.q.val();
+        self.fwd.i_wvalid.next = self.rx_in.o_wvalid.val();
+        self.fwd.i_wkind.next = self.rx_in.o_kind.val();
+        self.fwd.i_wodd.next = self.rx_in.o_slot.val().get_bit(0);
+        self.fwd.i_wok.next = self.rx_in.o_ok.val();
+        self.fwd.i_walarm.next = self.rx_in.o_alarm.val();
+        self.fwd.i_wdata.next = self.rx_in.o_data.val();
+        self.fwd.i_ptype.next = self.rx_in.o_ptype.val();
         if !self.rx_in.o_inpkt.val() {
             self.fwd_cut.d.next = false;
         }
