@@ -221,13 +221,26 @@ fn demo_explains_the_line_break() {
 
 #[test]
 fn sim_refuses_what_the_rtl_does_not_run_and_bad_wave_names() {
-    let o = merkur(&["sim", "tb-data/ring8_rtx.toml"]);
+    // A flip in a retransmission packet of a cycle that sends none: the
+    // model's flip does nothing, the RTL harness has no packet to hit.
+    let dir = std::env::temp_dir().join(format!("merkur-rtxflip-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scenario = dir.join("rtx_flip.toml");
+    let base = std::fs::read_to_string(root().join("tb-data/ring8_rtx.toml")).unwrap();
+    std::fs::write(
+        &scenario,
+        format!("{base}\n[[fault]]\nkind = \"flip\"\ncycle = 5\nfibre = \"P3\"\nword = \"rtx0\"\nbit = 4\n"),
+    )
+    .unwrap();
+    let o = merkur(&["sim", scenario.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
     let e = text(&o.stderr);
     assert!(
-        e.contains("frame.critical (slot 7)") && e.contains("not simulated in RTL"),
+        e.contains("not simulated in RTL: fault[11] (cycle 5, flip P3 rtx0 bit 4): fibre = P3")
+            && e.contains("retransmission packet does not travel it"),
         "{e}"
     );
+    let _ = std::fs::remove_dir_all(&dir);
     let o = merkur(&["sim", "tb-data/ring2.toml", "--wave", "/tmp/x.vcd"]);
     assert!(!o.status.success());
     let e = text(&o.stderr);
@@ -637,7 +650,7 @@ fn synth_refuses_a_ring_too_large_for_the_device() {
     let err = text(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("slots 2100: node 0 (special_master) needs at least 59 SB_RAM40_4K")
+        err.contains("slots 2100: node 0 (special_master) needs at least 60 SB_RAM40_4K")
             && err.contains("the iCE40-HX8K has 32; at most 2048 slots fit"),
         "{err}"
     );

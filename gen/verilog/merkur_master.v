@@ -119,6 +119,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
     wire  [3:0] node__o_reason;
     wire  node__o_ok;
     wire  node__o_hdr_bad;
+    wire  node__o_rtx;
     wire  [15:0] node__o_act_data;
     wire  [1:0] node__o_mode;
     wire  node__o_failsafe;
@@ -136,6 +137,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
     reg  mdb__i_alarm;
     reg  [3:0] mdb__i_reason;
     reg  mdb__i_ok;
+    reg  mdb__i_rtx;
     reg  mdb__i_hdr_bad;
     reg  [11:0] mdb__i_tx_slot;
     wire  [15:0] mdb__o_tx_data;
@@ -144,6 +146,9 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
     wire  mdb__o_s2;
     wire  [11:0] mdb__o_s2_slot;
     wire  mdb__o_s2_act;
+    wire  mdb__o_cfgw;
+    wire  [11:0] mdb__o_cfgw_slot;
+    wire  mdb__o_cfgw_crit;
     wire  mdb__o_s2_ok;
     wire  mdb__o_s2_alive;
     wire  mdb__o_s2_alarm;
@@ -197,6 +202,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         .o_reason(node__o_reason),
         .o_ok(node__o_ok),
         .o_hdr_bad(node__o_hdr_bad),
+        .o_rtx(node__o_rtx),
         .o_act_data(node__o_act_data),
         .o_mode(node__o_mode),
         .o_failsafe(node__o_failsafe),
@@ -224,6 +230,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         .i_alarm(mdb__i_alarm),
         .i_reason(mdb__i_reason),
         .i_ok(mdb__i_ok),
+        .i_rtx(mdb__i_rtx),
         .i_hdr_bad(mdb__i_hdr_bad),
         .i_tx_slot(mdb__i_tx_slot),
         .o_tx_data(mdb__o_tx_data),
@@ -232,6 +239,9 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         .o_s2(mdb__o_s2),
         .o_s2_slot(mdb__o_s2_slot),
         .o_s2_act(mdb__o_s2_act),
+        .o_cfgw(mdb__o_cfgw),
+        .o_cfgw_slot(mdb__o_cfgw_slot),
+        .o_cfgw_crit(mdb__o_cfgw_crit),
         .o_s2_ok(mdb__o_s2_ok),
         .o_s2_alive(mdb__o_s2_alive),
         .o_s2_alarm(mdb__o_s2_alarm),
@@ -299,6 +309,7 @@ module merkur_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_cs_timeout
         mdb__i_reason = node__o_reason;
         mdb__i_ok = node__o_ok;
         mdb__i_hdr_bad = node__o_hdr_bad;
+        mdb__i_rtx = node__o_rtx;
         o_irq1 = mdb__o_irq1;
         o_irq2 = mdb__o_irq2;
         o_irq_fs = mdb__o_irq_fs;
@@ -437,12 +448,14 @@ endmodule // merkur_master__aact
 // | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 // | `i_mode` | in | 2 | clock | switchbox mode (status register) |
 // | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_reason`, `i_ok` | in | | clock | received words (from the node's INPUT port; `i_reason` the extended variant's reason nibble) |
+// | `i_rtx` | in | 1 | clock | the word is a retransmission's copy of slot `i_slot` (protocol §8; the node maps an RTX's good data word to `i_kind` = 2 and the slot its index word named): data memory only, no Alive check or state, no alarm, `o_s2_act` low |
 // | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 // | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 // | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
 // | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
 // | `o_join` | out | 1 | clock | started by JOIN |
 // | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data`, `o_s2_rn` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+// | `o_cfgw`, `o_cfgw_slot`, `o_cfgw_crit` | out | 1, 12, 1 | clock | the host wrote slot `o_cfgw_slot`'s configuration byte (one clock, combinational from the bus), and its CRIT bit (bit 4, protocol §7; not stored here, and read back as 0) |
 // | `o_running` | out | 1 | clock | the host started the ring |
 // | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
 // | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
@@ -461,7 +474,7 @@ endmodule // merkur_master__aact
 // wb ack     _________/‾‾‾\_______     data read: 2 clocks
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_reason,i_ok,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_s2_rn,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
+module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_reason,i_ok,i_rtx,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_cfgw,o_cfgw_slot,o_cfgw_crit,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_s2_rn,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
 
     // Module arguments
     input wire  clock;
@@ -484,6 +497,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     input wire  i_alarm;
     input wire  [3:0] i_reason;
     input wire  i_ok;
+    input wire  i_rtx;
     input wire  i_hdr_bad;
     input wire  [11:0] i_tx_slot;
     output reg  [15:0] o_tx_data;
@@ -492,6 +506,9 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     output reg  o_s2;
     output reg  [11:0] o_s2_slot;
     output reg  o_s2_act;
+    output reg  o_cfgw;
+    output reg  [11:0] o_cfgw_slot;
+    output reg  o_cfgw_crit;
     output reg  o_s2_ok;
     output reg  o_s2_alive;
     output reg  o_s2_alarm;
@@ -583,6 +600,8 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     reg  [3:0] t3_cfg_q;
     reg  s2_d;
     reg  s2_q;
+    reg  s2_rtx_d;
+    reg  s2_rtx_q;
     reg  [11:0] s2_slot_d;
     reg  [11:0] s2_slot_q;
     reg  s2_ok_d;
@@ -732,6 +751,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         join_d = join_q;
         rl_d = rl_q;
         s2_d = s2_q;
+        s2_rtx_d = s2_rtx_q;
         s2_slot_d = s2_slot_q;
         s2_ok_d = s2_ok_q;
         s2_alive_d = s2_alive_q;
@@ -811,6 +831,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
             tx_served_d = 1'b0;
         end
         s2_d = i_wvalid & (i_kind == 2'h2);
+        s2_rtx_d = i_rtx;
         s2_slot_d = i_slot;
         s2_ok_d = i_ok;
         s2_alive_d = i_alive;
@@ -873,14 +894,14 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         if (s2_seq) begin
             cfg_rx__write_data = s2_cfg & 4'he;
         end
-        s2_alrm = s2_q & s2_ok_q & s2_alarm_q & (s2_slot_q != i_home);
+        s2_alrm = s2_q & ~s2_rtx_q & s2_ok_q & s2_alarm_q & (s2_slot_q != i_home);
         s2_fsr = s2_rsn == 4'h3;
         if (s2_alrm & ~s2_fsr & s2_run_q & running_q) begin
             cfg_rx__write_enable = 1'b1;
         end
         s2_new = s2_fsr | ~s2_run_q | (s2_seq == s2_cfg[0]);
         if (s2_q & ~fs_frame_q) begin
-            ast__write_enable = 1'b1;
+            ast__write_enable = ~s2_rtx_q;
             if (s2_ok_q) begin
                 if (s2_alrm & s2_new) begin
                     irq_word = 16'h0;
@@ -954,7 +975,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
                 t3_slot_d = s2_slot_q;
                 t3_data_d = s2_data_q;
                 t3_cfg_d = s2_cfg;
-                if (s2_cfg[2]) begin
+                if (s2_cfg[2] & ~s2_rtx_q) begin
                     new_ast = (s2_ast & 6'h4) | 6'h1;
                     if (s2_alive_q) begin
                         new_ast = (s2_ast & 6'h4) | 6'h3;
@@ -987,6 +1008,9 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         db__write_data = s2_data_q;
         ack_d = 1'b0;
         cfg_tx__write_enable = 1'b0;
+        o_cfgw = 1'b0;
+        o_cfgw_slot = i_wb_adr[(0)+:(12)];
+        o_cfgw_crit = i_wb_dat[4];
         cfg_tx__write_address = i_wb_adr[(0)+:(12)];
         cfg_tx__write_data = i_wb_dat[(0)+:(4)] & 4'he;
         if (~host_req) begin
@@ -1013,6 +1037,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
                     end
                     else begin
                         cfg_tx__write_enable = 1'b1;
+                        o_cfgw = 1'b1;
                         cfg_rx__write_enable = 1'b1;
                         cfg_rx__write_address = i_wb_adr[(0)+:(12)];
                         cfg_rx__write_data = i_wb_dat[(0)+:(4)] & 4'he;
@@ -1247,7 +1272,7 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
         end
         o_s2 = s2_q;
         o_s2_slot = s2_slot_q;
-        o_s2_act = s2_cfg[1];
+        o_s2_act = s2_cfg[1] & ~s2_rtx_q;
         o_s2_ok = s2_ok_q;
         o_s2_alive = s2_alive_q;
         o_s2_alarm = s2_alarm_q;
@@ -1312,6 +1337,8 @@ module merkur_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb
     always @(posedge clock) t3_cfg_q <= t3_cfg_d;
     initial s2_q = 1'h0;
     always @(posedge clock) s2_q <= s2_d;
+    initial s2_rtx_q = 1'h0;
+    always @(posedge clock) s2_rtx_q <= s2_rtx_d;
     initial s2_slot_q = 12'h0;
     always @(posedge clock) s2_slot_q <= s2_slot_d;
     initial s2_ok_q = 1'h0;
@@ -1576,6 +1603,7 @@ endmodule // merkur_master__mdb__db
 // | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::node::master`] |
 // | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
 // | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_reason`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words (`o_reason`: the extended variant's reason nibble, else 0) and rejected headers, for a master's memories |
+// | `o_rtx` | out | 1 | clock | the word is an RTX's copy of slot `o_slot` (its data word after a good index word, as a slot word, `o_kind` = 2; outside failsafe); an RTX's other words do not show (protocol §8) |
 //
 // Latency: INPUT to OUTPUT 9.5–10.5 bit times from the samples at `i_pi`
 // to the line at `o_po` (the CDR, one group and a bit, the retime buffer:
@@ -1590,7 +1618,7 @@ endmodule // merkur_master__mdb__db
 // SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ sw_dark ─ SO
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
+module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_rtx,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
 
     // Module arguments
     input wire  clock;
@@ -1622,6 +1650,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     output reg  [3:0] o_reason;
     output reg  o_ok;
     output reg  o_hdr_bad;
+    output reg  o_rtx;
     output reg  [15:0] o_act_data;
     output reg  [1:0] o_mode;
     output reg  o_failsafe;
@@ -1630,6 +1659,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
 
     // Constant declarations
     localparam  ext = 1'b0;
+    localparam  rtx_on = 1'b1;
 
     // Registers and child block ports
     reg  [1:0] sbox__i_mode;
@@ -1741,6 +1771,8 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     reg  [1:0] fwd__i_ptype;
     wire  [11:0] fwd__o_slot;
     wire  fwd__o_rtx_own;
+    wire  [11:0] fwd__o_rtx_idx;
+    wire  fwd__o_rtx_ok;
     wire  fwd__o_regen;
     wire  fwd__o_alarm_sent;
     wire  [3:0] fwd__o_sent_reason;
@@ -1951,6 +1983,8 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         .i_ptype(fwd__i_ptype),
         .o_slot(fwd__o_slot),
         .o_rtx_own(fwd__o_rtx_own),
+        .o_rtx_idx(fwd__o_rtx_idx),
+        .o_rtx_ok(fwd__o_rtx_ok),
         .o_regen(fwd__o_regen),
         .o_alarm_sent(fwd__o_alarm_sent),
         .o_sent_reason(fwd__o_sent_reason),
@@ -2007,7 +2041,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         fwd__i_bvalid = rx_in__o_bvalid;
         fwd__i_level = rx_in__o_level;
         fwd__i_phase = rx_in__o_phase;
-        fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0) & (rx_in__o_ptype != 2'h3));
+        fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0) & ((rx_in__o_ptype != 2'h3) | ~rtx_on));
         fwd__i_armed = armed_q;
         fwd__i_wvalid = rx_in__o_wvalid;
         fwd__i_wkind = rx_in__o_kind;
@@ -2028,9 +2062,16 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         fwd__i_wrapped = wrapped;
         o_fwd_slot = fwd__o_slot;
         o_regen = fwd__o_regen;
-        o_wvalid = rx_in__o_wvalid;
+        o_wvalid = rx_in__o_wvalid & ((rx_in__o_ptype != 2'h3) | (rx_in__o_kind == 2'h0));
         o_kind = rx_in__o_kind;
         o_slot = rx_in__o_slot;
+        o_rtx = 1'b0;
+        if ((rx_in__o_kind == 2'h3) & rtx_on) begin
+            o_wvalid = rx_in__o_wvalid & rx_in__o_slot[0] & fwd__o_rtx_ok & ~failsafe_q;
+            o_kind = 2'h2;
+            o_slot = fwd__o_rtx_idx;
+            o_rtx = 1'b1;
+        end
         o_data = rx_in__o_data;
         o_alive = rx_in__o_alive;
         o_alarm = rx_in__o_alarm;
@@ -2403,14 +2444,16 @@ endmodule // merkur_master__node__dark
 // changes), H1 passes unchanged, and the request words pass on, marked
 // when they arrive bad; the packet ends at the third idle group. A data
 // word whose good index word named the home slot is written: a
-// **sensor** (armed, not in failsafe) writes `{the value it wrote into
-// this cycle's frame, its Alive there}` over whatever the word brings; an
+// **sensor** (armed, not in failsafe) writes `{its current sample, the
+// Alive it wrote into this cycle's frame}` over whatever the word brings; an
 // **actuator** puts that Alive into a data word (its master's copy). A
 // node that wrote into the RTX without having processed the cycle's
 // frame (the last header before it was not an RTX's and no frame ended
 // since) toggles its Alive flip-flop at the RTX's end, as the frame
-// would have. A master's requests (`i_master`) are not handled yet: its
-// forwarder passes them on.
+// would have. In a **master** (`i_master`) `o_slot` shows the requested
+// slot, and a data word whose slot its data block writes (`i_slot_cfg`
+// 1 or 2) is written `{i_slot_data, its Alive there}` (an ACT slot: the
+// actuator's last Alive, `i_slot_alive`).
 //
 // Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
 // In the extended-alarm variant (protocol §6) every word has a sixth group,
@@ -2438,8 +2481,9 @@ endmodule // merkur_master__node__dark
 // | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 // | `i_armed` | in | 1 | clock | the node has processed a good header (it may fill RTX requests) |
 // | `i_wvalid`, `i_wkind`, `i_wodd`, `i_wok`, `i_walarm`, `i_wdata`, `i_ptype` | in | 1, 2, 1, 1, 1, 16, 2 | clock | INPUT's words from the receive port ([`crate::line::word_rx`]: `i_wodd` is `o_slot`'s bit 0, an RTX data word) |
-// | `o_slot` | out | 12 | clock | slot of the word passing |
+// | `o_slot` | out | 12 | clock | slot of the word passing (in an RTX: the slot its request names) |
 // | `o_rtx_own` | out | 1 | clock | the RTX request passing names the home slot (from its good index word to the next index word) |
+// | `o_rtx_idx`, `o_rtx_ok` | out | 12, 1 | clock | the slot that request names, and whether its index word was good |
 // | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 // | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 // | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
@@ -2468,7 +2512,7 @@ endmodule // merkur_master__node__dark
 //
 // (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
-module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
+module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_rtx_idx,o_rtx_ok,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
     // Module arguments
     input wire  clock;
@@ -2501,6 +2545,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     input wire  [1:0] i_ptype;
     output reg  [11:0] o_slot;
     output reg  o_rtx_own;
+    output reg  [11:0] o_rtx_idx;
+    output reg  o_rtx_ok;
     output reg  o_regen;
     output reg  o_alarm_sent;
     output reg  [3:0] o_sent_reason;
@@ -2513,6 +2559,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     localparam  jk = 10'b1100010001;
     localparam  dead_after = 4'h6;
     localparam  ext = 1'b0;
+    localparam  rtx_on = 1'b1;
 
     // Registers and child block ports
     reg  prev_d;
@@ -2575,8 +2622,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     reg  framed_q;
     reg  rtx_wrote_d;
     reg  rtx_wrote_q;
-    reg  [15:0] h_data_d;
-    reg  [15:0] h_data_q;
+    reg  idx_own_d;
+    reg  idx_own_q;
     reg  in_pa_d;
     reg  in_pa_q;
     reg  in_pb_d;
@@ -2653,6 +2700,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     reg  home_c;
     reg  own_c;
     reg  rtx_own_c;
+    reg  [15:0] addr16;
     reg  alive_now;
     reg  send_c;
     reg  [15:0] fresh_data;
@@ -2709,7 +2757,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         idx_ok_d = idx_ok_q;
         framed_d = framed_q;
         rtx_wrote_d = rtx_wrote_q;
-        h_data_d = h_data_q;
+        idx_own_d = idx_own_q;
         d_a_d = d_a_q;
         d_b_d = d_b_q;
         carry_d = carry_q;
@@ -2821,7 +2869,10 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
         home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~rtx_q & ~dead_q & ~fs_r_q;
-        rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & (idx_q == i_address) & ~i_master & ~dead_q & ~fs_r_q;
+        rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_own_q & ~i_master & ~dead_q & ~fs_r_q;
+        if (i_master) begin
+            rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & ((i_slot_cfg == 2'h1) | (i_slot_cfg == 2'h2)) & ~dead_q & ~fs_r_q;
+        end
         alive_now = toggle_q ^ (rtx_q & framed_q);
         send_c = home_c & i_alarm_req & ~prev_alarm_q & (~i_master | (i_slot_cfg != 2'h0));
         own_c = home_c;
@@ -2862,10 +2913,10 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
                 end
             end
             if (rtx_own_c) begin
-                if (~i_actuator & i_armed) begin
+                if ((~i_actuator | i_master) & i_armed) begin
                     act_c = 3'h3;
                 end
-                if (i_actuator & dec_data & (~dec_nib[3] | ext)) begin
+                if (i_actuator & ~i_master & dec_data & (~dec_nib[3] | ext)) begin
                     act_c = 3'h4;
                 end
             end
@@ -2884,8 +2935,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         end
         if (rtx_q) begin
             fresh_alive = alive_now;
-            if (framed_q) begin
-                fresh_data = h_data_q;
+            if (i_master & (i_slot_cfg == 2'h2)) begin
+                fresh_alive = i_slot_alive;
             end
         end
         fresh_rn = 4'h0;
@@ -3119,6 +3170,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
                 idles_d = 2'h0;
                 rtx_d = 1'b0;
                 idx_ok_d = 1'b0;
+                idx_own_d = 1'b0;
                 rtx_wrote_d = 1'b0;
             end
         end
@@ -3152,7 +3204,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
                     rtx_wrote_d = 1'b1;
                 end
                 if (pre_home_q) begin
-                    h_data_d = i_sensor_data;
                     prev_alarm_d = f_alarm_q;
                     sent_d = f_alarm_q;
                     sent_reason_d = f_reason_q;
@@ -3236,20 +3287,27 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             end
         end
         if (i_wvalid & (i_wkind == 2'h0)) begin
-            rtx_d = i_wok & (i_ptype == 2'h3);
+            rtx_d = i_wok & (i_ptype == 2'h3) & rtx_on;
             if (~(i_wok & (i_ptype == 2'h3))) begin
                 framed_d = 1'b0;
             end
         end
+        addr16 = ({4'h0, i_address}) | 16'h0;
         if (i_wvalid & (i_wkind == 2'h3) & ~i_wodd) begin
             idx_d = i_wdata[(0)+:(12)];
             idx_ok_d = i_wok & ~i_walarm & (i_wdata[(12)+:(4)] == 4'h0) & (i_wdata[(0)+:(12)] <= i_slots_m1);
+            idx_own_d = rtx_on & i_wok & ~i_walarm & (i_wdata == addr16);
         end
         if (i_hdr_bad) begin
             dead_d = 1'b1;
         end
         o_slot = slot_q;
-        o_rtx_own = idx_ok_q & (idx_q == i_address);
+        o_rtx_own = idx_own_q;
+        o_rtx_idx = idx_q;
+        o_rtx_ok = idx_ok_q;
+        if (rtx_q) begin
+            o_slot = idx_q;
+        end
         o_regen = regen_q;
         o_alarm_sent = sent_q;
         o_sent_reason = sent_reason_q;
@@ -3320,8 +3378,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     always @(posedge clock) framed_q <= framed_d;
     initial rtx_wrote_q = 1'h0;
     always @(posedge clock) rtx_wrote_q <= rtx_wrote_d;
-    initial h_data_q = 16'h0;
-    always @(posedge clock) h_data_q <= h_data_d;
+    initial idx_own_q = 1'h0;
+    always @(posedge clock) idx_own_q <= idx_own_d;
     initial in_pa_q = 1'h0;
     always @(posedge clock) in_pa_q <= in_pa_d;
     initial in_pb_q = 1'h0;

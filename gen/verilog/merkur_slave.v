@@ -59,6 +59,7 @@
 // | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::node::master`] |
 // | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
 // | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_reason`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words (`o_reason`: the extended variant's reason nibble, else 0) and rejected headers, for a master's memories |
+// | `o_rtx` | out | 1 | clock | the word is an RTX's copy of slot `o_slot` (its data word after a good index word, as a slot word, `o_kind` = 2; outside failsafe); an RTX's other words do not show (protocol §8) |
 //
 // Latency: INPUT to OUTPUT 9.5–10.5 bit times from the samples at `i_pi`
 // to the line at `o_po` (the CDR, one group and a bit, the retime buffer:
@@ -73,7 +74,7 @@
 // SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ sw_dark ─ SO
 // ```
 // --------------------------------------------------------------------------
-module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
+module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_rtx,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
 
     // Module arguments
     input wire  clock;
@@ -105,6 +106,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     output reg  [3:0] o_reason;
     output reg  o_ok;
     output reg  o_hdr_bad;
+    output reg  o_rtx;
     output reg  [15:0] o_act_data;
     output reg  [1:0] o_mode;
     output reg  o_failsafe;
@@ -113,6 +115,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
 
     // Constant declarations
     localparam  ext = 1'b0;
+    localparam  rtx_on = 1'b1;
 
     // Registers and child block ports
     reg  [1:0] sbox__i_mode;
@@ -224,6 +227,8 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     reg  [1:0] fwd__i_ptype;
     wire  [11:0] fwd__o_slot;
     wire  fwd__o_rtx_own;
+    wire  [11:0] fwd__o_rtx_idx;
+    wire  fwd__o_rtx_ok;
     wire  fwd__o_regen;
     wire  fwd__o_alarm_sent;
     wire  [3:0] fwd__o_sent_reason;
@@ -434,6 +439,8 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         .i_ptype(fwd__i_ptype),
         .o_slot(fwd__o_slot),
         .o_rtx_own(fwd__o_rtx_own),
+        .o_rtx_idx(fwd__o_rtx_idx),
+        .o_rtx_ok(fwd__o_rtx_ok),
         .o_regen(fwd__o_regen),
         .o_alarm_sent(fwd__o_alarm_sent),
         .o_sent_reason(fwd__o_sent_reason),
@@ -490,7 +497,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         fwd__i_bvalid = rx_in__o_bvalid;
         fwd__i_level = rx_in__o_level;
         fwd__i_phase = rx_in__o_phase;
-        fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0) & (rx_in__o_ptype != 2'h3));
+        fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0) & ((rx_in__o_ptype != 2'h3) | ~rtx_on));
         fwd__i_armed = armed_q;
         fwd__i_wvalid = rx_in__o_wvalid;
         fwd__i_wkind = rx_in__o_kind;
@@ -511,9 +518,16 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         fwd__i_wrapped = wrapped;
         o_fwd_slot = fwd__o_slot;
         o_regen = fwd__o_regen;
-        o_wvalid = rx_in__o_wvalid;
+        o_wvalid = rx_in__o_wvalid & ((rx_in__o_ptype != 2'h3) | (rx_in__o_kind == 2'h0));
         o_kind = rx_in__o_kind;
         o_slot = rx_in__o_slot;
+        o_rtx = 1'b0;
+        if ((rx_in__o_kind == 2'h3) & rtx_on) begin
+            o_wvalid = rx_in__o_wvalid & rx_in__o_slot[0] & fwd__o_rtx_ok & ~failsafe_q;
+            o_kind = 2'h2;
+            o_slot = fwd__o_rtx_idx;
+            o_rtx = 1'b1;
+        end
         o_data = rx_in__o_data;
         o_alive = rx_in__o_alive;
         o_alarm = rx_in__o_alarm;
@@ -886,14 +900,16 @@ endmodule // merkur_slave__dark
 // changes), H1 passes unchanged, and the request words pass on, marked
 // when they arrive bad; the packet ends at the third idle group. A data
 // word whose good index word named the home slot is written: a
-// **sensor** (armed, not in failsafe) writes `{the value it wrote into
-// this cycle's frame, its Alive there}` over whatever the word brings; an
+// **sensor** (armed, not in failsafe) writes `{its current sample, the
+// Alive it wrote into this cycle's frame}` over whatever the word brings; an
 // **actuator** puts that Alive into a data word (its master's copy). A
 // node that wrote into the RTX without having processed the cycle's
 // frame (the last header before it was not an RTX's and no frame ended
 // since) toggles its Alive flip-flop at the RTX's end, as the frame
-// would have. A master's requests (`i_master`) are not handled yet: its
-// forwarder passes them on.
+// would have. In a **master** (`i_master`) `o_slot` shows the requested
+// slot, and a data word whose slot its data block writes (`i_slot_cfg`
+// 1 or 2) is written `{i_slot_data, its Alive there}` (an ACT slot: the
+// actuator's last Alive, `i_slot_alive`).
 //
 // Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
 // In the extended-alarm variant (protocol §6) every word has a sixth group,
@@ -921,8 +937,9 @@ endmodule // merkur_slave__dark
 // | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 // | `i_armed` | in | 1 | clock | the node has processed a good header (it may fill RTX requests) |
 // | `i_wvalid`, `i_wkind`, `i_wodd`, `i_wok`, `i_walarm`, `i_wdata`, `i_ptype` | in | 1, 2, 1, 1, 1, 16, 2 | clock | INPUT's words from the receive port ([`crate::line::word_rx`]: `i_wodd` is `o_slot`'s bit 0, an RTX data word) |
-// | `o_slot` | out | 12 | clock | slot of the word passing |
+// | `o_slot` | out | 12 | clock | slot of the word passing (in an RTX: the slot its request names) |
 // | `o_rtx_own` | out | 1 | clock | the RTX request passing names the home slot (from its good index word to the next index word) |
+// | `o_rtx_idx`, `o_rtx_ok` | out | 12, 1 | clock | the slot that request names, and whether its index word was good |
 // | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 // | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 // | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
@@ -951,7 +968,7 @@ endmodule // merkur_slave__dark
 //
 // (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
-module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
+module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_rtx_idx,o_rtx_ok,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
     // Module arguments
     input wire  clock;
@@ -984,6 +1001,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     input wire  [1:0] i_ptype;
     output reg  [11:0] o_slot;
     output reg  o_rtx_own;
+    output reg  [11:0] o_rtx_idx;
+    output reg  o_rtx_ok;
     output reg  o_regen;
     output reg  o_alarm_sent;
     output reg  [3:0] o_sent_reason;
@@ -996,6 +1015,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     localparam  jk = 10'b1100010001;
     localparam  dead_after = 4'h6;
     localparam  ext = 1'b0;
+    localparam  rtx_on = 1'b1;
 
     // Registers and child block ports
     reg  prev_d;
@@ -1058,8 +1078,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     reg  framed_q;
     reg  rtx_wrote_d;
     reg  rtx_wrote_q;
-    reg  [15:0] h_data_d;
-    reg  [15:0] h_data_q;
+    reg  idx_own_d;
+    reg  idx_own_q;
     reg  in_pa_d;
     reg  in_pa_q;
     reg  in_pb_d;
@@ -1136,6 +1156,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     reg  home_c;
     reg  own_c;
     reg  rtx_own_c;
+    reg  [15:0] addr16;
     reg  alive_now;
     reg  send_c;
     reg  [15:0] fresh_data;
@@ -1192,7 +1213,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         idx_ok_d = idx_ok_q;
         framed_d = framed_q;
         rtx_wrote_d = rtx_wrote_q;
-        h_data_d = h_data_q;
+        idx_own_d = idx_own_q;
         d_a_d = d_a_q;
         d_b_d = d_b_q;
         carry_d = carry_q;
@@ -1304,7 +1325,10 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
         home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~rtx_q & ~dead_q & ~fs_r_q;
-        rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & (idx_q == i_address) & ~i_master & ~dead_q & ~fs_r_q;
+        rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_own_q & ~i_master & ~dead_q & ~fs_r_q;
+        if (i_master) begin
+            rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & ((i_slot_cfg == 2'h1) | (i_slot_cfg == 2'h2)) & ~dead_q & ~fs_r_q;
+        end
         alive_now = toggle_q ^ (rtx_q & framed_q);
         send_c = home_c & i_alarm_req & ~prev_alarm_q & (~i_master | (i_slot_cfg != 2'h0));
         own_c = home_c;
@@ -1345,10 +1369,10 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 end
             end
             if (rtx_own_c) begin
-                if (~i_actuator & i_armed) begin
+                if ((~i_actuator | i_master) & i_armed) begin
                     act_c = 3'h3;
                 end
-                if (i_actuator & dec_data & (~dec_nib[3] | ext)) begin
+                if (i_actuator & ~i_master & dec_data & (~dec_nib[3] | ext)) begin
                     act_c = 3'h4;
                 end
             end
@@ -1367,8 +1391,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
         end
         if (rtx_q) begin
             fresh_alive = alive_now;
-            if (framed_q) begin
-                fresh_data = h_data_q;
+            if (i_master & (i_slot_cfg == 2'h2)) begin
+                fresh_alive = i_slot_alive;
             end
         end
         fresh_rn = 4'h0;
@@ -1602,6 +1626,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                 idles_d = 2'h0;
                 rtx_d = 1'b0;
                 idx_ok_d = 1'b0;
+                idx_own_d = 1'b0;
                 rtx_wrote_d = 1'b0;
             end
         end
@@ -1635,7 +1660,6 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
                     rtx_wrote_d = 1'b1;
                 end
                 if (pre_home_q) begin
-                    h_data_d = i_sensor_data;
                     prev_alarm_d = f_alarm_q;
                     sent_d = f_alarm_q;
                     sent_reason_d = f_reason_q;
@@ -1719,20 +1743,27 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
             end
         end
         if (i_wvalid & (i_wkind == 2'h0)) begin
-            rtx_d = i_wok & (i_ptype == 2'h3);
+            rtx_d = i_wok & (i_ptype == 2'h3) & rtx_on;
             if (~(i_wok & (i_ptype == 2'h3))) begin
                 framed_d = 1'b0;
             end
         end
+        addr16 = ({4'h0, i_address}) | 16'h0;
         if (i_wvalid & (i_wkind == 2'h3) & ~i_wodd) begin
             idx_d = i_wdata[(0)+:(12)];
             idx_ok_d = i_wok & ~i_walarm & (i_wdata[(12)+:(4)] == 4'h0) & (i_wdata[(0)+:(12)] <= i_slots_m1);
+            idx_own_d = rtx_on & i_wok & ~i_walarm & (i_wdata == addr16);
         end
         if (i_hdr_bad) begin
             dead_d = 1'b1;
         end
         o_slot = slot_q;
-        o_rtx_own = idx_ok_q & (idx_q == i_address);
+        o_rtx_own = idx_own_q;
+        o_rtx_idx = idx_q;
+        o_rtx_ok = idx_ok_q;
+        if (rtx_q) begin
+            o_slot = idx_q;
+        end
         o_regen = regen_q;
         o_alarm_sent = sent_q;
         o_sent_reason = sent_reason_q;
@@ -1803,8 +1834,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots
     always @(posedge clock) framed_q <= framed_d;
     initial rtx_wrote_q = 1'h0;
     always @(posedge clock) rtx_wrote_q <= rtx_wrote_d;
-    initial h_data_q = 16'h0;
-    always @(posedge clock) h_data_q <= h_data_d;
+    initial idx_own_q = 1'h0;
+    always @(posedge clock) idx_own_q <= idx_own_d;
     initial in_pa_q = 1'h0;
     always @(posedge clock) in_pa_q <= in_pa_d;
     initial in_pb_q = 1'h0;

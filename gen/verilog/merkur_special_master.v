@@ -131,7 +131,7 @@
 // PI (back)        ...L later...  | J K | H0 | H1 | slot 0 | ... -> return store
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_period,i_cs_timeout,i_prio,i_elect,i_flying,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_irq1,i_irq2,i_fs_req,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_mode,o_failsafe,o_irq_fsc,o_perr,o_ferr,o_aerr,o_serr,o_hop,o_cycles,o_running,o_base);
+module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_period,i_cs_timeout,i_prio,i_elect,i_flying,i_rtx_at,i_rtx_atw,i_rtx_k,i_rtx_kw,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_irq1,i_irq2,i_fs_req,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_mode,o_failsafe,o_irq_fsc,o_perr,o_ferr,o_aerr,o_serr,o_hop,o_cycles,o_running,o_base);
 
     // Module arguments
     input wire  clock;
@@ -146,6 +146,10 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     input wire  [2:0] i_prio;
     input wire  [19:0] i_elect;
     input wire  i_flying;
+    input wire  [19:0] i_rtx_at;
+    input wire  [19:0] i_rtx_atw;
+    input wire  [4:0] i_rtx_k;
+    input wire  [4:0] i_rtx_kw;
     input wire  i_wb_cyc;
     input wire  i_wb_stb;
     input wire  i_wb_we;
@@ -180,6 +184,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     localparam  jk_bits = 10'b1100010001;
     localparam  takeover_lead = 20'h30;
     localparam  ext = 1'b0;
+    localparam  rtx_on = 1'b1;
+    localparam  rtx_max = 5'b1000;
 
     // Registers and child block ports
     reg  [3:0] rx_in__i_samples;
@@ -238,6 +244,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     wire  rx_bsr__o_ack;
     reg  ftx__i_start;
     reg  ftx__i_slots;
+    reg  [11:0] ftx__i_slots_m1;
     reg  [15:0] ftx__i_h0;
     reg  [15:0] ftx__i_h1;
     reg  ftx__i_h0_alive;
@@ -338,6 +345,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  mdb__i_alarm;
     reg  [3:0] mdb__i_reason;
     reg  mdb__i_ok;
+    reg  mdb__i_rtx;
     reg  mdb__i_hdr_bad;
     reg  [11:0] mdb__i_tx_slot;
     wire  [15:0] mdb__o_tx_data;
@@ -346,6 +354,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     wire  mdb__o_s2;
     wire  [11:0] mdb__o_s2_slot;
     wire  mdb__o_s2_act;
+    wire  mdb__o_cfgw;
+    wire  [11:0] mdb__o_cfgw_slot;
+    wire  mdb__o_cfgw_crit;
     wire  mdb__o_s2_ok;
     wire  mdb__o_s2_alive;
     wire  mdb__o_s2_alarm;
@@ -486,6 +497,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  [1:0] fwd__i_ptype;
     wire  [11:0] fwd__o_slot;
     wire  fwd__o_rtx_own;
+    wire  [11:0] fwd__o_rtx_idx;
+    wire  fwd__o_rtx_ok;
     wire  fwd__o_regen;
     wire  fwd__o_alarm_sent;
     wire  [3:0] fwd__o_sent_reason;
@@ -497,6 +510,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  [11:0] txs__i_fwd;
     reg  txs__i_cb;
     reg  txs__i_join;
+    reg  txs__i_rtxm;
+    reg  [11:0] txs__i_rtx;
     wire  [11:0] txs__o_slot;
     reg  fs_cleared_d;
     reg  fs_cleared_q;
@@ -558,6 +573,57 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  rep_cut_q;
     reg  inpkt_was_d;
     reg  inpkt_was_q;
+    reg  [11:0] crit__read_address;
+    wire  crit__read_data;
+    reg  [11:0] crit__write_address;
+    reg  crit__write_data;
+    reg  crit__write_enable;
+    reg  [11:0] dl0_d;
+    reg  [11:0] dl0_q;
+    reg  [11:0] dl1_d;
+    reg  [11:0] dl1_q;
+    reg  [11:0] dl2_d;
+    reg  [11:0] dl2_q;
+    reg  [11:0] dl3_d;
+    reg  [11:0] dl3_q;
+    reg  [11:0] dl4_d;
+    reg  [11:0] dl4_q;
+    reg  [11:0] dl5_d;
+    reg  [11:0] dl5_q;
+    reg  [11:0] dl6_d;
+    reg  [11:0] dl6_q;
+    reg  [11:0] dl7_d;
+    reg  [11:0] dl7_q;
+    reg  [4:0] dcount_d;
+    reg  [4:0] dcount_q;
+    reg  [1:0] dst_d;
+    reg  [1:0] dst_q;
+    reg  [11:0] dnext_d;
+    reg  [11:0] dnext_q;
+    reg  c_v_d;
+    reg  c_v_q;
+    reg  [11:0] c_slot_d;
+    reg  [11:0] c_slot_q;
+    reg  c_dmg_d;
+    reg  c_dmg_q;
+    reg  rtxm_d;
+    reg  rtxm_q;
+    reg  [4:0] rk_d;
+    reg  [4:0] rk_q;
+    reg  [11:0] rtx_req_d;
+    reg  [11:0] rtx_req_q;
+    reg  d_inpkt_d;
+    reg  d_inpkt_q;
+    reg  s2_rtx_d;
+    reg  s2_rtx_q;
+    reg  bsr_h0ok_d;
+    reg  bsr_h0ok_q;
+    reg  [4:0] rtx_cap_d;
+    reg  [4:0] rtx_cap_q;
+    reg  [19:0] rtx_t_d;
+    reg  [19:0] rtx_t_q;
+    reg  at_t_d;
+    reg  at_t_q;
 
     // Local signals
     reg  wrapped;
@@ -599,6 +665,10 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  [2:0] cyc_gap3;
     reg  [2:0] cyc_take;
     reg  pass_code;
+    reg  rtx_go;
+    reg  [15:0] rtx_h0;
+    reg  [11:0] cyc_m1;
+    reg  [11:0] rtx_m1;
 
     // Child blocks
     merkur_special_master__rx_in rx_in(
@@ -669,7 +739,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .clock(clock),
         .i_start(ftx__i_start),
         .i_slots(ftx__i_slots),
-        .i_slots_m1(i_slots_m1),
+        .i_slots_m1(ftx__i_slots_m1),
         .i_h0(ftx__i_h0),
         .i_h1(ftx__i_h1),
         .i_h0_alive(ftx__i_h0_alive),
@@ -782,6 +852,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_alarm(mdb__i_alarm),
         .i_reason(mdb__i_reason),
         .i_ok(mdb__i_ok),
+        .i_rtx(mdb__i_rtx),
         .i_hdr_bad(mdb__i_hdr_bad),
         .i_tx_slot(mdb__i_tx_slot),
         .o_tx_data(mdb__o_tx_data),
@@ -790,6 +861,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .o_s2(mdb__o_s2),
         .o_s2_slot(mdb__o_s2_slot),
         .o_s2_act(mdb__o_s2_act),
+        .o_cfgw(mdb__o_cfgw),
+        .o_cfgw_slot(mdb__o_cfgw_slot),
+        .o_cfgw_crit(mdb__o_cfgw_crit),
         .o_s2_ok(mdb__o_s2_ok),
         .o_s2_alive(mdb__o_s2_alive),
         .o_s2_alarm(mdb__o_s2_alarm),
@@ -865,6 +939,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_ptype(fwd__i_ptype),
         .o_slot(fwd__o_slot),
         .o_rtx_own(fwd__o_rtx_own),
+        .o_rtx_idx(fwd__o_rtx_idx),
+        .o_rtx_ok(fwd__o_rtx_ok),
         .o_regen(fwd__o_regen),
         .o_alarm_sent(fwd__o_alarm_sent),
         .o_sent_reason(fwd__o_sent_reason),
@@ -879,6 +955,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_cb(txs__i_cb),
         .i_prio(i_prio),
         .i_join(txs__i_join),
+        .i_rtxm(txs__i_rtxm),
+        .i_rtx(txs__i_rtx),
         .o_slot(txs__o_slot)
     );
     merkur_special_master__g0 g0(
@@ -916,6 +994,15 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .o_k(g3__o_k),
         .o_i(g3__o_i),
         .o_s(g3__o_s)
+    );
+    merkur_special_master__crit crit(
+        .read_address(crit__read_address),
+        .read_clock(clock),
+        .read_data(crit__read_data),
+        .write_address(crit__write_address),
+        .write_clock(clock),
+        .write_data(crit__write_data),
+        .write_enable(crit__write_enable)
     );
 
     // Combinational logic
@@ -987,12 +1074,37 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         dcyc_v_d = dcyc_v_q;
         scyc_d = scyc_q;
         scyc_v_d = scyc_v_q;
+        dcount_d = dcount_q;
+        dst_d = dst_q;
+        dnext_d = dnext_q;
+        c_v_d = c_v_q;
+        c_slot_d = c_slot_q;
+        c_dmg_d = c_dmg_q;
+        rtxm_d = rtxm_q;
+        rk_d = rk_q;
+        rtx_req_d = rtx_req_q;
+        d_inpkt_d = d_inpkt_q;
+        s2_rtx_d = s2_rtx_q;
+        bsr_h0ok_d = bsr_h0ok_q;
+        dl0_d = dl0_q;
+        dl1_d = dl1_q;
+        dl2_d = dl2_q;
+        dl3_d = dl3_q;
+        dl4_d = dl4_q;
+        dl5_d = dl5_q;
+        dl6_d = dl6_q;
+        dl7_d = dl7_q;
+        rtx_cap_d = rtx_cap_q;
+        rtx_t_d = rtx_t_q;
+        at_t_d = at_t_q;
         base = cb_q | ((i_prio == 3'h0) & ~(mdb__o_join & i_flying));
         join_r_d = mdb__o_join & i_flying;
         txs__i_ftx = ftx__o_slot;
         txs__i_fwd = fwd__o_slot;
         txs__i_cb = cb_q;
         txs__i_join = join_r_q;
+        txs__i_rtxm = rtxm_q;
+        txs__i_rtx = rtx_req_q;
         mdb__i_tx_slot = txs__o_slot;
         aact__read_address = txs__o_slot;
         o_base = base;
@@ -1033,8 +1145,17 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         sec_h0 = ({4'h0, cyc_q}) | 16'h4000;
         ftx__i_start = tick;
         ftx__i_slots = 1'b1;
+        ftx__i_slots_m1 = i_slots_m1;
         ftx__i_h0 = h0;
         ftx__i_h1 = h1;
+        cyc_m1 = cyc_q - 12'h1;
+        rtx_h0 = (({4'h0, cyc_m1}) | 16'h0) | 16'hf000;
+        rtx_m1 = ((({7'h0, rk_q}) | 12'h0) << 1) - 12'h1;
+        if (rtxm_q) begin
+            ftx__i_slots_m1 = rtx_m1;
+            ftx__i_h0 = rtx_h0;
+            ftx__i_h1 = ~rtx_h0;
+        end
         ftx__i_h0_alive = clr_sent_q != 3'h0;
         stx__i_h0_alive = 1'b0;
         stx__i_start = tick & ~ret_rwc_q & ~wrapped;
@@ -1120,21 +1241,42 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
                 end
             end
         end
+        if (rtxm_q) begin
+            w_data = ({4'h0, rtx_req_q}) | 16'h0;
+            w_alive = 1'b0;
+            w_alarm = 1'b0;
+            w_void = 1'b0;
+            w_rn = 4'h0;
+            if (ftx__o_slot[0]) begin
+                w_data = 16'h0;
+                w_void = 1'b1;
+                if (~fs_tx_q & (mdb__o_tx_cfg == 2'h1)) begin
+                    w_data = mdb__o_tx_data;
+                    w_alive = ~toggle_q;
+                    w_void = 1'b0;
+                end
+                if (~fs_tx_q & (mdb__o_tx_cfg == 2'h2)) begin
+                    w_data = mdb__o_tx_data;
+                    w_alive = aact_r_q;
+                    w_void = 1'b0;
+                end
+            end
+        end
         ftx__i_word_data = w_data;
         ftx__i_word_alive = w_alive;
         ftx__i_word_alarm = w_alarm;
         ftx__i_word_void = w_void;
         ftx__i_word_rn = w_rn;
-        sent_alarm__write_enable = ftx__o_take;
+        sent_alarm__write_enable = ftx__o_take & ~rtxm_q;
         sent_alarm__write_address = ftx__o_slot;
         sent_alarm__write_data = w_alarm & ~w_void;
         aact__write_enable = 1'b0;
         aact__write_address = ftx__o_slot;
         aact__write_data = w_alive;
-        if (ftx__o_take & ~fs_tx_q & (mdb__o_tx_cfg == 2'h2)) begin
+        if (ftx__o_take & ~rtxm_q & ~fs_tx_q & (mdb__o_tx_cfg == 2'h2)) begin
             aact__write_enable = 1'b1;
         end
-        if (ftx__o_take & home) begin
+        if (ftx__o_take & home & ~rtxm_q) begin
             prev_alarm_d = send_alarm & ~fs_tx_q;
             if (~fs_tx_q) begin
                 await_rb_d = send_alarm & ~pend_fs_q;
@@ -1171,7 +1313,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
             pend_fs_d = 1'b1;
         end
         fbusy_d = ftx__o_busy;
-        if (fbusy_q & ~ftx__o_busy) begin
+        if (fbusy_q & ~ftx__o_busy & ~rtxm_q) begin
             toggle_d = ~toggle_q;
             cyc_d = cyc_q + 12'h1;
         end
@@ -1333,7 +1475,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
                 fl_v_d = 1'b0;
             end
         end
-        if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & ~rx_in__o_ok & ~rx_in__o_void & (perr_q != 16'hffff)) begin
+        if (rx_in__o_wvalid & ((rx_in__o_kind == 2'h2) | ((rx_in__o_kind == 2'h3) & ~failsafe_q)) & ~rx_in__o_ok & ~rx_in__o_void & (perr_q != 16'hffff)) begin
             perr_d = perr_q + 16'h1;
         end
         ferr_sum = (({1'h0, ferr_q}) | 17'h0) + (({5'h0, ferr_owed_q}) | 17'h0);
@@ -1349,6 +1491,9 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         end
         sent_alarm__read_address = rx_in__o_slot;
         st_word = (({10'h0, mdb__o_s2_data}) | 26'h0) | ((({23'h0, ret_cyc_q}) | 26'h0) << 19);
+        if (s2_rtx_q) begin
+            st_word = (({10'h0, mdb__o_s2_data}) | 26'h0) | ((({23'h0, prev_cyc}) | 26'h0) << 19);
+        end
         if (ext) begin
             st_word = st_word | ((({22'h0, mdb__o_s2_rn}) | 26'h0) << 22);
         end
@@ -1370,17 +1515,133 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
             store__write_address = st_used_slot_q;
             store__write_data = 26'h0;
         end
-        if (ftx__o_take) begin
+        if (ftx__o_take & ~rtxm_q) begin
             st_used_d = 1'b1;
             st_used_slot_d = ftx__o_slot;
+        end
+        crit__write_enable = mdb__o_cfgw & rtx_on;
+        crit__write_address = mdb__o_cfgw_slot;
+        crit__write_data = mdb__o_cfgw_crit;
+        crit__read_address = rx_in__o_slot;
+        if (dst_q == 2'h2) begin
+            crit__read_address = dnext_q;
+        end
+        d_inpkt_d = rx_in__o_inpkt;
+        c_v_d = 1'b0;
+        if ((dst_q == 2'h0) & rx_in__o_wvalid & (rx_in__o_kind == 2'h1) & rx_in__o_ok & (rx_in__o_ptype == 2'h0)) begin
+            dst_d = 2'h1;
+            dnext_d = 12'h0;
+        end
+        if ((dst_q == 2'h0) & rx_in__o_hdr_bad & ((rx_in__o_kind == 2'h1) | rx_in__o_ok)) begin
+            dst_d = 2'h2;
+            dnext_d = 12'h0;
+        end
+        if ((dst_q == 2'h1) & d_inpkt_q & ~rx_in__o_inpkt) begin
+            dst_d = 2'h2;
+        end
+        if ((dst_q == 2'h1) & rx_in__o_wvalid & (rx_in__o_kind == 2'h2)) begin
+            c_v_d = 1'b1;
+            c_slot_d = rx_in__o_slot;
+            c_dmg_d = ~rx_in__o_ok & ~rx_in__o_void;
+            dnext_d = rx_in__o_slot + 12'h1;
+            if (rx_in__o_slot == i_slots_m1) begin
+                dst_d = 2'h3;
+            end
+        end
+        if (dst_q == 2'h2) begin
+            c_v_d = 1'b1;
+            c_slot_d = dnext_q;
+            c_dmg_d = 1'b1;
+            dnext_d = dnext_q + 12'h1;
+            if (dnext_q == i_slots_m1) begin
+                dst_d = 2'h3;
+            end
+        end
+        if (c_v_q & c_dmg_q & crit__read_data & (dcount_q != rtx_max)) begin
+            dcount_d = dcount_q + 5'h1;
+            if (dcount_q == 5'h0) begin
+                dl0_d = c_slot_q;
+            end
+            if (dcount_q == 5'h1) begin
+                dl1_d = c_slot_q;
+            end
+            if (dcount_q == 5'h2) begin
+                dl2_d = c_slot_q;
+            end
+            if (dcount_q == 5'h3) begin
+                dl3_d = c_slot_q;
+            end
+            if (dcount_q == 5'h4) begin
+                dl4_d = c_slot_q;
+            end
+            if (dcount_q == 5'h5) begin
+                dl5_d = c_slot_q;
+            end
+            if (dcount_q == 5'h6) begin
+                dl6_d = c_slot_q;
+            end
+            if (dcount_q == 5'h7) begin
+                dl7_d = c_slot_q;
+            end
+        end
+        rtx_t_d = i_rtx_at;
+        rtx_cap_d = i_rtx_k;
+        if (rw) begin
+            rtx_t_d = i_rtx_atw;
+            rtx_cap_d = i_rtx_kw;
+        end
+        at_t_d = bcnt_q == rtx_t_q;
+        rtx_go = rtx_on & base & mdb__o_running & half_q & at_t_q & (dst_q != 2'h0) & (dcount_q != 5'h0) & (rtx_cap_q != 5'h0) & ~fs_tx_q & ~failsafe_q;
+        if (rtx_go) begin
+            ftx__i_start = 1'b1;
+            rtxm_d = 1'b1;
+            rk_d = dcount_q;
+            if (dcount_q > rtx_cap_q) begin
+                rk_d = rtx_cap_q;
+            end
+        end
+        rtx_req_d = dl0_q;
+        if (ftx__o_slot[(1)+:(3)] == 3'h1) begin
+            rtx_req_d = dl1_q;
+        end
+        if (ftx__o_slot[(1)+:(3)] == 3'h2) begin
+            rtx_req_d = dl2_q;
+        end
+        if (ftx__o_slot[(1)+:(3)] == 3'h3) begin
+            rtx_req_d = dl3_q;
+        end
+        if (ftx__o_slot[(1)+:(3)] == 3'h4) begin
+            rtx_req_d = dl4_q;
+        end
+        if (ftx__o_slot[(1)+:(3)] == 3'h5) begin
+            rtx_req_d = dl5_q;
+        end
+        if (ftx__o_slot[(1)+:(3)] == 3'h6) begin
+            rtx_req_d = dl6_q;
+        end
+        if (ftx__o_slot[(1)+:(3)] == 3'h7) begin
+            rtx_req_d = dl7_q;
+        end
+        if (tick) begin
+            dst_d = 2'h0;
+            dcount_d = 5'h0;
+            rtxm_d = 1'b0;
         end
         o_wb_dat = mdb__o_wb_dat;
         o_wb_ack = mdb__o_wb_ack;
         mdb__i_fs = failsafe_q;
         mdb__i_mode = swc__o_mode;
-        mdb__i_wvalid = rx_in__o_wvalid;
+        mdb__i_wvalid = rx_in__o_wvalid & ((rx_in__o_ptype != 2'h3) | (rx_in__o_kind == 2'h0));
         mdb__i_kind = rx_in__o_kind;
         mdb__i_slot = rx_in__o_slot;
+        mdb__i_rtx = 1'b0;
+        if ((rx_in__o_kind == 2'h3) & rtx_on) begin
+            mdb__i_wvalid = rx_in__o_wvalid & rx_in__o_slot[0] & fwd__o_rtx_ok & ~failsafe_q;
+            mdb__i_kind = 2'h2;
+            mdb__i_slot = fwd__o_rtx_idx;
+            mdb__i_rtx = 1'b1;
+        end
+        s2_rtx_d = mdb__i_rtx;
         mdb__i_data = rx_in__o_data;
         mdb__i_alive = rx_in__o_alive;
         mdb__i_alarm = rx_in__o_alarm;
@@ -1426,7 +1687,13 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
                 end
             end
         end
-        if (rx_bsr__o_wvalid & rx_bsr__o_ok & (rx_bsr__o_kind == 2'h1) & (rx_bsr__o_ptype == 2'h0)) begin
+        if (rx_bsr__o_wvalid & (rx_bsr__o_kind == 2'h0)) begin
+            bsr_h0ok_d = rx_bsr__o_ok;
+        end
+        if (rx_bsr__o_wvalid & rx_bsr__o_ok & (rx_bsr__o_kind == 2'h1) & ((rx_bsr__o_ptype == 2'h0) | (rx_bsr__o_ptype == 2'h3))) begin
+            rdata_d = 1'b1;
+        end
+        if (rx_bsr__o_wvalid & ~rx_bsr__o_ok & (rx_bsr__o_kind == 2'h1) & bsr_h0ok_q & (rx_bsr__o_ptype == 2'h0)) begin
             rdata_d = 1'b1;
         end
         if (rx_bsr__o_start) begin
@@ -1749,6 +2016,52 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) rep_cut_q <= rep_cut_d;
     initial inpkt_was_q = 1'h0;
     always @(posedge clock) inpkt_was_q <= inpkt_was_d;
+    initial dl0_q = 12'h0;
+    always @(posedge clock) dl0_q <= dl0_d;
+    initial dl1_q = 12'h0;
+    always @(posedge clock) dl1_q <= dl1_d;
+    initial dl2_q = 12'h0;
+    always @(posedge clock) dl2_q <= dl2_d;
+    initial dl3_q = 12'h0;
+    always @(posedge clock) dl3_q <= dl3_d;
+    initial dl4_q = 12'h0;
+    always @(posedge clock) dl4_q <= dl4_d;
+    initial dl5_q = 12'h0;
+    always @(posedge clock) dl5_q <= dl5_d;
+    initial dl6_q = 12'h0;
+    always @(posedge clock) dl6_q <= dl6_d;
+    initial dl7_q = 12'h0;
+    always @(posedge clock) dl7_q <= dl7_d;
+    initial dcount_q = 5'h0;
+    always @(posedge clock) dcount_q <= dcount_d;
+    initial dst_q = 2'h0;
+    always @(posedge clock) dst_q <= dst_d;
+    initial dnext_q = 12'h0;
+    always @(posedge clock) dnext_q <= dnext_d;
+    initial c_v_q = 1'h0;
+    always @(posedge clock) c_v_q <= c_v_d;
+    initial c_slot_q = 12'h0;
+    always @(posedge clock) c_slot_q <= c_slot_d;
+    initial c_dmg_q = 1'h0;
+    always @(posedge clock) c_dmg_q <= c_dmg_d;
+    initial rtxm_q = 1'h0;
+    always @(posedge clock) rtxm_q <= rtxm_d;
+    initial rk_q = 5'h0;
+    always @(posedge clock) rk_q <= rk_d;
+    initial rtx_req_q = 12'h0;
+    always @(posedge clock) rtx_req_q <= rtx_req_d;
+    initial d_inpkt_q = 1'h0;
+    always @(posedge clock) d_inpkt_q <= d_inpkt_d;
+    initial s2_rtx_q = 1'h0;
+    always @(posedge clock) s2_rtx_q <= s2_rtx_d;
+    initial bsr_h0ok_q = 1'h0;
+    always @(posedge clock) bsr_h0ok_q <= bsr_h0ok_d;
+    initial rtx_cap_q = 5'h0;
+    always @(posedge clock) rtx_cap_q <= rtx_cap_d;
+    initial rtx_t_q = 20'h0;
+    always @(posedge clock) rtx_t_q <= rtx_t_d;
+    initial at_t_q = 1'h0;
+    always @(posedge clock) at_t_q <= at_t_d;
 endmodule // merkur_special_master
 // --------------------------------------------------------------------------
 // `aact` of `merkur_special_master`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
@@ -1781,6 +2094,37 @@ module merkur_special_master__aact(read_address,read_clock,read_data,write_addre
     end
 
 endmodule // merkur_special_master__aact
+// --------------------------------------------------------------------------
+// `crit` of `merkur_special_master`: a memory (rust-hdl RAM): written on `write_clock`, read one clock after
+// `read_address` on `read_clock`.
+// --------------------------------------------------------------------------
+module merkur_special_master__crit(read_address,read_clock,read_data,write_address,write_clock,write_data,write_enable);
+
+    // Module arguments
+    input wire  [11:0] read_address;
+    input wire  read_clock;
+    output reg  read_data;
+    input wire  [11:0] write_address;
+    input wire  write_clock;
+    input wire  write_data;
+    input wire  write_enable;
+
+    // Update code (custom)
+    reg[0:0] mem[255:0];
+    integer mem_i;
+    initial for (mem_i = 0; mem_i <= 255; mem_i = mem_i + 1) mem[mem_i] = 0;
+
+    always @(posedge read_clock) begin
+       read_data <= (read_address[11:8] == 4'd0) ? mem[read_address[7:0]] : {1{1'b0}};
+    end
+
+    always @(posedge write_clock) begin
+       if (write_enable && write_address[11:8] == 4'd0) begin
+          mem[write_address[7:0]] <= write_data;
+       end
+    end
+
+endmodule // merkur_special_master__crit
 // --------------------------------------------------------------------------
 // `dark`: SwDark, Dark time of the physical outputs after a switchbox change. (rtl/src/node/sw_dark.rs)
 //
@@ -2384,14 +2728,16 @@ endmodule // merkur_special_master__ftx__tx
 // changes), H1 passes unchanged, and the request words pass on, marked
 // when they arrive bad; the packet ends at the third idle group. A data
 // word whose good index word named the home slot is written: a
-// **sensor** (armed, not in failsafe) writes `{the value it wrote into
-// this cycle's frame, its Alive there}` over whatever the word brings; an
+// **sensor** (armed, not in failsafe) writes `{its current sample, the
+// Alive it wrote into this cycle's frame}` over whatever the word brings; an
 // **actuator** puts that Alive into a data word (its master's copy). A
 // node that wrote into the RTX without having processed the cycle's
 // frame (the last header before it was not an RTX's and no frame ended
 // since) toggles its Alive flip-flop at the RTX's end, as the frame
-// would have. A master's requests (`i_master`) are not handled yet: its
-// forwarder passes them on.
+// would have. In a **master** (`i_master`) `o_slot` shows the requested
+// slot, and a data word whose slot its data block writes (`i_slot_cfg`
+// 1 or 2) is written `{i_slot_data, its Alive there}` (an ACT slot: the
+// actuator's last Alive, `i_slot_alive`).
 //
 // Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
 // In the extended-alarm variant (protocol §6) every word has a sixth group,
@@ -2419,8 +2765,9 @@ endmodule // merkur_special_master__ftx__tx
 // | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 // | `i_armed` | in | 1 | clock | the node has processed a good header (it may fill RTX requests) |
 // | `i_wvalid`, `i_wkind`, `i_wodd`, `i_wok`, `i_walarm`, `i_wdata`, `i_ptype` | in | 1, 2, 1, 1, 1, 16, 2 | clock | INPUT's words from the receive port ([`crate::line::word_rx`]: `i_wodd` is `o_slot`'s bit 0, an RTX data word) |
-// | `o_slot` | out | 12 | clock | slot of the word passing |
+// | `o_slot` | out | 12 | clock | slot of the word passing (in an RTX: the slot its request names) |
 // | `o_rtx_own` | out | 1 | clock | the RTX request passing names the home slot (from its good index word to the next index word) |
+// | `o_rtx_idx`, `o_rtx_ok` | out | 12, 1 | clock | the slot that request names, and whether its index word was good |
 // | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 // | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 // | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
@@ -2449,7 +2796,7 @@ endmodule // merkur_special_master__ftx__tx
 //
 // (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
-module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
+module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_rtx_idx,o_rtx_ok,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
     // Module arguments
     input wire  clock;
@@ -2482,6 +2829,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     input wire  [1:0] i_ptype;
     output reg  [11:0] o_slot;
     output reg  o_rtx_own;
+    output reg  [11:0] o_rtx_idx;
+    output reg  o_rtx_ok;
     output reg  o_regen;
     output reg  o_alarm_sent;
     output reg  [3:0] o_sent_reason;
@@ -2494,6 +2843,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     localparam  jk = 10'b1100010001;
     localparam  dead_after = 4'h6;
     localparam  ext = 1'b0;
+    localparam  rtx_on = 1'b1;
 
     // Registers and child block ports
     reg  prev_d;
@@ -2556,8 +2906,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     reg  framed_q;
     reg  rtx_wrote_d;
     reg  rtx_wrote_q;
-    reg  [15:0] h_data_d;
-    reg  [15:0] h_data_q;
+    reg  idx_own_d;
+    reg  idx_own_q;
     reg  in_pa_d;
     reg  in_pa_q;
     reg  in_pb_d;
@@ -2634,6 +2984,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     reg  home_c;
     reg  own_c;
     reg  rtx_own_c;
+    reg  [15:0] addr16;
     reg  alive_now;
     reg  send_c;
     reg  [15:0] fresh_data;
@@ -2690,7 +3041,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         idx_ok_d = idx_ok_q;
         framed_d = framed_q;
         rtx_wrote_d = rtx_wrote_q;
-        h_data_d = h_data_q;
+        idx_own_d = idx_own_q;
         d_a_d = d_a_q;
         d_b_d = d_b_q;
         carry_d = carry_q;
@@ -2802,7 +3153,10 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
         home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~rtx_q & ~dead_q & ~fs_r_q;
-        rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & (idx_q == i_address) & ~i_master & ~dead_q & ~fs_r_q;
+        rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_own_q & ~i_master & ~dead_q & ~fs_r_q;
+        if (i_master) begin
+            rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & ((i_slot_cfg == 2'h1) | (i_slot_cfg == 2'h2)) & ~dead_q & ~fs_r_q;
+        end
         alive_now = toggle_q ^ (rtx_q & framed_q);
         send_c = home_c & i_alarm_req & ~prev_alarm_q & (~i_master | (i_slot_cfg != 2'h0));
         own_c = home_c;
@@ -2843,10 +3197,10 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
                 end
             end
             if (rtx_own_c) begin
-                if (~i_actuator & i_armed) begin
+                if ((~i_actuator | i_master) & i_armed) begin
                     act_c = 3'h3;
                 end
-                if (i_actuator & dec_data & (~dec_nib[3] | ext)) begin
+                if (i_actuator & ~i_master & dec_data & (~dec_nib[3] | ext)) begin
                     act_c = 3'h4;
                 end
             end
@@ -2865,8 +3219,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         end
         if (rtx_q) begin
             fresh_alive = alive_now;
-            if (framed_q) begin
-                fresh_data = h_data_q;
+            if (i_master & (i_slot_cfg == 2'h2)) begin
+                fresh_alive = i_slot_alive;
             end
         end
         fresh_rn = 4'h0;
@@ -3100,6 +3454,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
                 idles_d = 2'h0;
                 rtx_d = 1'b0;
                 idx_ok_d = 1'b0;
+                idx_own_d = 1'b0;
                 rtx_wrote_d = 1'b0;
             end
         end
@@ -3133,7 +3488,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
                     rtx_wrote_d = 1'b1;
                 end
                 if (pre_home_q) begin
-                    h_data_d = i_sensor_data;
                     prev_alarm_d = f_alarm_q;
                     sent_d = f_alarm_q;
                     sent_reason_d = f_reason_q;
@@ -3217,20 +3571,27 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             end
         end
         if (i_wvalid & (i_wkind == 2'h0)) begin
-            rtx_d = i_wok & (i_ptype == 2'h3);
+            rtx_d = i_wok & (i_ptype == 2'h3) & rtx_on;
             if (~(i_wok & (i_ptype == 2'h3))) begin
                 framed_d = 1'b0;
             end
         end
+        addr16 = ({4'h0, i_address}) | 16'h0;
         if (i_wvalid & (i_wkind == 2'h3) & ~i_wodd) begin
             idx_d = i_wdata[(0)+:(12)];
             idx_ok_d = i_wok & ~i_walarm & (i_wdata[(12)+:(4)] == 4'h0) & (i_wdata[(0)+:(12)] <= i_slots_m1);
+            idx_own_d = rtx_on & i_wok & ~i_walarm & (i_wdata == addr16);
         end
         if (i_hdr_bad) begin
             dead_d = 1'b1;
         end
         o_slot = slot_q;
-        o_rtx_own = idx_ok_q & (idx_q == i_address);
+        o_rtx_own = idx_own_q;
+        o_rtx_idx = idx_q;
+        o_rtx_ok = idx_ok_q;
+        if (rtx_q) begin
+            o_slot = idx_q;
+        end
         o_regen = regen_q;
         o_alarm_sent = sent_q;
         o_sent_reason = sent_reason_q;
@@ -3301,8 +3662,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     always @(posedge clock) framed_q <= framed_d;
     initial rtx_wrote_q = 1'h0;
     always @(posedge clock) rtx_wrote_q <= rtx_wrote_d;
-    initial h_data_q = 16'h0;
-    always @(posedge clock) h_data_q <= h_data_d;
+    initial idx_own_q = 1'h0;
+    always @(posedge clock) idx_own_q <= idx_own_d;
     initial in_pa_q = 1'h0;
     always @(posedge clock) in_pa_q <= in_pa_d;
     initial in_pb_q = 1'h0;
@@ -4141,12 +4502,14 @@ endmodule // merkur_special_master__g3__rom
 // | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 // | `i_mode` | in | 2 | clock | switchbox mode (status register) |
 // | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_reason`, `i_ok` | in | | clock | received words (from the node's INPUT port; `i_reason` the extended variant's reason nibble) |
+// | `i_rtx` | in | 1 | clock | the word is a retransmission's copy of slot `i_slot` (protocol §8; the node maps an RTX's good data word to `i_kind` = 2 and the slot its index word named): data memory only, no Alive check or state, no alarm, `o_s2_act` low |
 // | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 // | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 // | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
 // | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
 // | `o_join` | out | 1 | clock | started by JOIN |
 // | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data`, `o_s2_rn` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+// | `o_cfgw`, `o_cfgw_slot`, `o_cfgw_crit` | out | 1, 12, 1 | clock | the host wrote slot `o_cfgw_slot`'s configuration byte (one clock, combinational from the bus), and its CRIT bit (bit 4, protocol §7; not stored here, and read back as 0) |
 // | `o_running` | out | 1 | clock | the host started the ring |
 // | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
 // | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
@@ -4165,7 +4528,7 @@ endmodule // merkur_special_master__g3__rom
 // wb ack     _________/‾‾‾\_______     data read: 2 clocks
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_reason,i_ok,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_s2_rn,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
+module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_dat,o_wb_dat,o_wb_ack,i_home,i_slots_m1,i_fs,i_mode,i_wvalid,i_kind,i_slot,i_data,i_alive,i_alarm,i_reason,i_ok,i_rtx,i_hdr_bad,i_tx_slot,o_tx_data,o_tx_cfg,o_join,o_s2,o_s2_slot,o_s2_act,o_cfgw,o_cfgw_slot,o_cfgw_crit,o_s2_ok,o_s2_alive,o_s2_alarm,o_s2_data,o_s2_rn,o_running,o_irq1,o_irq2,o_irq_fs,o_irq_rc,o_alarmq,o_irq_fsc,o_fs_host,o_fs_clear,i_fs_cleared,o_aerr);
 
     // Module arguments
     input wire  clock;
@@ -4188,6 +4551,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     input wire  i_alarm;
     input wire  [3:0] i_reason;
     input wire  i_ok;
+    input wire  i_rtx;
     input wire  i_hdr_bad;
     input wire  [11:0] i_tx_slot;
     output reg  [15:0] o_tx_data;
@@ -4196,6 +4560,9 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     output reg  o_s2;
     output reg  [11:0] o_s2_slot;
     output reg  o_s2_act;
+    output reg  o_cfgw;
+    output reg  [11:0] o_cfgw_slot;
+    output reg  o_cfgw_crit;
     output reg  o_s2_ok;
     output reg  o_s2_alive;
     output reg  o_s2_alarm;
@@ -4287,6 +4654,8 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     reg  [3:0] t3_cfg_q;
     reg  s2_d;
     reg  s2_q;
+    reg  s2_rtx_d;
+    reg  s2_rtx_q;
     reg  [11:0] s2_slot_d;
     reg  [11:0] s2_slot_q;
     reg  s2_ok_d;
@@ -4436,6 +4805,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         join_d = join_q;
         rl_d = rl_q;
         s2_d = s2_q;
+        s2_rtx_d = s2_rtx_q;
         s2_slot_d = s2_slot_q;
         s2_ok_d = s2_ok_q;
         s2_alive_d = s2_alive_q;
@@ -4515,6 +4885,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
             tx_served_d = 1'b0;
         end
         s2_d = i_wvalid & (i_kind == 2'h2);
+        s2_rtx_d = i_rtx;
         s2_slot_d = i_slot;
         s2_ok_d = i_ok;
         s2_alive_d = i_alive;
@@ -4577,14 +4948,14 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         if (s2_seq) begin
             cfg_rx__write_data = s2_cfg & 4'he;
         end
-        s2_alrm = s2_q & s2_ok_q & s2_alarm_q & (s2_slot_q != i_home);
+        s2_alrm = s2_q & ~s2_rtx_q & s2_ok_q & s2_alarm_q & (s2_slot_q != i_home);
         s2_fsr = s2_rsn == 4'h3;
         if (s2_alrm & ~s2_fsr & s2_run_q & running_q) begin
             cfg_rx__write_enable = 1'b1;
         end
         s2_new = s2_fsr | ~s2_run_q | (s2_seq == s2_cfg[0]);
         if (s2_q & ~fs_frame_q) begin
-            ast__write_enable = 1'b1;
+            ast__write_enable = ~s2_rtx_q;
             if (s2_ok_q) begin
                 if (s2_alrm & s2_new) begin
                     irq_word = 16'h0;
@@ -4658,7 +5029,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
                 t3_slot_d = s2_slot_q;
                 t3_data_d = s2_data_q;
                 t3_cfg_d = s2_cfg;
-                if (s2_cfg[2]) begin
+                if (s2_cfg[2] & ~s2_rtx_q) begin
                     new_ast = (s2_ast & 6'h4) | 6'h1;
                     if (s2_alive_q) begin
                         new_ast = (s2_ast & 6'h4) | 6'h3;
@@ -4691,6 +5062,9 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         db__write_data = s2_data_q;
         ack_d = 1'b0;
         cfg_tx__write_enable = 1'b0;
+        o_cfgw = 1'b0;
+        o_cfgw_slot = i_wb_adr[(0)+:(12)];
+        o_cfgw_crit = i_wb_dat[4];
         cfg_tx__write_address = i_wb_adr[(0)+:(12)];
         cfg_tx__write_data = i_wb_dat[(0)+:(4)] & 4'he;
         if (~host_req) begin
@@ -4717,6 +5091,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
                     end
                     else begin
                         cfg_tx__write_enable = 1'b1;
+                        o_cfgw = 1'b1;
                         cfg_rx__write_enable = 1'b1;
                         cfg_rx__write_address = i_wb_adr[(0)+:(12)];
                         cfg_rx__write_data = i_wb_dat[(0)+:(4)] & 4'he;
@@ -4951,7 +5326,7 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
         end
         o_s2 = s2_q;
         o_s2_slot = s2_slot_q;
-        o_s2_act = s2_cfg[1];
+        o_s2_act = s2_cfg[1] & ~s2_rtx_q;
         o_s2_ok = s2_ok_q;
         o_s2_alive = s2_alive_q;
         o_s2_alarm = s2_alarm_q;
@@ -5016,6 +5391,8 @@ module merkur_special_master__mdb(clock,i_wb_cyc,i_wb_stb,i_wb_we,i_wb_adr,i_wb_
     always @(posedge clock) t3_cfg_q <= t3_cfg_d;
     initial s2_q = 1'h0;
     always @(posedge clock) s2_q <= s2_d;
+    initial s2_rtx_q = 1'h0;
+    always @(posedge clock) s2_rtx_q <= s2_rtx_d;
     initial s2_slot_q = 12'h0;
     always @(posedge clock) s2_slot_q <= s2_slot_d;
     initial s2_ok_q = 1'h0;
@@ -9596,7 +9973,7 @@ endmodule // merkur_special_master__tst__tx
 // PI (back)        ...L later...  | J K | H0 | H1 | slot 0 | ... -> return store
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__txs(i_ftx,i_fwd,i_cb,i_prio,i_join,o_slot);
+module merkur_special_master__txs(i_ftx,i_fwd,i_cb,i_prio,i_join,i_rtxm,i_rtx,o_slot);
 
     // Module arguments
     input wire  [11:0] i_ftx;
@@ -9604,11 +9981,16 @@ module merkur_special_master__txs(i_ftx,i_fwd,i_cb,i_prio,i_join,o_slot);
     input wire  i_cb;
     input wire  [2:0] i_prio;
     input wire  i_join;
+    input wire  i_rtxm;
+    input wire  [11:0] i_rtx;
     output reg  [11:0] o_slot;
 
     // Combinational logic
     always @(*) begin
         o_slot = i_ftx;
+        if (i_rtxm) begin
+            o_slot = i_rtx;
+        end
         if (~i_cb & ((i_prio != 3'h0) | i_join)) begin
             o_slot = i_fwd;
         end

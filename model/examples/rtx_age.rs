@@ -196,12 +196,21 @@ fn main() {
         for s in 1..=last {
             base.critical[s] = true;
         }
-        // The smallest period with room for one request, and one with room
-        // for a request per critical slot.
-        let room_all = base.rtx_start(false).expect("critical slots")
-            + config::rtx_bits(last, base.ext)
-            + config::MIN_GAP_BITS;
-        for (room, period) in [("1", base.min_period()), ("all", room_all)] {
+        // The smallest period with room for one request, and the smallest
+        // with room for a request per critical slot (at most
+        // `config::RTX_MAX`), by the model's rule.
+        let want = last.min(config::RTX_MAX);
+        base.period = base.min_period();
+        while base.rtx_capacity(false) < want {
+            base.period += 1;
+        }
+        let room_all = base.period;
+        let all = if want == last {
+            "all".to_string()
+        } else {
+            format!("{want} (the most)")
+        };
+        for (room, period) in [("1", base.min_period()), (all.as_str(), room_all)] {
             base.period = period;
             let us = |p: u32| p as f64 / base.line_rate_mbps;
             let clean = ring::run(&base);

@@ -547,17 +547,19 @@ pub fn frame_bits(slots: usize, ext: bool) -> u32 {
 /// has returned in a ring whose latency is at most `N · 12` (`N · 24`
 /// when `wrapped`), plus the gap.
 pub fn rtx_start(slots: usize, nodes: usize, ext: bool, c_max: usize, wrapped: bool) -> u32 {
-    let per_node = if wrapped {
-        NODE_DELAY_BITS + PASS_DELAY_BITS
-    } else {
-        NODE_DELAY_BITS
-    };
-    let back = nodes as u32 * per_node + JK_BITS + word_bits(ext) * (c_max as u32 + 3);
+    let back = latency_bound(nodes, wrapped) + JK_BITS + word_bits(ext) * (c_max as u32 + 3);
     frame_bits(slots, ext).max(back) + MIN_GAP_BITS
 }
 
-/// How many requests fit in a retransmission packet (protocol §8) that
-/// must end a gap before the next frame.
+/// Requests one retransmission packet carries at most (protocol §8: the
+/// clock base's list of damaged critical slots has this many places).
+pub const RTX_MAX: usize = 8;
+
+/// How many requests fit in a retransmission packet (protocol §8) whose
+/// copies are back at the clock base by the next period tick, in a ring
+/// whose latency is at most `N · 12` (`N · 24` when `wrapped`; more than
+/// the 20-bit gap the packet must leave before the next frame): at most
+/// [`RTX_MAX`].
 pub fn rtx_capacity(
     period: u32,
     slots: usize,
@@ -566,14 +568,27 @@ pub fn rtx_capacity(
     c_max: usize,
     wrapped: bool,
 ) -> usize {
-    let fixed = rtx_start(slots, nodes, ext, c_max, wrapped) + rtx_bits(0, ext) + MIN_GAP_BITS;
-    (period.saturating_sub(fixed) / (2 * word_bits(ext))) as usize
+    let fixed = rtx_start(slots, nodes, ext, c_max, wrapped)
+        + rtx_bits(0, ext)
+        + latency_bound(nodes, wrapped);
+    ((period.saturating_sub(fixed) / (2 * word_bits(ext))) as usize).min(RTX_MAX)
+}
+
+/// The ring latency the retransmission timing allows for (protocol §8):
+/// `N · 12` bit times, `N · 24` in a wrapped ring.
+fn latency_bound(nodes: usize, wrapped: bool) -> u32 {
+    let per_node = if wrapped {
+        NODE_DELAY_BITS + PASS_DELAY_BITS
+    } else {
+        NODE_DELAY_BITS
+    };
+    nodes as u32 * per_node
 }
 
 /// The period a ring with critical slots up to `c_max` needs at least
 /// for one retransmission request in the healthy ring (protocol §8).
 pub fn rtx_min_period(slots: usize, nodes: usize, ext: bool, c_max: usize) -> u32 {
-    rtx_start(slots, nodes, ext, c_max, false) + rtx_bits(1, ext) + MIN_GAP_BITS
+    rtx_start(slots, nodes, ext, c_max, false) + rtx_bits(1, ext) + latency_bound(nodes, false)
 }
 
 /// Bit times of a retransmission packet with `k` requests: J K, two
@@ -1127,9 +1142,10 @@ fn check_timing(
             return Err(m.at(
                 cr,
                 format!(
-                    "frame.critical: critical slot {c} needs room for a retransmission packet after the frame (protocol §8): frame.period_bits = {v} leaves none; it must be at least {need} bit times (the packet leaves {} bit times after the J K and one request takes {}, plus the gap {MIN_GAP_BITS}; lower critical slots need less)",
+                    "frame.critical: critical slot {c} needs room for a retransmission packet after the frame (protocol §8): frame.period_bits = {v} leaves none; it must be at least {need} bit times (the packet leaves {} bit times after the J K and one request takes {}, plus {} for its copy to come back, the latency bound N · 12; lower critical slots need less)",
                     rtx_start(slots, n, ext, c, false),
-                    rtx_bits(1, ext)
+                    rtx_bits(1, ext),
+                    latency_bound(n, false)
                 ),
             ));
         }

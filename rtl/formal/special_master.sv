@@ -3,11 +3,12 @@
 // memories 256 deep, as for a ring of up to 256 slots); every input is
 // free in every clock but the static configuration. Proved by k-induction.
 //
-// - one_frame_per_period: once the host has started the ring, the frame
-//   generator is started (`ftx`'s start, the period tick) exactly once
-//   every P bit times of the node's clock (P = i_period; a bit time is 2
-//   clocks, §16): never sooner, and never more than P bit times without
-//   one while running;
+// - one_frame_per_period: once the host has started the ring, the period
+//   tick (`tick`, which starts the frame generator; its other start, a
+//   retransmission packet T bit times later, §8, is not a tick) comes
+//   exactly once every P bit times of the node's clock (P = i_period; a
+//   bit time is 2 clocks, §16): never sooner, and never more than P bit
+//   times without one while running;
 // - cs_timeout: after its first returned frame, the special master
 //   counts the clocks since the last returned packet other than a TST
 //   (a header word back on INPUT, good or damaged, that is not a good
@@ -29,7 +30,9 @@ module special_master_props (
     input wire [19:0] i_period, input wire [19:0] i_cs_timeout,
     input wire i_wb_cyc, input wire i_wb_stb, input wire i_wb_we,
     input wire [13:0] i_wb_adr, input wire [15:0] i_wb_dat,
-    input wire i_irq1, input wire i_irq2, input wire i_fs_req
+    input wire i_irq1, input wire i_irq2, input wire i_fs_req,
+    input wire [19:0] i_rtx_at, input wire [19:0] i_rtx_atw,
+    input wire [4:0] i_rtx_k, input wire [4:0] i_rtx_kw
 );
     // Periods: from 2 bit times (wider than protocol §8, whose shortest
     // period holds a whole frame: the tick logic must not care) up to §8's
@@ -50,7 +53,8 @@ module special_master_props (
         // backup's election and a restarted special master's JOIN into a
         // ring with backups are not under proof here).
         .i_prio(3'd0), .i_elect(20'd0), .i_flying(1'b0),
-        .ftx__i_start(tick), .mdb__o_running(running), .half_q(half_q),
+        .i_rtx_at(i_rtx_at), .i_rtx_atw(i_rtx_atw), .i_rtx_k(i_rtx_k), .i_rtx_kw(i_rtx_kw),
+        .tick(tick), .mdb__o_running(running), .half_q(half_q),
         .bcnt_q(bcnt_q), .quiet_q(quiet_q), .armed_q(armed_q),
         .failsafe_q(failsafe_q), .rx_in__o_wvalid(rx_wvalid),
         .rx_in__o_kind(rx_kind), .rx_in__o_ok(rx_ok), .rx_in__o_ptype(rx_ptype)
@@ -60,7 +64,9 @@ module special_master_props (
     always @(posedge clock) past_valid <= 1'b1;
     always @(posedge clock) if (past_valid) begin
         static_cfg: assume (i_period == $past(i_period) && i_cs_timeout == $past(i_cs_timeout)
-                            && i_slots_m1 == $past(i_slots_m1) && i_address == $past(i_address));
+                            && i_slots_m1 == $past(i_slots_m1) && i_address == $past(i_address)
+                            && i_rtx_at == $past(i_rtx_at) && i_rtx_atw == $past(i_rtx_atw)
+                            && i_rtx_k == $past(i_rtx_k) && i_rtx_kw == $past(i_rtx_kw));
     end
     always @(*) period_range: assume (i_period >= 20'd2 && i_period <= P_MAX);
 

@@ -226,7 +226,7 @@ fn special_master() -> Proof {
         256,
     );
     let wires = [
-        "ftx__i_start",
+        "tick",
         "mdb__o_running",
         "half_q",
         "bcnt_q",

@@ -153,11 +153,6 @@ pub struct Options {
 
 /// What the RTL ring does not model yet, as a message naming the field.
 pub fn unsupported(cfg: &Config) -> Option<String> {
-    if let Some(s) = cfg.last_critical() {
-        return Some(format!(
-            "frame.critical (slot {s}): retransmission on demand (protocol §8) is in the model only; no RTL node sends or fills the retransmission packet yet"
-        ));
-    }
     if cfg
         .faults
         .iter()
@@ -192,9 +187,22 @@ pub fn flip_unsupported(recs: &[CycleRecord], n: usize, c: u32, f: Fault) -> Opt
         _ => return None,
     };
     if matches!(target, FlipTarget::RtxHead | FlipTarget::Rtx(_)) {
-        return Some(
-            "a flip in the retransmission packet: the RTL has no retransmission packet yet".into(),
-        );
+        let fi = fibre.index(n);
+        let on = recs[c as usize]
+            .rtx
+            .as_ref()
+            .is_some_and(|x| x.fibres.contains(&fi));
+        if !on {
+            return Some(format!(
+                "fibre = {fibre}: the cycle's retransmission packet does not travel it (by the model); the RTL harness places a flip in a packet it carries"
+            ));
+        }
+        if target == FlipTarget::RtxHead && bit < 2 {
+            return Some(format!(
+                "bit = {bit}: the RTL harness finds J K by its first 0 code bit (bit 2) and can flip delimiter bits 2..9 only"
+            ));
+        }
+        return None;
     }
     if target == FlipTarget::Cs && bit < 2 {
         return Some(format!(
@@ -238,8 +246,10 @@ fn packet_bit(target: FlipTarget, bit: u32, w: u64) -> u64 {
         FlipTarget::H0 => 10,
         FlipTarget::H1 => 10 + w,
         FlipTarget::Slot(s) => 10 + w * (2 + s as u64),
-        // Refused by `flip_unsupported` before any run.
-        FlipTarget::RtxHead | FlipTarget::Rtx(_) => unreachable!("no RTX in the RTL"),
+        // The retransmission packet (protocol §8): J K, H0, H1, then its
+        // request words.
+        FlipTarget::RtxHead => 0,
+        FlipTarget::Rtx(j) => 10 + w * (2 + j as u64),
     };
     word + bit as u64
 }
@@ -254,6 +264,9 @@ enum When {
     FrameEnded(usize),
     /// A flip of the SEC on this fibre: armed when this many SECs passed.
     Secs(usize, u64),
+    /// A flip of the cycle's retransmission packet on this fibre: armed
+    /// when the cycle's frame has ended there.
+    RtxNext(usize),
     /// When the clock base has started the cycle's frame (a restart).
     Started,
 }
@@ -512,6 +525,10 @@ struct Snapshots {
     next: Vec<u32>,
     due: Vec<Option<(u32, u64)>>,
     got: Vec<std::collections::BTreeMap<u32, [u64; 4]>>,
+    /// Per cycle with a retransmission packet (protocol §8): the fibres it
+    /// travels and the ticks from the frame's H1 until it has passed
+    /// (its bad words count in the cycle).
+    rtx_tail: Vec<Option<(Vec<usize>, u64)>>,
 }
 
 const COUNTERS: [(u32, &str); 4] = [
@@ -522,11 +539,27 @@ const COUNTERS: [(u32, &str); 4] = [
 ];
 
 impl Snapshots {
-    fn new(n: usize) -> Self {
+    fn new(n: usize, cfg: &Config, recs: &[CycleRecord]) -> Self {
+        let rtx = merkur_rtl::top::synth_top::RtxStatic::of(cfg);
+        let head = 10 + 2 * cfg.word_bits() as u64;
+        let rtx_tail = recs
+            .iter()
+            .map(|rec| {
+                let x = rec.rtx.as_ref()?;
+                let at = if rec.nodes[rec.base].rw {
+                    rtx.at_wrapped
+                } else {
+                    rtx.at
+                } as u64;
+                let bits = (at + x.bits as u64 + 8).saturating_sub(head);
+                Some((x.fibres.clone(), bits * TICKS_PER_BIT as u64))
+            })
+            .collect();
         Snapshots {
             next: vec![0; n],
             due: vec![None; n],
             got: vec![Default::default(); n],
+            rtx_tail,
         }
     }
 
@@ -575,8 +608,17 @@ impl Snapshots {
             let th1 = r.rd(f, st::TH1);
             if th1.wrapping_sub(starts[c as usize]) & 0xffff_ffff < 1 << 31 {
                 // 8 bit times: the node has counted the last word; the next
-                // frame's first slot is at least 80 bit times away.
-                self.due[k] = Some((c, r.ticks + 8 * TICKS_PER_BIT as u64));
+                // frame's first slot is at least 80 bit times away. With a
+                // retransmission packet on the fibre, 8 bit times after it.
+                let mut at = r.ticks + 8 * TICKS_PER_BIT as u64;
+                if let Some((fs, tail)) = &self.rtx_tail[c as usize] {
+                    if fs.contains(&f) {
+                        let h1 = starts[c as usize]
+                            + (th1.wrapping_sub(starts[c as usize]) & 0xffff_ffff);
+                        at = at.max(h1 + tail);
+                    }
+                }
+                self.due[k] = Some((c, at));
             }
         }
     }

@@ -100,6 +100,7 @@ fn every_top_level_port_is_constrained() {
         address: 1,
         slots: 9,
         period: 330,
+        rtx: Default::default(),
         diag: true,
         format: WordFormat::Basic,
     };

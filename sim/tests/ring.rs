@@ -120,10 +120,30 @@ fn ring8_ext_alarm_agrees_with_the_model() {
     passes("ring8_ext_alarm.toml");
 }
 
+/// Retransmission on demand (protocol §8) on 8 nodes: critical copies
+/// damaged behind their writers (sensors, a master's actuator slot) are
+/// filled again in the same period and taken by every node behind the
+/// writer; a retransmitted copy hit in its data word, a packet hit in its
+/// head, a non-critical slot left alone, the packet through a wrapped
+/// ring, a damaged frame header that requests every critical slot.
+#[test]
+fn ring8_rtx_agrees_with_the_model() {
+    passes("ring8_rtx.toml");
+}
+
+/// Retransmission on demand on 100 nodes: a sensor's, a master's own and
+/// two actuator slots (one the special master fills itself), three
+/// requests in one packet with one copy hit, a damaged header.
+#[test]
+fn ring100_rtx_agrees_with_the_model() {
+    passes("ring100_rtx.toml");
+}
+
 /// Scenarios written for the basic variant, run with six-group words: IRQs,
 /// alarms damaged by bit errors and repeated, a break, a double fault into
-/// failsafe, a FAILSAFE request, bursts of garbage on 32 nodes (the
-/// ring100 ones, run by hand, are in docs/benchmarks.md).
+/// failsafe, a FAILSAFE request, bursts of garbage on 32 nodes,
+/// retransmission on demand (the ring100 ones, run by hand, are in
+/// docs/benchmarks.md).
 #[test]
 fn basic_scenarios_agree_in_the_extended_variant() {
     for name in [
@@ -133,6 +153,7 @@ fn basic_scenarios_agree_in_the_extended_variant() {
         "ring8_double.toml",
         "ring8_failsafe_request.toml",
         "ring32_burst.toml",
+        "ring8_rtx.toml",
     ] {
         passes_cfg(&format!("{name} with alarm_bits"), &load_extended(name));
     }

@@ -67,7 +67,14 @@ fn segment(code: &mut Vec<u8>, seg: Seg, cycle: u8, ext: bool, rng: &mut Rng) {
 
 #[test]
 fn wrap_reintegrate_and_failsafe() {
-    wrap_reintegrate_and_failsafe_in(WordFormat::Basic);
+    wrap_reintegrate_and_failsafe_in(WordFormat::Basic, true);
+}
+
+/// The slave `merkur synth` builds for a ring without critical slots
+/// (without retransmission on demand, protocol §8): the same story.
+#[test]
+fn wrap_reintegrate_and_failsafe_without_retransmission() {
+    wrap_reintegrate_and_failsafe_in(WordFormat::Basic, false);
 }
 
 /// The same story with extended-alarm words (protocol §6): six-group words
@@ -75,13 +82,13 @@ fn wrap_reintegrate_and_failsafe() {
 /// value in the data bits.
 #[test]
 fn wrap_reintegrate_and_failsafe_extended() {
-    wrap_reintegrate_and_failsafe_in(WordFormat::ExtendedAlarm);
+    wrap_reintegrate_and_failsafe_in(WordFormat::ExtendedAlarm, true);
 }
 
 /// One slave through wrap, link test, reintegration, a second fault,
 /// failsafe and CLR, step by step (about 170 lines: one story, each step's
 /// stimulus beside its check).
-fn wrap_reintegrate_and_failsafe_in(format: WordFormat) {
+fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
     let ext = format == WordFormat::ExtendedAlarm;
     let seed = Rng::seed(0x5a7e);
     let mut rng = Rng::new(seed);
@@ -119,7 +126,7 @@ fn wrap_reintegrate_and_failsafe_in(format: WordFormat) {
     ));
     let n = pi.len().min(si.len());
 
-    let mut s = Model::build(&block_verilog(Slave::new(format))).unwrap();
+    let mut s = Model::build(&block_verilog(Slave::with_rtx(format, rtx))).unwrap();
     let mut mpo = Model::build(&block_verilog(Monitor::new(format))).unwrap();
     let mut mso = Model::build(&block_verilog(Monitor::new(format))).unwrap();
     let p = |m: &Model, x: &str| m.port(x);

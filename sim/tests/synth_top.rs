@@ -65,6 +65,7 @@ fn st(kind: Kind) -> NodeStatic {
         address: 3,
         slots: 9,
         period: 330,
+        rtx: Default::default(),
         diag: true,
         format: WordFormat::Basic,
     }

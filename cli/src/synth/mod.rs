@@ -753,6 +753,7 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
             address: cfg.nodes[k].address,
             slots: cfg.slots,
             period: cfg.period,
+            rtx: synth_top::RtxStatic::of(&cfg),
             diag: o.diag,
             format: if cfg.ext {
                 WordFormat::ExtendedAlarm

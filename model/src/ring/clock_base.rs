@@ -310,10 +310,14 @@ impl Ring {
             self.exit.request = true;
         }
         let HeaderRx::Ok(h) = frame.hdr else {
-            // The frame came back, its header (or start delimiter) damaged:
+            // The frame came back, its header damaged after a good H0:
             // every node behind the damage ignored it, so every critical
-            // slot is requested (§8).
-            self.damaged = self.cfg.critical_slots();
+            // slot is requested (§8). Without its start delimiter or with
+            // H0 unreadable it is no frame to the clock base (and a wrapped
+            // ring's relay drops it): nothing is requested.
+            if frame.hdr == HeaderRx::Bad && !frame.hdr_bad.0 {
+                self.damaged = self.cfg.critical_slots();
+            }
             self.store = vec![Slot::Void; s_count];
             self.store_born = vec![None; s_count];
             self.nodes[sm].hop = None;

@@ -210,6 +210,10 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(tst_tx::TstTx::new(WordFormat::ExtendedAlarm)),
         ),
         ("slave", block_verilog(slave::Slave::default())),
+        (
+            "slave_no_rtx",
+            block_verilog(slave::Slave::with_rtx(WordFormat::Basic, false)),
+        ),
         ("pkt_tx", block_verilog(pkt_tx::PktTx::default())),
         ("mdb", block_verilog(mdb::Mdb::default())),
         ("master", block_verilog(master::Master::default())),
@@ -266,14 +270,14 @@ mod tests {
     fn memories_are_resized_with_every_access_guarded() {
         let full = block_verilog(crate::node::special_master::SpecialMaster::default());
         let mems = memories(&full);
-        // The return store, the sent-alarm and alarm-ACT bits, and the
-        // database's data, two configuration copies and Alive state, 4096
-        // deep; the database's alarm queue, 32 deep (16 entries of two
+        // The return store, the sent-alarm, alarm-ACT and CRIT bits, and
+        // the database's data, two configuration copies and Alive state,
+        // 4096 deep; the database's alarm queue, 32 deep (16 entries of two
         // words), which keeps its depth.
-        assert_eq!(mems.len(), 8, "{mems:?}");
+        assert_eq!(mems.len(), 9, "{mems:?}");
         assert_eq!(
             mems.iter().filter(|&&(_, d)| d == 4096).count(),
-            7,
+            8,
             "{mems:?}"
         );
         assert!(mems.contains(&(16, 32)), "{mems:?}");
@@ -286,22 +290,22 @@ mod tests {
                 .collect::<Vec<_>>()
         );
         let count = |v: &str, pat: &str| v.matches(pat).count();
-        assert_eq!(count(&sized, "mem_i <= 255;"), 7);
+        assert_eq!(count(&sized, "mem_i <= 255;"), 8);
         assert_eq!(
             count(
                 &sized,
                 "(read_address[11:8] == 4'd0) ? mem[read_address[7:0]]"
             ),
-            7
+            8
         );
         assert_eq!(
             count(
                 &sized,
                 "if (write_enable && write_address[11:8] == 4'd0) begin"
             ),
-            7
+            8
         );
-        assert_eq!(count(&sized, "mem[write_address[7:0]] <= write_data;"), 7);
+        assert_eq!(count(&sized, "mem[write_address[7:0]] <= write_data;"), 8);
         assert_eq!(
             count(&sized, "mem[read_address]"),
             1,

@@ -138,6 +138,15 @@ pub mod cfg {
     /// `val[23:12]` ≠ 0, a burst of that many bits of garbage from there
     /// (`merkur_model::line::garbage` of the pattern `val[31:24]`).
     pub const FLIP: u32 = 9;
+    /// Clock-base node: bit times after the period tick at which a
+    /// retransmission packet goes (protocol §8), `val[19:0]` in the
+    /// healthy ring; [`RTX_ATW`] in a wrapped one.
+    pub const RTX_AT: u32 = 12;
+    /// Clock-base node: as [`RTX_AT`], in a ring it knows wrapped.
+    pub const RTX_ATW: u32 = 13;
+    /// Clock-base node: requests that fit, `val[4:0]` healthy and
+    /// `val[9:5]` wrapped (0: none is sent).
+    pub const RTX_K: u32 = 14;
     /// Global: slots − 1.
     pub const SLOTS_M1: u32 = 16;
     /// Global: CS timeout in node clocks.
@@ -233,12 +242,21 @@ pub fn module_name(kind: Kind) -> &'static str {
 /// [`mem_depth`]`(slots)` deep ([`size_memories`]). Simulation and
 /// synthesis both use this text.
 pub fn node_verilog(kind: Kind, slots: usize, format: WordFormat) -> String {
+    node_verilog_with(kind, slots, format, true)
+}
+
+/// [`node_verilog`], with the node built without retransmission on demand
+/// when `rtx` is false ([`crate::node::slave::Slave::with_rtx`] and the
+/// masters' `with_rtx`: for a ring without critical slots).
+pub fn node_verilog_with(kind: Kind, slots: usize, format: WordFormat, rtx: bool) -> String {
     let v = match kind {
-        Kind::Sensor | Kind::Actuator => block_verilog(crate::node::slave::Slave::new(format)),
-        Kind::Master => block_verilog(crate::node::master::Master::new(format)),
-        Kind::SpecialMaster => {
-            block_verilog(crate::node::special_master::SpecialMaster::new(format))
+        Kind::Sensor | Kind::Actuator => {
+            block_verilog(crate::node::slave::Slave::with_rtx(format, rtx))
         }
+        Kind::Master => block_verilog(crate::node::master::Master::with_rtx(format, rtx)),
+        Kind::SpecialMaster => block_verilog(crate::node::special_master::SpecialMaster::with_rtx(
+            format, rtx,
+        )),
     };
     rename_top(&size_memories(&v, mem_depth(slots)), module_name(kind))
 }
@@ -727,11 +745,11 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
                 &mut v,
                 &format!(
                     "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
-                     \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k};\n    wire [3:0] u_reason_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+                     \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k}, u_rtx_{k};\n    wire [3:0] u_reason_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
                      \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
                      \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
                      \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
-                     \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_reason(u_reason_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}),\n\
+                     \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_reason(u_reason_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}), .o_rtx(u_rtx_{k}),\n\
                      \x20       .o_act_data(act_{k}), .o_mode(mode_{k}), .o_failsafe(fs_{k}), .o_perr(perr_{k}), .o_ferr(ferr_{k}));\n\
                      \x20   wire [15:0] aerr_{k} = 16'd0;\n    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire [15:0] frames_{k} = 16'd0;\n    wire run_{k} = 1'b1;\n    assign irq1_{k} = 1'b0;\n    assign irq2_{k} = 1'b0;\n    assign irqfs_{k} = 1'b0;\n    assign irqrc_{k} = 1'b0;\n    assign irqfsc_{k} = 1'b0;"
                 ),
@@ -744,22 +762,32 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
                         "    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};\n\
                          \x20   // Backup priority and election time (static: written before the start).\n\
                          \x20   reg [2:0] prio_{k} = 3'd0;\n    reg [19:0] elect_{k} = 20'd0;\n\
+                         \x20   // Retransmission timing (static: written before the start).\n\
+                         \x20   reg [19:0] rtx_at_{k} = 20'd0;\n    reg [19:0] rtx_atw_{k} = 20'd0;\n    reg [9:0] rtx_k_{k} = 10'd0;\n\
                          \x20   always @(posedge clk) begin\n\
                          \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{pf}) prio_{k} <= i_cfg_val[2:0];\n\
                          \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{ef}) elect_{k} <= i_cfg_val[19:0];\n\
+                         \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{ra}) rtx_at_{k} <= i_cfg_val[19:0];\n\
+                         \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{rw}) rtx_atw_{k} <= i_cfg_val[19:0];\n\
+                         \x20       if (i_cfg_we && i_cfg_sel == 16'd{k} && i_cfg_field == 8'd{rk}) rtx_k_{k} <= i_cfg_val[9:0];\n\
                          \x20   end\n\
                          \x20   // On the node's clock, as its other inputs (so that its logic is evaluated at its own edges only).\n\
                          \x20   reg [2:0] prio_r_{k} = 3'd0;\n    reg [19:0] elect_r_{k} = 20'd0;\n\
-                         \x20   always @(posedge nclk_{k}) begin\n        prio_r_{k} <= prio_{k};\n        elect_r_{k} <= elect_{k};\n    end\n\
+                         \x20   reg [19:0] rtx_at_r_{k} = 20'd0;\n    reg [19:0] rtx_atw_r_{k} = 20'd0;\n    reg [9:0] rtx_k_r_{k} = 10'd0;\n\
+                         \x20   always @(posedge nclk_{k}) begin\n        prio_r_{k} <= prio_{k};\n        elect_r_{k} <= elect_{k};\n\
+                         \x20       rtx_at_r_{k} <= rtx_at_{k};\n        rtx_atw_r_{k} <= rtx_atw_{k};\n        rtx_k_r_{k} <= rtx_k_{k};\n    end\n\
                          \x20   // Frames sent while alive (the epoch of the capture, and the driver's frame count).\n\
                          \x20   reg [15:0] cyc_was_{k} = 16'd0;\n    reg [15:0] frames_{k} = 16'd0;\n\
                          \x20   always @(posedge clk) begin\n        cyc_was_{k} <= cycles_{k};\n\
                          \x20       if (!dead_{k} && cycles_{k} != cyc_was_{k}) frames_{k} <= frames_{k} + 16'd1;\n    end\n\
                          \x20   /* verilator lint_off UNUSEDSIGNAL */\n    wire base_{k}; // the driver counts frames by `frames`\n    /* verilator lint_on UNUSEDSIGNAL */",
                         pf = cfg::PRIO,
-                        ef = cfg::ELECT
+                        ef = cfg::ELECT,
+                        ra = cfg::RTX_AT,
+                        rw = cfg::RTX_ATW,
+                        rk = cfg::RTX_K
                     ),
-                    format!(".i_period(period_r_{k}), .i_prio(prio_r_{k}), .i_elect(elect_r_{k}), .i_flying(1'b{}), .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}), .o_base(base_{k}),", u8::from(flying)),
+                    format!(".i_period(period_r_{k}), .i_prio(prio_r_{k}), .i_elect(elect_r_{k}), .i_flying(1'b{}),\n        .i_rtx_at(rtx_at_r_{k}), .i_rtx_atw(rtx_atw_r_{k}), .i_rtx_k(rtx_k_r_{k}[4:0]), .i_rtx_kw(rtx_k_r_{k}[9:5]),\n        .o_serr(serr_{k}), .o_hop(hop_{k}), .o_cycles(cycles_{k}), .o_base(base_{k}),", u8::from(flying)),
                 )
             } else {
                 (
@@ -818,7 +846,7 @@ fn fibre(f: usize, n: usize, capw: usize, ext: bool) -> String {
              \x20       .o_old(old_{f}), .o_fr(fr_{f}));\n\
              \x20   wire m_los_{f}, m_wvalid_{f}, m_alive_{f}, m_alarm_{f}, m_ok_{f}, m_void_{f}, m_marked_{f};\n    wire [1:0] m_kind_{f}, m_ptype_{f};\n    wire [11:0] m_slot_{f};\n    wire [15:0] m_data_{f};\n\
              \x20   {reason_decl}\
-             \x20   /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_hdrbad_{f}, m_compl_{f};\n    {reason_unused}wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
+             \x20   wire m_hdrbad_{f};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // Monitor outputs the capture does not need.\n    wire m_bvalid_{f}, m_level_{f}, m_start_{f}, m_inpkt_{f}, m_own_{f}, m_compl_{f};\n    {reason_unused}wire [1:0] m_phase_{f};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
              \x20   merkur_monitor mon_{f}(.clock(mclk), .i_samples({{line_{f}, sh_{f}}}), .i_slots_m1(slots_m1), .i_address(12'hfff), .i_flush(1'b0),\n\
              \x20       .o_los(m_los_{f}), .o_bvalid(m_bvalid_{f}), .o_level(m_level_{f}), .o_phase(m_phase_{f}), .o_start(m_start_{f}), .o_inpkt(m_inpkt_{f}),\n\
              \x20       .o_wvalid(m_wvalid_{f}), .o_kind(m_kind_{f}), .o_slot(m_slot_{f}), .o_data(m_data_{f}), .o_alive(m_alive_{f}), .o_alarm(m_alarm_{f}),\n\
@@ -837,6 +865,10 @@ fn fibre(f: usize, n: usize, capw: usize, ext: bool) -> String {
              \x20           h1_{f} <= m_data_{f};\n            th1_{f} <= tick;\n            lslot_{f} <= 12'hfff;\n            hdr_cyc_{f} <= m_data_{f}[14:12];\n            infr_{f} <= 1'b1;\n\
              \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b0}}] = {{{rz}epoch, m_data_{f}[14:12], 2'd1, 2'd0, h0_{f}}};\n\
              \x20           cap_{f}[{{1'b1, {hz}m_data_{f}[13:12], 1'b1}}] = {{{rz}epoch, m_data_{f}[14:12], 2'd1, 2'd0, m_data_{f}}};\n        end\n\
+             \x20       // A DATA frame whose H1 was damaged (after a good H0: the header is rejected at H1) is the next cycle's all\n\
+             \x20       // the same: a sensor that missed it fills a retransmission request of that cycle with that cycle's value\n\
+             \x20       // (protocol §8).\n\
+             \x20       if (m_hdrbad_{f} && m_kind_{f} == 2'd1 && m_ptype_{f} == 2'd0) hdr_cyc_{f} <= hdr_cyc_{f} + 3'd1;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd1) nsec_{f} <= nsec_{f} + 16'd1;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd1 && m_ok_{f} && m_ptype_{f} == 2'd2) ntst_{f} <= ntst_{f} + 16'd1;\n\
              \x20       if (m_wvalid_{f} && m_kind_{f} == 2'd2) begin\n            lslot_{f} <= m_slot_{f};\n\

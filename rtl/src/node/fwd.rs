@@ -41,14 +41,16 @@
 //! changes), H1 passes unchanged, and the request words pass on, marked
 //! when they arrive bad; the packet ends at the third idle group. A data
 //! word whose good index word named the home slot is written: a
-//! **sensor** (armed, not in failsafe) writes `{the value it wrote into
-//! this cycle's frame, its Alive there}` over whatever the word brings; an
+//! **sensor** (armed, not in failsafe) writes `{its current sample, the
+//! Alive it wrote into this cycle's frame}` over whatever the word brings; an
 //! **actuator** puts that Alive into a data word (its master's copy). A
 //! node that wrote into the RTX without having processed the cycle's
 //! frame (the last header before it was not an RTX's and no frame ended
 //! since) toggles its Alive flip-flop at the RTX's end, as the frame
-//! would have. A master's requests (`i_master`) are not handled yet: its
-//! forwarder passes them on.
+//! would have. In a **master** (`i_master`) `o_slot` shows the requested
+//! slot, and a data word whose slot its data block writes (`i_slot_cfg`
+//! 1 or 2) is written `{i_slot_data, its Alive there}` (an ACT slot: the
+//! actuator's last Alive, `i_slot_alive`).
 //!
 //! Parameters: the word format ([`WordFormat`], as [`crate::line::word_rx`]).
 //! In the extended-alarm variant (protocol §6) every word has a sixth group,
@@ -76,8 +78,9 @@
 //! | `i_slot_cfg`, `i_slot_data`, `i_slot_alive` | in | 2, 16, 1 | clock | master: what it writes in slot `o_slot` (0 nothing, 1 LOCAL, 2 ACT, 3 its home slot without a value: only an alarm, protocol §12), data memory and actuator Alive of that slot, valid by the word's first group |
 //! | `i_armed` | in | 1 | clock | the node has processed a good header (it may fill RTX requests) |
 //! | `i_wvalid`, `i_wkind`, `i_wodd`, `i_wok`, `i_walarm`, `i_wdata`, `i_ptype` | in | 1, 2, 1, 1, 1, 16, 2 | clock | INPUT's words from the receive port ([`crate::line::word_rx`]: `i_wodd` is `o_slot`'s bit 0, an RTX data word) |
-//! | `o_slot` | out | 12 | clock | slot of the word passing |
+//! | `o_slot` | out | 12 | clock | slot of the word passing (in an RTX: the slot its request names) |
 //! | `o_rtx_own` | out | 1 | clock | the RTX request passing names the home slot (from its good index word to the next index word) |
+//! | `o_rtx_idx`, `o_rtx_ok` | out | 12, 1 | clock | the slot that request names, and whether its index word was good |
 //! | `o_regen` | out | 1 | clock | master: an ACT slot's VOID was regenerated |
 //! | `o_alarm_sent`, `o_sent_reason` | out | 1, 4 | clock | the alarm went out, and which |
 //! | `o_prev_alarm` | out | 1 | clock | the last home-slot word sent was an alarm (so the next must be data) |
@@ -188,6 +191,11 @@ pub struct Fwd {
     /// The RTX request being passed names the home slot (from its good
     /// index word until the next index word).
     pub o_rtx_own: Signal<Out, Bit>,
+    /// The slot the RTX request being passed names, and whether its index
+    /// word was good (same timing).
+    pub o_rtx_idx: Signal<Out, Bits<12>>,
+    /// See `o_rtx_idx`.
+    pub o_rtx_ok: Signal<Out, Bit>,
     /// A VOID in an ACT slot was regenerated (the Alive flips).
     pub o_regen: Signal<Out, Bit>,
     /// Alarm sent.
@@ -206,6 +214,8 @@ pub struct Fwd {
     dead_after: Constant<Bits<4>>,
     // Extended-alarm words (six groups, N1 the reason nibble).
     ext: Constant<Bit>,
+    // Retransmission on demand is built in (see [`Fwd::with_rtx`]).
+    rtx_on: Constant<Bit>,
     prev: DFF<Bit>,
     window: DFF<Bits<10>>,
     delay: DFF<Bits<6>>,
@@ -239,13 +249,14 @@ pub struct Fwd {
     // slot its last index word named, and whether that word was good and
     // named a slot; a frame was processed since the last header that was
     // not an RTX's (the node toggled its Alive for this cycle); the node
-    // wrote into this RTX; its home slot's sensor value in the last frame.
+    // wrote into this RTX; the last index word was good and named the home
+    // slot.
     rtx: DFF<Bit>,
     idx: DFF<Bits<12>>,
     idx_ok: DFF<Bit>,
     framed: DFF<Bit>,
     rtx_wrote: DFF<Bit>,
-    h_data: DFF<Bits<16>>,
+    idx_own: DFF<Bit>,
     // The incoming word so far (for the mark): parities, all data, all S.
     in_pa: DFF<Bit>,
     in_pb: DFF<Bit>,
@@ -296,6 +307,7 @@ pub struct Fwd {
     home_c: Signal<Local, Bit>,
     own_c: Signal<Local, Bit>,
     rtx_own_c: Signal<Local, Bit>,
+    addr16: Signal<Local, Bits<16>>,
     alive_now: Signal<Local, Bit>,
     send_c: Signal<Local, Bit>,
     fresh_data: Signal<Local, Bits<16>>,
@@ -320,8 +332,15 @@ impl Default for Fwd {
 }
 
 impl Fwd {
-    /// A forwarder of words in `format`.
+    /// A forwarder of words in `format`, with retransmission on demand.
     pub fn new(format: WordFormat) -> Self {
+        Self::with_rtx(format, true)
+    }
+
+    /// A forwarder of words in `format`; without retransmission on demand
+    /// (`rtx` false: a ring without critical slots) an RTX's words are
+    /// never processed, and synthesis drops that logic.
+    pub fn with_rtx(format: WordFormat, rtx: bool) -> Self {
         Self {
             clock: Default::default(),
             i_bvalid: Default::default(),
@@ -352,6 +371,8 @@ impl Fwd {
             i_wdata: Default::default(),
             i_ptype: Default::default(),
             o_rtx_own: Default::default(),
+            o_rtx_idx: Default::default(),
+            o_rtx_ok: Default::default(),
             o_slot: Default::default(),
             o_regen: Default::default(),
             o_alarm_sent: Default::default(),
@@ -363,6 +384,7 @@ impl Fwd {
             jk: Constant::new(crate::line::framer_rx::JK_BITS.to_bits()),
             dead_after: Constant::new(DEAD_CLOCKS.to_bits()),
             ext: Constant::new(format == WordFormat::ExtendedAlarm),
+            rtx_on: Constant::new(rtx),
             prev: Default::default(),
             window: Default::default(),
             delay: Default::default(),
@@ -393,7 +415,7 @@ impl Fwd {
             idx_ok: Default::default(),
             framed: Default::default(),
             rtx_wrote: Default::default(),
-            h_data: Default::default(),
+            idx_own: Default::default(),
             in_pa: Default::default(),
             in_pb: Default::default(),
             in_data: Default::default(),
@@ -441,6 +463,7 @@ impl Fwd {
             home_c: Default::default(),
             own_c: Default::default(),
             rtx_own_c: Default::default(),
+            addr16: Default::default(),
             alive_now: Default::default(),
             send_c: Default::default(),
             fresh_data: Default::default(),
@@ -496,7 +519,7 @@ impl Logic for Fwd {
             idx_ok,
             framed,
             rtx_wrote,
-            h_data,
+            idx_own,
             d_a,
             d_b,
             carry,
@@ -626,16 +649,25 @@ impl Logic for Fwd {
             & !self.rtx.q.val()
             & !self.dead.q.val()
             & !self.fs_r.q.val();
-        // An RTX's data word whose index word named the home slot (a
-        // master's requests are not handled here yet).
+        // An RTX's data word whose index word named a slot the node writes:
+        // its home slot; in a master, a slot its data block writes (LOCAL or
+        // ACT with a value, `i_slot_cfg` read at the requested slot).
         self.rtx_own_c.next = self.rtx.q.val()
             & (self.wcount.q.val() == 2)
             & self.slot.q.val().get_bit(0)
-            & self.idx_ok.q.val()
-            & (self.idx.q.val() == self.i_address.val())
+            & self.idx_own.q.val()
             & !self.i_master.val()
             & !self.dead.q.val()
             & !self.fs_r.q.val();
+        if self.i_master.val() {
+            self.rtx_own_c.next = self.rtx.q.val()
+                & (self.wcount.q.val() == 2)
+                & self.slot.q.val().get_bit(0)
+                & self.idx_ok.q.val()
+                & ((self.i_slot_cfg.val() == 1) | (self.i_slot_cfg.val() == 2))
+                & !self.dead.q.val()
+                & !self.fs_r.q.val();
+        }
         // The Alive bit the node wrote in this cycle's frame: the
         // flip-flop toggled at the frame's end when it processed it.
         self.alive_now.next = self.toggle.q.val() ^ (self.rtx.q.val() & self.framed.q.val());
@@ -704,10 +736,11 @@ impl Logic for Fwd {
             // frame; an actuator puts its Alive into a data word (the copy
             // its master filled).
             if self.rtx_own_c.val() {
-                if !self.i_actuator.val() & self.i_armed.val() {
+                if (!self.i_actuator.val() | self.i_master.val()) & self.i_armed.val() {
                     self.act_c.next = 3.into();
                 }
                 if self.i_actuator.val()
+                    & !self.i_master.val()
                     & self.dec_data.val()
                     & (!self.dec_nib.val().get_bit(3) | self.ext.val())
                 {
@@ -730,12 +763,14 @@ impl Logic for Fwd {
                 self.fresh_alive.next = !self.i_slot_alive.val();
             }
         }
-        // An RTX fill: the frame's value again (a node that missed the
-        // frame: the value it would have written), with its Alive.
+        // An RTX fill: a sensor's current sample (protocol §8), with the
+        // Alive it wrote into the frame (or would have, had it missed it).
+        // A master: its data memory, and for an ACT slot the actuator's
+        // Alive as it last saw it.
         if self.rtx.q.val() {
             self.fresh_alive.next = self.alive_now.val();
-            if self.framed.q.val() {
-                self.fresh_data.next = self.h_data.q.val();
+            if self.i_master.val() & (self.i_slot_cfg.val() == 2) {
+                self.fresh_alive.next = self.i_slot_alive.val();
             }
         }
         self.fresh_rn.next = 0.into();
@@ -1042,6 +1077,7 @@ impl Logic for Fwd {
                 self.idles.d.next = 0.into();
                 self.rtx.d.next = false;
                 self.idx_ok.d.next = false;
+                self.idx_own.d.next = false;
                 self.rtx_wrote.d.next = false;
             }
         }
@@ -1093,7 +1129,6 @@ impl Logic for Fwd {
                     self.rtx_wrote.d.next = true;
                 }
                 if self.pre_home.q.val() {
-                    self.h_data.d.next = self.i_sensor_data.val();
                     self.prev_alarm.d.next = self.f_alarm.q.val();
                     self.sent.d.next = self.f_alarm.q.val();
                     self.sent_reason.d.next = self.f_reason.q.val();
@@ -1211,23 +1246,36 @@ impl Logic for Fwd {
         // other H0 starts a new cycle's packets (no frame processed yet).
         // An RTX's good index word names the slot of the next data word.
         if self.i_wvalid.val() & (self.i_wkind.val() == 0) {
-            self.rtx.d.next = self.i_wok.val() & (self.i_ptype.val() == 3);
+            self.rtx.d.next = self.i_wok.val() & (self.i_ptype.val() == 3) & self.rtx_on.val();
             if !(self.i_wok.val() & (self.i_ptype.val() == 3)) {
                 self.framed.d.next = false;
             }
         }
+        self.addr16.next = bit_cast::<16, 12>(self.i_address.val()) | 0;
         if self.i_wvalid.val() & (self.i_wkind.val() == 3) & !self.i_wodd.val() {
             self.idx.d.next = self.i_wdata.val().get_bits::<12>(0);
             self.idx_ok.d.next = self.i_wok.val()
                 & !self.i_walarm.val()
                 & (self.i_wdata.val().get_bits::<4>(12) == 0)
                 & (self.i_wdata.val().get_bits::<12>(0) <= self.i_slots_m1.val());
+            // (The home slot is below S: no range check. A slave needs only
+            // this bit, so synthesis drops `idx` there.)
+            self.idx_own.d.next = self.rtx_on.val()
+                & self.i_wok.val()
+                & !self.i_walarm.val()
+                & (self.i_wdata.val() == self.addr16.val());
         }
         if self.i_hdr_bad.val() {
             self.dead.d.next = true;
         }
         self.o_slot.next = self.slot.q.val();
-        self.o_rtx_own.next = self.idx_ok.q.val() & (self.idx.q.val() == self.i_address.val());
+        self.o_rtx_own.next = self.idx_own.q.val();
+        self.o_rtx_idx.next = self.idx.q.val();
+        self.o_rtx_ok.next = self.idx_ok.q.val();
+        // In an RTX the memories are read at the requested slot.
+        if self.rtx.q.val() {
+            self.o_slot.next = self.idx.q.val();
+        }
         self.o_regen.next = self.regen.q.val();
         self.o_alarm_sent.next = self.sent.q.val();
         self.o_sent_reason.next = self.sent_reason.q.val();

@@ -122,10 +122,18 @@ pub struct Master {
 }
 
 impl Master {
-    /// A master node for words in `format` (protocol §4, §6).
+    /// A master node for words in `format` (protocol §4, §6), with
+    /// retransmission on demand.
     pub fn new(format: WordFormat) -> Self {
+        Self::with_rtx(format, true)
+    }
+
+    /// A master node for words in `format`; without retransmission on
+    /// demand when `rtx` is false (a ring without critical slots,
+    /// [`Slave::with_rtx`]).
+    pub fn with_rtx(format: WordFormat, rtx: bool) -> Self {
         Self {
-            node: Slave::new(format),
+            node: Slave::with_rtx(format, rtx),
             mdb: Mdb::new(format),
             ..Default::default()
         }
@@ -205,6 +213,7 @@ impl Logic for Master {
         self.mdb.i_reason.next = self.node.o_reason.val();
         self.mdb.i_ok.next = self.node.o_ok.val();
         self.mdb.i_hdr_bad.next = self.node.o_hdr_bad.val();
+        self.mdb.i_rtx.next = self.node.o_rtx.val();
 
         self.o_irq1.next = self.mdb.o_irq1.val();
         self.o_irq2.next = self.mdb.o_irq2.val();

@@ -86,12 +86,14 @@
 //! | `i_fs` | in | 1 | clock | node in failsafe: no updates from the next frame header on (status bit at once) |
 //! | `i_mode` | in | 2 | clock | switchbox mode (status register) |
 //! | `i_wvalid`, `i_kind`, `i_slot`, `i_data`, `i_alive`, `i_alarm`, `i_reason`, `i_ok` | in | | clock | received words (from the node's INPUT port; `i_reason` the extended variant's reason nibble) |
+//! | `i_rtx` | in | 1 | clock | the word is a retransmission's copy of slot `i_slot` (protocol §8; the node maps an RTX's good data word to `i_kind` = 2 and the slot its index word named): data memory only, no Alive check or state, no alarm, `o_s2_act` low |
 //! | `i_hdr_bad` | in | 1 | clock | INPUT rejected a header: that frame was not read (no Alive check in the next one) |
 //! | `i_tx_slot` | in | 12 | clock | slot the send side needs next |
 //! | `o_tx_data` | out | 16 | clock | data memory of `i_tx_slot`, valid 2–4 clocks after it changes (the host's data reads and the received words take a clock of the look-up each) |
 //! | `o_tx_cfg` | out | 2 | clock | what the node writes in `i_tx_slot` (same timing): 0 nothing, 1 LOCAL (its data), 2 ACT (its data, the actuator's Alive kept), 3 its home slot without a value (only an alarm, protocol §12); 0 in the reload frame; an own slot is 1 or 2 only with a value (always, but after JOIN see above). The one decision for the forwarder of a master (which writes only while `o_running`) and both send paths of a special master |
 //! | `o_join` | out | 1 | clock | started by JOIN |
 //! | `o_s2`, `o_s2_slot`, `o_s2_act`, `o_s2_ok`, `o_s2_alive`, `o_s2_alarm`, `o_s2_data`, `o_s2_rn` | out | | clock | the received slot word with its configuration, 2 clocks after `i_wvalid` |
+//! | `o_cfgw`, `o_cfgw_slot`, `o_cfgw_crit` | out | 1, 12, 1 | clock | the host wrote slot `o_cfgw_slot`'s configuration byte (one clock, combinational from the bus), and its CRIT bit (bit 4, protocol §7; not stored here, and read back as 0) |
 //! | `o_running` | out | 1 | clock | the host started the ring |
 //! | `o_irq1`, `o_irq2`, `o_irq_fs`, `o_irq_rc` | out | 1 | clock | alarm received, by reason: IRQ1, IRQ2, FAILSAFE, RECONFIG 4–6 (one clock per alarm word) |
 //! | `o_alarmq` | out | 1 | clock | the alarm queue is not empty (level) |
@@ -195,6 +197,9 @@ pub struct Mdb {
     pub i_reason: Signal<In, Bits<4>>,
     /// Word good.
     pub i_ok: Signal<In, Bit>,
+    /// The word (`i_kind` = 2) is a retransmission's copy of slot
+    /// `i_slot` (protocol §8): taken without an Alive check, never an alarm.
+    pub i_rtx: Signal<In, Bit>,
     /// A header was rejected at INPUT.
     pub i_hdr_bad: Signal<In, Bit>,
     /// Slot the send side needs.
@@ -212,6 +217,13 @@ pub struct Mdb {
     pub o_s2_slot: Signal<Out, Bits<12>>,
     /// Stage 2 slot is ACT.
     pub o_s2_act: Signal<Out, Bit>,
+    /// The host wrote a configuration byte (one clock): its slot and its
+    /// CRIT bit (bit 4, protocol §7), which the clock base keeps.
+    pub o_cfgw: Signal<Out, Bit>,
+    /// See `o_cfgw`.
+    pub o_cfgw_slot: Signal<Out, Bits<12>>,
+    /// See `o_cfgw`.
+    pub o_cfgw_crit: Signal<Out, Bit>,
     /// Stage 2 good.
     pub o_s2_ok: Signal<Out, Bit>,
     /// Stage 2 ALIVE.
@@ -295,6 +307,7 @@ pub struct Mdb {
     t3_cfg: DFF<Bits<4>>,
     // Receive pipeline.
     s2: DFF<Bit>,
+    s2_rtx: DFF<Bit>,
     s2_slot: DFF<Bits<12>>,
     s2_ok: DFF<Bit>,
     s2_alive: DFF<Bit>,
@@ -395,6 +408,7 @@ impl Mdb {
             i_alarm: Default::default(),
             i_reason: Default::default(),
             i_ok: Default::default(),
+            i_rtx: Default::default(),
             i_hdr_bad: Default::default(),
             i_tx_slot: Default::default(),
             o_tx_data: Default::default(),
@@ -403,6 +417,9 @@ impl Mdb {
             o_s2: Default::default(),
             o_s2_slot: Default::default(),
             o_s2_act: Default::default(),
+            o_cfgw: Default::default(),
+            o_cfgw_slot: Default::default(),
+            o_cfgw_crit: Default::default(),
             o_s2_ok: Default::default(),
             o_s2_alive: Default::default(),
             o_s2_alarm: Default::default(),
@@ -450,6 +467,7 @@ impl Mdb {
             t3_data: Default::default(),
             t3_cfg: Default::default(),
             s2: Default::default(),
+            s2_rtx: Default::default(),
             s2_slot: Default::default(),
             s2_ok: Default::default(),
             s2_alive: Default::default(),
@@ -527,6 +545,7 @@ impl Logic for Mdb {
             join,
             rl,
             s2,
+            s2_rtx,
             s2_slot,
             s2_ok,
             s2_alive,
@@ -634,6 +653,7 @@ impl Logic for Mdb {
             self.tx_served.d.next = false;
         }
         self.s2.d.next = self.i_wvalid.val() & (self.i_kind.val() == 2);
+        self.s2_rtx.d.next = self.i_rtx.val();
         self.s2_slot.d.next = self.i_slot.val();
         self.s2_ok.d.next = self.i_ok.val();
         self.s2_alive.d.next = self.i_alive.val();
@@ -724,6 +744,7 @@ impl Logic for Mdb {
             self.cfg_rx.write_data.next = self.s2_cfg.val() & 14;
         }
         self.s2_alrm.next = self.s2.q.val()
+            & !self.s2_rtx.q.val()
             & self.s2_ok.q.val()
             & self.s2_alarm.q.val()
             & (self.s2_slot.q.val() != self.i_home.val());
@@ -736,7 +757,8 @@ impl Logic for Mdb {
             | !self.s2_run.q.val()
             | (self.s2_seq.val() == self.s2_cfg.val().get_bit(0));
         if self.s2.q.val() & !self.fs_frame.q.val() {
-            self.ast.write_enable.next = true;
+            // (A retransmitted copy leaves the Alive state alone.)
+            self.ast.write_enable.next = !self.s2_rtx.q.val();
             if self.s2_ok.q.val() {
                 if self.s2_alrm.val() & self.s2_new.val() {
                     // rust-hdl widens only with a masked cast (a lint
@@ -819,7 +841,7 @@ impl Logic for Mdb {
                 self.t3_slot.d.next = self.s2_slot.q.val();
                 self.t3_data.d.next = self.s2_data.q.val();
                 self.t3_cfg.d.next = self.s2_cfg.val();
-                if self.s2_cfg.val().get_bit(2) {
+                if self.s2_cfg.val().get_bit(2) & !self.s2_rtx.q.val() {
                     self.new_ast.next = (self.s2_ast.val() & 4) | 1;
                     if self.s2_alive.q.val() {
                         self.new_ast.next = (self.s2_ast.val() & 4) | 3;
@@ -856,6 +878,9 @@ impl Logic for Mdb {
         // returns, 7 acknowledged.
         self.ack.d.next = false;
         self.cfg_tx.write_enable.next = false;
+        self.o_cfgw.next = false;
+        self.o_cfgw_slot.next = self.i_wb_adr.val().get_bits::<12>(0);
+        self.o_cfgw_crit.next = self.i_wb_dat.val().get_bit(4);
         self.cfg_tx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
         // A configuration write stores bits 3:1 (LAST is not stored, its
         // bit is the has-value bit, protocol §7, §12).
@@ -882,6 +907,7 @@ impl Logic for Mdb {
                         // The receive copy's bit 0 starts at 0 (a new
                         // alarm has SEQ 0: the sender's first is new).
                         self.cfg_tx.write_enable.next = true;
+                        self.o_cfgw.next = true;
                         self.cfg_rx.write_enable.next = true;
                         self.cfg_rx.write_address.next = self.i_wb_adr.val().get_bits::<12>(0);
                         self.cfg_rx.write_data.next = self.i_wb_dat.val().get_bits::<4>(0) & 14;
@@ -1140,7 +1166,7 @@ impl Logic for Mdb {
 
         self.o_s2.next = self.s2.q.val();
         self.o_s2_slot.next = self.s2_slot.q.val();
-        self.o_s2_act.next = self.s2_cfg.val().get_bit(1);
+        self.o_s2_act.next = self.s2_cfg.val().get_bit(1) & !self.s2_rtx.q.val();
         self.o_s2_ok.next = self.s2_ok.q.val();
         self.o_s2_alive.next = self.s2_alive.q.val();
         self.o_s2_alarm.next = self.s2_alarm.q.val();

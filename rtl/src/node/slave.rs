@@ -43,6 +43,7 @@
 //! | `i_master`, `i_slot_cfg`, `i_slot_data`, `i_slot_alive`, `i_fs_set` | in | 1, 2, 16, 1, 1 | clock | master mode (tied 0 in a slave): see [`crate::node::master`] |
 //! | `o_fwd_slot`, `o_regen` | out | 12, 1 | clock | master mode: the forwarder's slot, VOID regenerated |
 //! | `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_reason`, `o_ok`, `o_hdr_bad` | out | | clock | INPUT's words (`o_reason`: the extended variant's reason nibble, else 0) and rejected headers, for a master's memories |
+//! | `o_rtx` | out | 1 | clock | the word is an RTX's copy of slot `o_slot` (its data word after a good index word, as a slot word, `o_kind` = 2; outside failsafe); an RTX's other words do not show (protocol §8) |
 //!
 //! Latency: INPUT to OUTPUT 9.5–10.5 bit times from the samples at `i_pi`
 //! to the line at `o_po` (the CDR, one group and a bit, the retime buffer:
@@ -128,6 +129,8 @@ pub struct Slave {
     pub o_ok: Signal<Out, Bit>,
     /// INPUT rejected a DATA header (or a header it could not read).
     pub o_hdr_bad: Signal<Out, Bit>,
+    /// The word is a retransmission's copy of slot `o_slot` (protocol §8).
+    pub o_rtx: Signal<Out, Bit>,
     /// Actuator output register.
     pub o_act_data: Signal<Out, Bits<16>>,
     /// Mode.
@@ -178,6 +181,8 @@ pub struct Slave {
     reason: Signal<Local, Bits<4>>,
     // Extended-alarm words; the SEQ of INPUT's word (D[11], or N1 bit 3).
     ext: Constant<Bit>,
+    // Retransmission on demand is built in (see [`Slave::with_rtx`]).
+    rtx_on: Constant<Bit>,
     rx_seq: Signal<Local, Bit>,
     wrapped: Signal<Local, Bit>,
     out_pair: Signal<Local, Bits<2>>,
@@ -191,8 +196,16 @@ impl Default for Slave {
 }
 
 impl Slave {
-    /// A slave node for words in `format`.
+    /// A slave node for words in `format`, with retransmission on demand.
     pub fn new(format: WordFormat) -> Self {
+        Self::with_rtx(format, true)
+    }
+
+    /// A slave node for words in `format`; without retransmission on
+    /// demand (`rtx` false, for a ring without critical slots: `merkur
+    /// synth` builds it so for the smallest devices) it passes an RTX on
+    /// unchanged, as a SEC.
+    pub fn with_rtx(format: WordFormat, rtx: bool) -> Self {
         Self {
             clock: Default::default(),
             i_pi: Default::default(),
@@ -223,6 +236,7 @@ impl Slave {
             o_reason: Default::default(),
             o_ok: Default::default(),
             o_hdr_bad: Default::default(),
+            o_rtx: Default::default(),
             o_act_data: Default::default(),
             o_mode: Default::default(),
             o_failsafe: Default::default(),
@@ -233,9 +247,10 @@ impl Slave {
             swc: Default::default(),
             rx_in: PortRx::new(format),
             rx_bsr: PortRx::new(format),
-            fwd: Fwd::new(format),
+            fwd: Fwd::with_rtx(format, rtx),
             tst: TstTx::new(format),
             ext: Constant::new(format == WordFormat::ExtendedAlarm),
+            rtx_on: Constant::new(rtx),
             rx_seq: Default::default(),
             rep: Default::default(),
             rep_last: Default::default(),
@@ -314,7 +329,7 @@ impl Logic for Slave {
                 & (self.rx_in.o_kind.val() == 0)
                 & self.rx_in.o_ok.val()
                 & (self.rx_in.o_ptype.val() != 0)
-                & (self.rx_in.o_ptype.val() != 3));
+                & ((self.rx_in.o_ptype.val() != 3) | !self.rtx_on.val()));
         self.fwd.i_armed.next = self.armed.q.val();
         self.fwd.i_wvalid.next = self.rx_in.o_wvalid.val();
         self.fwd.i_wkind.next = self.rx_in.o_kind.val();
@@ -350,9 +365,24 @@ impl Logic for Slave {
         self.fwd.i_slot_alive.next = self.i_slot_alive.val();
         self.o_fwd_slot.next = self.fwd.o_slot.val();
         self.o_regen.next = self.fwd.o_regen.val();
-        self.o_wvalid.next = self.rx_in.o_wvalid.val();
+        // INPUT's words for a master's memories. Of an RTX only its good
+        // requests' data words go on, as slot words of the slot named
+        // (`o_rtx`; protocol §8), and not in failsafe; its head and index
+        // words stay here.
+        self.o_wvalid.next = self.rx_in.o_wvalid.val()
+            & ((self.rx_in.o_ptype.val() != 3) | (self.rx_in.o_kind.val() == 0));
         self.o_kind.next = self.rx_in.o_kind.val();
         self.o_slot.next = self.rx_in.o_slot.val();
+        self.o_rtx.next = false;
+        if (self.rx_in.o_kind.val() == 3) & self.rtx_on.val() {
+            self.o_wvalid.next = self.rx_in.o_wvalid.val()
+                & self.rx_in.o_slot.val().get_bit(0)
+                & self.fwd.o_rtx_ok.val()
+                & !self.failsafe.q.val();
+            self.o_kind.next = 2.into();
+            self.o_slot.next = self.fwd.o_rtx_idx.val();
+            self.o_rtx.next = true;
+        }
         self.o_data.next = self.rx_in.o_data.val();
         self.o_alive.next = self.rx_in.o_alive.val();
         self.o_alarm.next = self.rx_in.o_alarm.val();

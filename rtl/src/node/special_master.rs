@@ -151,6 +151,9 @@ pub const UNWRAP_LEAD_BITS: u64 = 16;
 pub const START_BITS: u64 = 39;
 // `in_code` is a `Bits<39>` (rust-hdl widths are literals).
 const _: () = assert!(START_BITS == 39);
+/// Requests an RTX carries at most (protocol §8): the clock base's list of
+/// damaged critical slots has this many places.
+pub const RTX_MAX: usize = merkur_model::config::RTX_MAX;
 /// Bit times of idles an elected backup sends on OUTPUT before its first
 /// frame (protocol §8): more than the 20 between packets, so that
 /// receivers that saw a dark stretch relock first.
@@ -184,6 +187,17 @@ pub struct SpecialMaster {
     /// The ring has backups: with priority 0, a restart's JOIN makes the
     /// node a master that never starts a clock base (protocol §8, §12).
     pub i_flying: Signal<In, Bit>,
+    /// Retransmission on demand (protocol §8): bit times after the period
+    /// tick at which the RTX goes, in the healthy ring and in a ring it
+    /// knows wrapped (`T`).
+    pub i_rtx_at: Signal<In, Bits<20>>,
+    /// See `i_rtx_at`.
+    pub i_rtx_atw: Signal<In, Bits<20>>,
+    /// Requests an RTX has room for in the period, healthy and wrapped (0:
+    /// no RTX; at most [`RTX_MAX`]).
+    pub i_rtx_k: Signal<In, Bits<5>>,
+    /// See `i_rtx_k`.
+    pub i_rtx_kw: Signal<In, Bits<5>>,
     /// Wishbone cycle.
     pub i_wb_cyc: Signal<In, Bit>,
     /// Wishbone strobe.
@@ -281,6 +295,8 @@ pub struct SpecialMaster {
     // Extended-alarm words (protocol §6); the reason nibble of the word
     // sent; INPUT's alarm SEQ and reason as the format carries them.
     ext: Constant<Bit>,
+    // Retransmission on demand is built in ([`SpecialMaster::with_rtx`]).
+    rtx_on: Constant<Bit>,
     w_rn: Signal<Local, Bits<4>>,
     rx_seq: Signal<Local, Bit>,
     rx_rsn: Signal<Local, Bits<4>>,
@@ -399,6 +415,44 @@ pub struct SpecialMaster {
     rep_cut: DFF<Bit>,
     inpkt_was: DFF<Bit>,
     pass_code: Signal<Local, Bit>,
+    // Retransmission on demand (protocol §8): the CRIT bits (from the
+    // host's configuration writes); the damaged critical slots of the
+    // period's returning frame, in slot order (`dl0` …); the search (0 the frame is
+    // not back, 1 following its slot words, 2 going through the slots it
+    // did not bring, 3 done) and its next slot; the slot being checked
+    // (its CRIT bit is read) and whether it counts when critical; the RTX
+    // being sent, its requests, the slot of the request being sent.
+    crit: RAM<Bit, 12>,
+    // (Eight registers, not a memory: a block RAM more would cost the
+    // HX8K its 2048-slot special master.)
+    dl0: DFF<Bits<12>>,
+    dl1: DFF<Bits<12>>,
+    dl2: DFF<Bits<12>>,
+    dl3: DFF<Bits<12>>,
+    dl4: DFF<Bits<12>>,
+    dl5: DFF<Bits<12>>,
+    dl6: DFF<Bits<12>>,
+    dl7: DFF<Bits<12>>,
+    dcount: DFF<Bits<5>>,
+    dst: DFF<Bits<2>>,
+    dnext: DFF<Bits<12>>,
+    c_v: DFF<Bit>,
+    c_slot: DFF<Bits<12>>,
+    c_dmg: DFF<Bit>,
+    rtxm: DFF<Bit>,
+    rk: DFF<Bits<5>>,
+    rtx_req: DFF<Bits<12>>,
+    d_inpkt: DFF<Bit>,
+    s2_rtx: DFF<Bit>,
+    bsr_h0ok: DFF<Bit>,
+    rtx_cap: DFF<Bits<5>>,
+    rtx_t: DFF<Bits<20>>,
+    at_t: DFF<Bit>,
+    rtx_go: Signal<Local, Bit>,
+    rtx_h0: Signal<Local, Bits<16>>,
+    cyc_m1: Signal<Local, Bits<12>>,
+    rtx_m1: Signal<Local, Bits<12>>,
+    rtx_max: Constant<Bits<5>>,
 }
 
 impl Default for SpecialMaster {
@@ -408,10 +462,18 @@ impl Default for SpecialMaster {
 }
 
 impl SpecialMaster {
-    /// A special master for words in `format` (protocol §4, §6).
+    /// A special master for words in `format` (protocol §4, §6), with
+    /// retransmission on demand.
+    pub fn new(format: WordFormat) -> Self {
+        Self::with_rtx(format, true)
+    }
+
+    /// A special master for words in `format`; without retransmission on
+    /// demand when `rtx` is false (a ring without critical slots: it never
+    /// sends an RTX, and synthesis drops that logic).
     // One long field list: every signal and child block of the struct
     // above, each at its power-up value.
-    pub fn new(format: WordFormat) -> Self {
+    pub fn with_rtx(format: WordFormat, rtx: bool) -> Self {
         let ext = format == WordFormat::ExtendedAlarm;
         Self {
             clock: Default::default(),
@@ -452,6 +514,10 @@ impl SpecialMaster {
             i_prio: Default::default(),
             i_elect: Default::default(),
             i_flying: Default::default(),
+            i_rtx_at: Default::default(),
+            i_rtx_atw: Default::default(),
+            i_rtx_k: Default::default(),
+            i_rtx_kw: Default::default(),
             rx_in: PortRx::new(format),
             rx_bsr: PortRx::new(format),
             ftx: PktTx::new(format),
@@ -549,8 +615,9 @@ impl SpecialMaster {
             h1: Default::default(),
             sec_h0: Default::default(),
             st_word: Default::default(),
-            fwd: Fwd::new(format),
+            fwd: Fwd::with_rtx(format, rtx),
             ext: Constant::new(ext),
+            rtx_on: Constant::new(rtx),
             w_rn: Default::default(),
             rx_seq: Default::default(),
             rx_rsn: Default::default(),
@@ -585,6 +652,35 @@ impl SpecialMaster {
             g3: Default::default(),
             jk_s: Default::default(),
             pass_code: Default::default(),
+            crit: Default::default(),
+            dl0: Default::default(),
+            dl1: Default::default(),
+            dl2: Default::default(),
+            dl3: Default::default(),
+            dl4: Default::default(),
+            dl5: Default::default(),
+            dl6: Default::default(),
+            dl7: Default::default(),
+            dcount: Default::default(),
+            dst: Default::default(),
+            dnext: Default::default(),
+            c_v: Default::default(),
+            c_slot: Default::default(),
+            c_dmg: Default::default(),
+            rtxm: Default::default(),
+            rk: Default::default(),
+            rtx_req: Default::default(),
+            d_inpkt: Default::default(),
+            s2_rtx: Default::default(),
+            bsr_h0ok: Default::default(),
+            rtx_cap: Default::default(),
+            rtx_t: Default::default(),
+            at_t: Default::default(),
+            rtx_go: Default::default(),
+            rtx_h0: Default::default(),
+            cyc_m1: Default::default(),
+            rtx_m1: Default::default(),
+            rtx_max: Constant::new((RTX_MAX as u64).to_bits()),
         }
     }
 }
@@ -667,7 +763,30 @@ impl Logic for SpecialMaster {
             dcyc,
             dcyc_v,
             scyc,
-            scyc_v
+            scyc_v,
+            dcount,
+            dst,
+            dnext,
+            c_v,
+            c_slot,
+            c_dmg,
+            rtxm,
+            rk,
+            rtx_req,
+            d_inpkt,
+            s2_rtx,
+            bsr_h0ok,
+            dl0,
+            dl1,
+            dl2,
+            dl3,
+            dl4,
+            dl5,
+            dl6,
+            dl7,
+            rtx_cap,
+            rtx_t,
+            at_t
         );
         // The clock base: priority 0 from power-up (but after a restart in
         // a ring with backups: JOIN), a backup once elected.
@@ -681,6 +800,8 @@ impl Logic for SpecialMaster {
         self.txs.i_cb.next = self.cb.q.val();
         self.txs.i_prio.next = self.i_prio.val();
         self.txs.i_join.next = self.join_r.q.val();
+        self.txs.i_rtxm.next = self.rtxm.q.val();
+        self.txs.i_rtx.next = self.rtx_req.q.val();
         self.mdb.i_tx_slot.next = self.txs.o_slot.val();
         self.aact.read_address.next = self.txs.o_slot.val();
         self.o_base.next = self.base.val();
@@ -698,6 +819,8 @@ impl Logic for SpecialMaster {
         self.mdb.clock.next = self.clock.val();
         self.store.read_clock.next = self.clock.val();
         self.store.write_clock.next = self.clock.val();
+        self.crit.read_clock.next = self.clock.val();
+        self.crit.write_clock.next = self.clock.val();
         self.sent_alarm.read_clock.next = self.clock.val();
         self.sent_alarm.write_clock.next = self.clock.val();
         self.aact.read_clock.next = self.clock.val();
@@ -752,6 +875,17 @@ impl Logic for SpecialMaster {
         self.ftx.i_slots_m1.next = self.i_slots_m1.val();
         self.ftx.i_h0.next = self.h0.val();
         self.ftx.i_h1.next = self.h1.val();
+        // The RTX (protocol §8): H0 = {11, 11, CYC of the frame it
+        // repairs} (CYC counted on at that frame's end), H1 = NOT H0, two
+        // words per request.
+        self.cyc_m1.next = self.cyc.q.val() - 1;
+        self.rtx_h0.next = (bit_cast::<16, 12>(self.cyc_m1.val()) | 0) | 0xf000;
+        self.rtx_m1.next = ((bit_cast::<12, 5>(self.rk.q.val()) | 0) << 1) - 1;
+        if self.rtxm.q.val() {
+            self.ftx.i_slots_m1.next = self.rtx_m1.val();
+            self.ftx.i_h0.next = self.rtx_h0.val();
+            self.ftx.i_h1.next = !self.rtx_h0.val();
+        }
         // CLR in the frames it sends while it brings the ring out of
         // failsafe (H0's ALIVE bit, protocol §12).
         self.ftx.i_h0_alive.next = self.clr_sent.q.val() != 0;
@@ -870,6 +1004,31 @@ impl Logic for SpecialMaster {
                 }
             }
         }
+        // An RTX's words: an index word {slot}, then the data word, VOID
+        // or, for a slot the clock base writes, the value and Alive it
+        // wrote into the frame (it toggled at the frame's end; an ACT
+        // slot: the actuator's Alive as it last had it).
+        if self.rtxm.q.val() {
+            self.w_data.next = bit_cast::<16, 12>(self.rtx_req.q.val()) | 0;
+            self.w_alive.next = false;
+            self.w_alarm.next = false;
+            self.w_void.next = false;
+            self.w_rn.next = 0.into();
+            if self.ftx.o_slot.val().get_bit(0) {
+                self.w_data.next = 0.into();
+                self.w_void.next = true;
+                if !self.fs_tx.q.val() & (self.mdb.o_tx_cfg.val() == 1) {
+                    self.w_data.next = self.mdb.o_tx_data.val();
+                    self.w_alive.next = !self.toggle.q.val();
+                    self.w_void.next = false;
+                }
+                if !self.fs_tx.q.val() & (self.mdb.o_tx_cfg.val() == 2) {
+                    self.w_data.next = self.mdb.o_tx_data.val();
+                    self.w_alive.next = self.aact_r.q.val();
+                    self.w_void.next = false;
+                }
+            }
+        }
         self.ftx.i_word_data.next = self.w_data.val();
         self.ftx.i_word_alive.next = self.w_alive.val();
         self.ftx.i_word_alarm.next = self.w_alarm.val();
@@ -878,16 +1037,20 @@ impl Logic for SpecialMaster {
         // What a taken word leaves behind (in the clock it is taken): its
         // alarm flag (the retransmit-once rule), the actuator Alive, the
         // alarm queue.
-        self.sent_alarm.write_enable.next = self.ftx.o_take.val();
+        self.sent_alarm.write_enable.next = self.ftx.o_take.val() & !self.rtxm.q.val();
         self.sent_alarm.write_address.next = self.ftx.o_slot.val();
         self.sent_alarm.write_data.next = self.w_alarm.val() & !self.w_void.val();
         self.aact.write_enable.next = false;
         self.aact.write_address.next = self.ftx.o_slot.val();
         self.aact.write_data.next = self.w_alive.val();
-        if self.ftx.o_take.val() & !self.fs_tx.q.val() & (self.mdb.o_tx_cfg.val() == 2) {
+        if self.ftx.o_take.val()
+            & !self.rtxm.q.val()
+            & !self.fs_tx.q.val()
+            & (self.mdb.o_tx_cfg.val() == 2)
+        {
             self.aact.write_enable.next = true;
         }
-        if self.ftx.o_take.val() & self.home.val() {
+        if self.ftx.o_take.val() & self.home.val() & !self.rtxm.q.val() {
             self.prev_alarm.d.next = self.send_alarm.val() & !self.fs_tx.q.val();
             if !self.fs_tx.q.val() {
                 self.await_rb.d.next = self.send_alarm.val() & !self.pend_fs.q.val();
@@ -925,7 +1088,7 @@ impl Logic for SpecialMaster {
         }
         // Frame start and end: CYC, the Alive toggle, the SEC check.
         self.fbusy.d.next = self.ftx.o_busy.val();
-        if self.fbusy.q.val() & !self.ftx.o_busy.val() {
+        if self.fbusy.q.val() & !self.ftx.o_busy.val() & !self.rtxm.q.val() {
             // CYC counts frames sent: during frame c it is c.
             self.toggle.d.next = !self.toggle.q.val();
             self.cyc.d.next = self.cyc.q.val() + 1;
@@ -1166,7 +1329,8 @@ impl Logic for SpecialMaster {
             }
         }
         if self.rx_in.o_wvalid.val()
-            & (self.rx_in.o_kind.val() == 2)
+            & ((self.rx_in.o_kind.val() == 2)
+                | ((self.rx_in.o_kind.val() == 3) & !self.failsafe.q.val()))
             & !self.rx_in.o_ok.val()
             & !self.rx_in.o_void.val()
             & (self.perr.q.val() != 0xffff)
@@ -1192,6 +1356,13 @@ impl Logic for SpecialMaster {
         self.sent_alarm.read_address.next = self.rx_in.o_slot.val();
         self.st_word.next = (bit_cast::<26, 16>(self.mdb.o_s2_data.val()) | 0)
             | ((bit_cast::<26, 3>(self.ret_cyc.q.val()) | 0) << 19);
+        // (An RTX's copies are the repaired frame's, of the cycle before
+        // CYC's count until the next frame ends: also after a damaged
+        // header, and when they come back after the next period tick, §8.)
+        if self.s2_rtx.q.val() {
+            self.st_word.next = (bit_cast::<26, 16>(self.mdb.o_s2_data.val()) | 0)
+                | ((bit_cast::<26, 3>(self.prev_cyc.val()) | 0) << 19);
+        }
         if self.ext.val() {
             self.st_word.next =
                 self.st_word.val() | ((bit_cast::<26, 4>(self.mdb.o_s2_rn.val()) | 0) << 22);
@@ -1220,9 +1391,159 @@ impl Logic for SpecialMaster {
             self.store.write_address.next = self.st_used_slot.q.val();
             self.store.write_data.next = 0.into();
         }
-        if self.ftx.o_take.val() {
+        if self.ftx.o_take.val() & !self.rtxm.q.val() {
             self.st_used.d.next = true;
             self.st_used_slot.d.next = self.ftx.o_slot.val();
+        }
+
+        // Retransmission on demand (protocol §8). The CRIT bits, as the
+        // host configures them.
+        self.crit.write_enable.next = self.mdb.o_cfgw.val() & self.rtx_on.val();
+        self.crit.write_address.next = self.mdb.o_cfgw_slot.val();
+        self.crit.write_data.next = self.mdb.o_cfgw_crit.val();
+        // Omission detection: the returning frame's critical slots whose
+        // words come back bad, or do not come back (a frame cut short: the
+        // slots after its last word; a rejected header: every slot). A
+        // frame that does not come back requests nothing. A slot's CRIT
+        // bit is read in the clock it is checked, and counted in the next.
+        self.crit.read_address.next = self.rx_in.o_slot.val();
+        if self.dst.q.val() == 2 {
+            self.crit.read_address.next = self.dnext.q.val();
+        }
+        self.d_inpkt.d.next = self.rx_in.o_inpkt.val();
+        self.c_v.d.next = false;
+        if (self.dst.q.val() == 0)
+            & self.rx_in.o_wvalid.val()
+            & (self.rx_in.o_kind.val() == 1)
+            & self.rx_in.o_ok.val()
+            & (self.rx_in.o_ptype.val() == 0)
+        {
+            self.dst.d.next = 1.into();
+            self.dnext.d.next = 0.into();
+        }
+        // (A rejected header counts when H0 was read: a good H0 whose fields
+        // are wrong, or a damaged H1; an unreadable H0 is no frame.)
+        if (self.dst.q.val() == 0)
+            & self.rx_in.o_hdr_bad.val()
+            & ((self.rx_in.o_kind.val() == 1) | self.rx_in.o_ok.val())
+        {
+            self.dst.d.next = 2.into();
+            self.dnext.d.next = 0.into();
+        }
+        if (self.dst.q.val() == 1) & self.d_inpkt.q.val() & !self.rx_in.o_inpkt.val() {
+            self.dst.d.next = 2.into();
+        }
+        if (self.dst.q.val() == 1) & self.rx_in.o_wvalid.val() & (self.rx_in.o_kind.val() == 2) {
+            self.c_v.d.next = true;
+            self.c_slot.d.next = self.rx_in.o_slot.val();
+            self.c_dmg.d.next = !self.rx_in.o_ok.val() & !self.rx_in.o_void.val();
+            self.dnext.d.next = self.rx_in.o_slot.val() + 1;
+            if self.rx_in.o_slot.val() == self.i_slots_m1.val() {
+                self.dst.d.next = 3.into();
+            }
+        }
+        if self.dst.q.val() == 2 {
+            self.c_v.d.next = true;
+            self.c_slot.d.next = self.dnext.q.val();
+            self.c_dmg.d.next = true;
+            self.dnext.d.next = self.dnext.q.val() + 1;
+            if self.dnext.q.val() == self.i_slots_m1.val() {
+                self.dst.d.next = 3.into();
+            }
+        }
+        if self.c_v.q.val()
+            & self.c_dmg.q.val()
+            & self.crit.read_data.val()
+            & (self.dcount.q.val() != self.rtx_max.val())
+        {
+            self.dcount.d.next = self.dcount.q.val() + 1;
+            if self.dcount.q.val() == 0 {
+                self.dl0.d.next = self.c_slot.q.val();
+            }
+            if self.dcount.q.val() == 1 {
+                self.dl1.d.next = self.c_slot.q.val();
+            }
+            if self.dcount.q.val() == 2 {
+                self.dl2.d.next = self.c_slot.q.val();
+            }
+            if self.dcount.q.val() == 3 {
+                self.dl3.d.next = self.c_slot.q.val();
+            }
+            if self.dcount.q.val() == 4 {
+                self.dl4.d.next = self.c_slot.q.val();
+            }
+            if self.dcount.q.val() == 5 {
+                self.dl5.d.next = self.c_slot.q.val();
+            }
+            if self.dcount.q.val() == 6 {
+                self.dl6.d.next = self.c_slot.q.val();
+            }
+            if self.dcount.q.val() == 7 {
+                self.dl7.d.next = self.c_slot.q.val();
+            }
+        }
+        // The RTX goes T bit times after the period tick (the frame's J K
+        // follows the tick by a group at most), when the frame came back:
+        // by then the word of every critical slot has returned or never
+        // will (the later slots' words may still be arriving). With the
+        // damaged slots in order, as many as the period has room for, not
+        // in failsafe.
+        // (Registered, issue 20: T and the room follow the wrap a clock
+        // later, and the comparison with the period counter is taken in the
+        // clock between two of its steps, which changes nothing.)
+        self.rtx_t.d.next = self.i_rtx_at.val();
+        self.rtx_cap.d.next = self.i_rtx_k.val();
+        if self.rw.val() {
+            self.rtx_t.d.next = self.i_rtx_atw.val();
+            self.rtx_cap.d.next = self.i_rtx_kw.val();
+        }
+        self.at_t.d.next = self.bcnt.q.val() == self.rtx_t.q.val();
+        self.rtx_go.next = self.rtx_on.val()
+            & self.base.val()
+            & self.mdb.o_running.val()
+            & self.half.q.val()
+            & self.at_t.q.val()
+            & (self.dst.q.val() != 0)
+            & (self.dcount.q.val() != 0)
+            & (self.rtx_cap.q.val() != 0)
+            & !self.fs_tx.q.val()
+            & !self.failsafe.q.val();
+        if self.rtx_go.val() {
+            self.ftx.i_start.next = true;
+            self.rtxm.d.next = true;
+            self.rk.d.next = self.dcount.q.val();
+            if self.dcount.q.val() > self.rtx_cap.q.val() {
+                self.rk.d.next = self.rtx_cap.q.val();
+            }
+        }
+        // The request being sent (word `ftx.o_slot`, its pair's entry).
+        self.rtx_req.d.next = self.dl0.q.val();
+        if self.ftx.o_slot.val().get_bits::<3>(1) == 1 {
+            self.rtx_req.d.next = self.dl1.q.val();
+        }
+        if self.ftx.o_slot.val().get_bits::<3>(1) == 2 {
+            self.rtx_req.d.next = self.dl2.q.val();
+        }
+        if self.ftx.o_slot.val().get_bits::<3>(1) == 3 {
+            self.rtx_req.d.next = self.dl3.q.val();
+        }
+        if self.ftx.o_slot.val().get_bits::<3>(1) == 4 {
+            self.rtx_req.d.next = self.dl4.q.val();
+        }
+        if self.ftx.o_slot.val().get_bits::<3>(1) == 5 {
+            self.rtx_req.d.next = self.dl5.q.val();
+        }
+        if self.ftx.o_slot.val().get_bits::<3>(1) == 6 {
+            self.rtx_req.d.next = self.dl6.q.val();
+        }
+        if self.ftx.o_slot.val().get_bits::<3>(1) == 7 {
+            self.rtx_req.d.next = self.dl7.q.val();
+        }
+        // A period starts: the search starts afresh.
+        if self.tick.val() {
+            self.dst.d.next = 0.into();
+            self.dcount.d.next = 0.into();
+            self.rtxm.d.next = false;
         }
 
         // The database.
@@ -1237,9 +1558,25 @@ impl Logic for SpecialMaster {
         self.mdb.i_slots_m1.next = self.i_slots_m1.val();
         self.mdb.i_fs.next = self.failsafe.q.val();
         self.mdb.i_mode.next = self.swc.o_mode.val();
-        self.mdb.i_wvalid.next = self.rx_in.o_wvalid.val();
+        // INPUT's words; of an RTX only its good requests' data words, as
+        // the slot words of the slots named (protocol §8), outside failsafe:
+        // the clock base takes them like a master, and into its store.
+        self.mdb.i_wvalid.next = self.rx_in.o_wvalid.val()
+            & ((self.rx_in.o_ptype.val() != 3) | (self.rx_in.o_kind.val() == 0));
         self.mdb.i_kind.next = self.rx_in.o_kind.val();
         self.mdb.i_slot.next = self.rx_in.o_slot.val();
+        self.mdb.i_rtx.next = false;
+        if (self.rx_in.o_kind.val() == 3) & self.rtx_on.val() {
+            self.mdb.i_wvalid.next = self.rx_in.o_wvalid.val()
+                & self.rx_in.o_slot.val().get_bit(0)
+                & self.fwd.o_rtx_ok.val()
+                & !self.failsafe.q.val();
+            self.mdb.i_kind.next = 2.into();
+            self.mdb.i_slot.next = self.fwd.o_rtx_idx.val();
+            self.mdb.i_rtx.next = true;
+        }
+        // (In step with the database's `o_s2`.)
+        self.s2_rtx.d.next = self.mdb.i_rtx.val();
         self.mdb.i_data.next = self.rx_in.o_data.val();
         self.mdb.i_alive.next = self.rx_in.o_alive.val();
         self.mdb.i_alarm.next = self.rx_in.o_alarm.val();
@@ -1297,9 +1634,24 @@ impl Logic for SpecialMaster {
                 }
             }
         }
+        // (A retransmission packet takes the frame's path too, and so does
+        // a frame whose H1 a bit error damaged after a good H0: it goes on
+        // to the special master's INPUT, which reads its header as
+        // damaged, §8.)
+        if self.rx_bsr.o_wvalid.val() & (self.rx_bsr.o_kind.val() == 0) {
+            self.bsr_h0ok.d.next = self.rx_bsr.o_ok.val();
+        }
         if self.rx_bsr.o_wvalid.val()
             & self.rx_bsr.o_ok.val()
             & (self.rx_bsr.o_kind.val() == 1)
+            & ((self.rx_bsr.o_ptype.val() == 0) | (self.rx_bsr.o_ptype.val() == 3))
+        {
+            self.rdata.d.next = true;
+        }
+        if self.rx_bsr.o_wvalid.val()
+            & !self.rx_bsr.o_ok.val()
+            & (self.rx_bsr.o_kind.val() == 1)
+            & self.bsr_h0ok.q.val()
             & (self.rx_bsr.o_ptype.val() == 0)
         {
             self.rdata.d.next = true;
@@ -1654,6 +2006,10 @@ pub struct SlotSel {
     pub i_prio: Signal<In, Bits<3>>,
     /// Priority 0 restarted in a ring with backups: a master (a register).
     pub i_join: Signal<In, Bit>,
+    /// The clock base sends an RTX (a register): the slot of its request.
+    pub i_rtxm: Signal<In, Bit>,
+    /// See `i_rtxm`.
+    pub i_rtx: Signal<In, Bits<12>>,
     /// The slot to read.
     pub o_slot: Signal<Out, Bits<12>>,
 }
@@ -1662,6 +2018,9 @@ impl Logic for SlotSel {
     #[hdl_gen]
     fn update(&mut self) {
         self.o_slot.next = self.i_ftx.val();
+        if self.i_rtxm.val() {
+            self.o_slot.next = self.i_rtx.val();
+        }
         if !self.i_cb.val() & ((self.i_prio.val() != 0) | self.i_join.val()) {
             self.o_slot.next = self.i_fwd.val();
         }

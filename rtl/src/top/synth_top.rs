@@ -90,6 +90,36 @@ pub struct NodeStatic {
     /// The word format of the ring (protocol §4, or §6 with
     /// `[frame] alarm_bits = true`).
     pub format: WordFormat,
+    /// Retransmission on demand (special master only; all 0 without
+    /// critical slots).
+    pub rtx: RtxStatic,
+}
+
+/// The clock base's retransmission timing (protocol §8), static like the
+/// period: the RTX goes `at` bit times after the period tick (`at_wrapped`
+/// in a ring it knows wrapped) with at most `k` (`k_wrapped`) requests.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct RtxStatic {
+    /// T in the healthy ring, bit times.
+    pub at: u32,
+    /// T in a wrapped ring.
+    pub at_wrapped: u32,
+    /// Requests that fit in the healthy ring (0: none is sent).
+    pub k: u32,
+    /// Requests that fit in a wrapped ring.
+    pub k_wrapped: u32,
+}
+
+impl RtxStatic {
+    /// The timing of a scenario's ring, from the model's rules.
+    pub fn of(cfg: &merkur_model::config::Config) -> RtxStatic {
+        RtxStatic {
+            at: cfg.rtx_start(false).unwrap_or(0),
+            at_wrapped: cfg.rtx_start(true).unwrap_or(0),
+            k: cfg.rtx_capacity(false) as u32,
+            k_wrapped: cfg.rtx_capacity(true) as u32,
+        }
+    }
 }
 
 /// The device-independent capture and output stages (see the module doc).
@@ -130,7 +160,7 @@ module merkur_ddr_out(clk, d, q);
 endmodule
 "#;
 
-use crate::harness::ring_top::{module_name as node_module, node_verilog};
+use crate::harness::ring_top::{module_name as node_module, node_verilog_with};
 use crate::line::word_rx::WordFormat;
 
 /// Refuses a configuration the ports cannot carry.
@@ -172,7 +202,14 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
             String::new()
         }
     ));
-    v.push_str(&node_verilog(st.kind, st.slots, st.format));
+    // (A slave of a ring without critical slots is built without
+    // retransmission on demand: smaller, protocol §8.)
+    v.push_str(&node_verilog_with(
+        st.kind,
+        st.slots,
+        st.format,
+        st.rtx.k > 0,
+    ));
     v.push_str(DDR_IO);
     let act = st.kind == Kind::Actuator;
     let mut ports = vec![
@@ -319,13 +356,13 @@ fn slave_instance(
         "    // Master-mode outputs of the slave module, unused in a slave.\n\
          \x20   /* verilator lint_off UNUSEDSIGNAL */\n\
          \x20   wire [11:0] nc_fwd_slot;\n    wire nc_regen;\n    wire nc_wvalid;\n    wire [1:0] nc_kind;\n\
-         \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire [3:0] nc_reason;\n    wire nc_ok;\n    wire nc_hdr_bad;\n\
+         \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire [3:0] nc_reason;\n    wire nc_ok;\n    wire nc_hdr_bad;\n    wire nc_rtx;\n\
          \x20   /* verilator lint_on UNUSEDSIGNAL */\n\
          \x20   {}  node(\n        {common},\n\
          \x20       .i_actuator(1'b{actb}), .i_sensor_data({sensor}),\n\
          \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
          \x20       .o_fwd_slot(nc_fwd_slot), .o_regen(nc_regen), .o_wvalid(nc_wvalid), .o_kind(nc_kind),\n\
-         \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_reason(nc_reason), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad),\n\
+         \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_reason(nc_reason), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad), .o_rtx(nc_rtx),\n\
          \x20       .o_act_data(act_data));\n",
         node_module(st.kind)
     ));
@@ -346,8 +383,8 @@ fn master_instance(
         v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
         v.push_str("    /* verilator lint_off UNUSEDSIGNAL */\n    wire base; // always 1 here: i_prio is 0, the clock base from power-up\n    /* verilator lint_on UNUSEDSIGNAL */\n");
         format!(
-            ",\n        .i_period(20'd{}), .i_prio(3'd0), .i_elect(20'd0), .i_flying(1'b0), .o_serr(serr), .o_hop(hop), .o_cycles(cycles), .o_base(base)",
-            st.period
+            ",\n        .i_period(20'd{}), .i_prio(3'd0), .i_elect(20'd0), .i_flying(1'b0), .i_rtx_at(20'd{}), .i_rtx_atw(20'd{}), .i_rtx_k(5'd{}), .i_rtx_kw(5'd{}),\n        .o_serr(serr), .o_hop(hop), .o_cycles(cycles), .o_base(base)",
+            st.period, st.rtx.at, st.rtx.at_wrapped, st.rtx.k, st.rtx.k_wrapped
         )
     } else {
         String::new()

@@ -162,8 +162,9 @@ impl Plan {
                 Fault::Flip { fibre, target, bit } => {
                     let fi = fibre.index(n);
                     let at = packet_bit(target, bit, cfg.word_bits() as u64);
-                    let when = match recs[c as usize].fibres[fi] {
-                        Carry::Sec { .. } => When::Secs(fi, Self::secs_before(recs, c, fi)),
+                    let when = match (target, &recs[c as usize].fibres[fi]) {
+                        (FlipTarget::RtxHead | FlipTarget::Rtx(_), _) => When::RtxNext(fi),
+                        (_, Carry::Sec { .. }) => When::Secs(fi, Self::secs_before(recs, c, fi)),
                         _ => When::FrameEnded(fi),
                     };
                     (i, c, when, (fi, field::FLIP, at))
@@ -318,7 +319,7 @@ impl<'a> Drive<'a> {
             compared: 0,
             starts: vec![],
             stopped_at: None,
-            snaps: Snapshots::new(n),
+            snaps: Snapshots::new(n, cfg, recs),
             alq: alarms::AlarmQueues::new(cfg),
             fault_ticks: vec![None; cfg.faults.len()],
             gap_at: vec![None; cfg.faults.len()],
@@ -349,6 +350,16 @@ impl<'a> Drive<'a> {
             merkur_rtl::top::synth_top::ring_cs_timeout_clocks(period, cfg.cs_timeout_cycles()),
         );
         r.cfg(0, field::PERIOD, period);
+        // Retransmission timing (protocol §8) in every clock-base node (a
+        // ring without critical slots leaves the power-up 0: none is sent).
+        let rtx = merkur_rtl::top::synth_top::RtxStatic::of(cfg);
+        for (k, nd) in cfg.nodes.iter().enumerate() {
+            if nd.kind == Kind::SpecialMaster && cfg.last_critical().is_some() {
+                r.cfg(k, field::RTX_AT, rtx.at as u64);
+                r.cfg(k, field::RTX_ATW, rtx.at_wrapped as u64);
+                r.cfg(k, field::RTX_K, (rtx.k | rtx.k_wrapped << 5) as u64);
+            }
+        }
         for (k, p) in cfg.backups() {
             r.cfg(k, field::PRIO, p as u64);
             r.cfg(
@@ -589,6 +600,33 @@ impl<'a> Drive<'a> {
         )
     }
 
+    /// Whether the retransmission packet of cycle `k` (protocol §8) has
+    /// passed fibre `f`, or none travelled it by the model: the next
+    /// packet there is then cycle k + 1's frame. Timed from the fibre's
+    /// frame offset (measured at its H1, 10 + 2W bit times after its J K)
+    /// plus the RTX's start T and length, and 8 bit times.
+    fn rtx_over(&mut self, f: usize, k: u32) -> bool {
+        let Some(x) = &self.recs[k as usize].rtx else {
+            return true;
+        };
+        if !x.fibres.contains(&f) {
+            return true;
+        }
+        let Some(off) = self.pace_off[f] else {
+            return true;
+        };
+        let head = 10 + 2 * self.cfg.word_bits() as u64;
+        let rtx = merkur_rtl::top::synth_top::RtxStatic::of(self.cfg);
+        let rec = &self.recs[k as usize];
+        let at = if rec.nodes[rec.base].rw {
+            rtx.at_wrapped
+        } else {
+            rtx.at
+        } as u64;
+        let end = self.starts[k as usize] + off + (at + x.bits as u64 + 8) * TICKS_PER_BIT as u64;
+        self.r.ticks >= end.saturating_sub(head * TICKS_PER_BIT as u64)
+    }
+
     /// Injects every fault whose moment has come.
     fn faults(&mut self) -> Result<(), String> {
         let mut i = 0;
@@ -655,9 +693,12 @@ impl<'a> Drive<'a> {
                 }
             }
             When::FrameEnded(fi) => {
-                c == 0 || sent > c + 1 || (sent >= c && self.frame_over(fi, c - 1))
+                c == 0
+                    || sent > c + 1
+                    || (sent >= c && self.frame_over(fi, c - 1) && self.rtx_over(fi, c - 1))
             }
             When::Secs(fi, k) => c == 0 || sent > c + 1 || self.r.rd(fi, st::NSEC) >= k,
+            When::RtxNext(fi) => sent > c && self.frame_over(fi, c),
             When::Started => sent > c,
         }
     }
