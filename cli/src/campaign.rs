@@ -19,7 +19,7 @@
 //! `--shard K/N` splits it; `--merge` joins shard reports.
 
 use crate::progress;
-use merkur_model::config::{Config, Fault, Fibre, FlipTarget};
+use merkur_model::config::{Config, Fault, Fibre, FlipTarget, RTX_MAX};
 use merkur_model::ring::{self, splitmix, table1, Carry, CycleRecord, EventKind, Mode, Port, Slot};
 use merkur_model::scenario::Kind;
 use merkur_rtl::harness::ring_top::TICKS_PER_BIT;
@@ -128,6 +128,10 @@ pub struct CaseResult {
     /// Bit-error cases: the bit error rate.
     #[serde(default)]
     pub ber: Option<f64>,
+    /// Retransmission cases: data age by slot class and the packets'
+    /// cost (model).
+    #[serde(default)]
+    pub rtx: Option<RtxAge>,
     /// Whether the RTL ran (false: `--model-only`).
     #[serde(default = "yes")]
     pub rtl: bool,
@@ -157,6 +161,54 @@ pub struct CaseResult {
     pub wall_s: f64,
 }
 
+/// A retransmission case's data age (protocol §8) by slot class, from
+/// cycle 1 on, over every live master's memory of the slots it does not
+/// write and every actuator's output (model).
+#[derive(Serialize, Deserialize, Clone, Debug)]
+pub struct RtxAge {
+    /// Retransmission on (the slots critical) or off (the same ring,
+    /// period and frame errors, no slot critical).
+    pub on: bool,
+    /// The critical slots (of the ring with retransmission on).
+    pub critical: Vec<usize>,
+    /// Copies of the critical slots.
+    pub crit: AgeClass,
+    /// Copies of the other slots.
+    pub other: AgeClass,
+    /// Retransmission packets sent.
+    pub packets: u32,
+    /// Requests they carried.
+    pub requests: u32,
+    /// Damaged critical slots that did not fit a packet.
+    pub left: u32,
+    /// Line bits the packets took.
+    pub bits: u64,
+}
+
+/// Data age of one class of copies.
+#[derive(Serialize, Deserialize, Clone, Copy, Debug)]
+pub struct AgeClass {
+    /// Copies counted (per node, slot and cycle).
+    pub copies: u64,
+    /// The oldest, in cycles.
+    pub worst: u32,
+    /// Mean age, in cycles.
+    pub mean: f64,
+    /// Copies older than in the same ring without errors.
+    pub older: u64,
+}
+
+impl From<ring::AgeStat> for AgeClass {
+    fn from(a: ring::AgeStat) -> Self {
+        AgeClass {
+            copies: a.copies,
+            worst: a.worst,
+            mean: a.mean(),
+            older: a.older,
+        }
+    }
+}
+
 /// The whole report.
 #[derive(Serialize, Deserialize, Debug, Default)]
 pub struct Report {
@@ -174,6 +226,9 @@ struct Case {
     seed: u64,
     /// Bit-error cases: the rate.
     ber: Option<f64>,
+    /// Retransmission cases: on or off, and the slot classes (critical
+    /// per slot, of the ring with it on).
+    rtx: Option<(bool, Vec<bool>)>,
 }
 
 fn yes() -> bool {
@@ -258,6 +313,7 @@ impl Planner<'_> {
             cfg,
             seed,
             ber: None,
+            rtx: None,
         });
     }
     /// A seeded stream for a choice named `what`.
@@ -318,6 +374,7 @@ fn cases_of(ring_name: &str, base: &Config, plan: &Plan) -> Vec<Case> {
     double_repair_cases(&mut p);
     restart_cases(&mut p);
     ber_cases(&mut p);
+    rtx_cases(&mut p);
     burst_cases(&mut p);
     offset_cases(&mut p);
     p.out
@@ -698,6 +755,54 @@ fn ber_cases(p: &mut Planner) {
     }
 }
 
+/// Retransmission on demand (protocol §8): the ring with its slots 1 ..=
+/// slots / 3 critical (at least one, at most [`RTX_MAX`]), at the
+/// shortest period with room for a request per critical slot (the ring's
+/// own if longer); per bit error rate, `ber_runs` runs with errors in
+/// cycles 1 ..= [`BER_CYCLES`] — in the DATA frames as [`ber_flips`]
+/// places them and in the retransmission packets ([`rtx_flips`]) — then
+/// [`CLEAN_CYCLES`] clean. Each run twice: `on`, and `off` (the same ring,
+/// period and frame errors, no slot critical), so that the report sets
+/// the data age of both side by side.
+fn rtx_cases(p: &mut Planner) {
+    let mut on = p.clean.clone();
+    let last = (on.slots / 3).clamp(1, RTX_MAX).min(on.slots - 1);
+    for s in 1..=last {
+        on.critical[s] = true;
+    }
+    let Some(period) = on.period_for_requests(last) else {
+        return;
+    };
+    on.period = on.period.max(period);
+    on.cycles = 1 + BER_CYCLES + CLEAN_CYCLES;
+    if ring_sim::unsupported(&on).is_some() {
+        return;
+    }
+    let classes = on.critical.clone();
+    for &ber in &p.plan.ber {
+        for run in 0..p.plan.ber_runs {
+            let name = format!("{}/retransmission/{ber:e}#{run}", p.ring);
+            let seed = hash_name(p.plan.seed, &name);
+            let mut off = on.clone();
+            off.critical.iter_mut().for_each(|x| *x = false);
+            let data = ber_flips(&off, ber, seed);
+            let mut with = on.clone();
+            with.faults = data.clone();
+            with.faults.extend(rtx_flips(&with, ber, seed ^ 0x7274));
+            with.faults.sort_by_key(|&(c, _)| c);
+            with.faults = placeable(&with, with.faults.clone());
+            off.faults = data;
+            for (tag, cfg, yes) in [("on", with, true), ("off", off, false)] {
+                p.push(format!("{name}/{tag}"), "retransmission", cfg);
+                if let Some(c) = p.out.last_mut() {
+                    c.ber = Some(ber);
+                    c.rtx = Some((yes, classes.clone()));
+                }
+            }
+        }
+    }
+}
+
 /// Bursts of garbage (protocol §4, scenario `kind = "burst"`): `bursts`
 /// runs per ring, one burst each in cycle 3 on a seeded primary fibre, from
 /// a seeded line bit of the frame that starts with an edge (which the RTL
@@ -862,9 +967,16 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
             ));
         }
     }
-    // Errors can change what a fibre carries later (a lost frame, a
-    // failsafe); keep only flips the harness can place in the run with the
-    // errors before them.
+    placeable(cfg, v)
+}
+
+/// The flips of `v` the RTL harness can place in `cfg`'s ring: errors can
+/// change what a fibre carries later (a lost frame, a failsafe, a
+/// retransmission packet), so only the flips that
+/// [`ring_sim::flip_unsupported`] passes in the run with the errors
+/// before them are kept.
+fn placeable(cfg: &Config, mut v: Vec<(u32, Fault)>) -> Vec<(u32, Fault)> {
+    let n = cfg.nodes.len();
     for _ in 0..8 {
         let mut with = cfg.clone();
         with.faults = v.clone();
@@ -878,23 +990,95 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
     v
 }
 
+/// Seeded line-bit errors at rate `ber` in the retransmission packets
+/// (protocol §8) of cycles 1 ..= [`BER_CYCLES`] as the run with `cfg`'s
+/// faults sends them: on every fibre a packet travels, at most one, at a
+/// code-1 line bit of its J K or of a request word the fibre carries good
+/// or VOID (as [`code_ones`]), no word hit twice in a cycle.
+fn rtx_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
+    let recs = ring::run(cfg);
+    let n = cfg.nodes.len();
+    let w = cfg.word_bits() as usize;
+    let head = 10 + 2 * w;
+    let mut r = Rng::new(seed);
+    let mut v = vec![];
+    for rec in recs.iter().skip(1).take(BER_CYCLES as usize) {
+        let Some(x) = &rec.rtx else { continue };
+        let mut hit: Vec<usize> = vec![];
+        for (&fi, on) in x.fibres.iter().zip(&x.on) {
+            // P(at least one error in the packet), then a uniform position
+            // among the bits the harness can place.
+            let p = 1.0 - (1.0 - ber).powi(x.bits as i32);
+            // (Without errors of its own on this fibre, the packet arrives
+            // as it entered.)
+            let ones = packet_ones(cfg, None, &on.words);
+            if r.unit() >= p || !on.head_ok || ones.is_empty() {
+                continue;
+            }
+            let at = ones[r.below(ones.len() as u64) as usize];
+            let (target, bit) = if at < head {
+                (FlipTarget::RtxHead, at)
+            } else {
+                (FlipTarget::Rtx((at - head) / w), (at - head) % w)
+            };
+            // A word's last bit also hits the next word (protocol §4).
+            let word = |a: usize| if a < 10 { 0 } else { 1 + (a - 10) / w };
+            let words = [word(at), word(at + 1)];
+            if words.iter().any(|x| hit.contains(x)) {
+                continue;
+            }
+            hit.extend(words);
+            let fibre = if fi < n {
+                Fibre::P(fi)
+            } else {
+                Fibre::S(fi - n)
+            };
+            v.push((
+                rec.cycle,
+                Fault::Flip {
+                    fibre,
+                    target,
+                    bit: bit as u32,
+                },
+            ));
+        }
+    }
+    v
+}
+
 /// Line-bit positions (from the J) of a DATA frame whose code bit is 1,
 /// among the bits the harness can reach (from 2 on) in words whose code the
 /// model knows (good or VOID).
 fn code_ones(cfg: &Config, fr: &merkur_model::ring::Frame) -> Vec<usize> {
-    use merkur_model::line::{push_group, void_code_bits, word_code_bits, CODE_J, CODE_K};
     let merkur_model::ring::HeaderRx::Ok(h) = fr.hdr else {
         return vec![];
     };
+    packet_ones(cfg, Some([h.h0(cfg.slots), h.h1()]), &fr.words)
+}
+
+/// Line-bit positions (from the J) of a packet whose code bit is 1, among
+/// the bits the harness can reach (from 2 on): J K, the header words when
+/// given, and the words whose code the model knows (good or VOID).
+fn packet_ones(
+    cfg: &Config,
+    header: Option<[merkur_model::line::Word; 2]>,
+    words: &[Slot],
+) -> Vec<usize> {
+    use merkur_model::line::{push_group, void_code_bits, word_code_bits, CODE_J, CODE_K};
     let mut code: Vec<Option<u8>> = vec![];
     let mut jk = vec![];
     push_group(&mut jk, CODE_J);
     push_group(&mut jk, CODE_K);
     code.extend(jk.into_iter().map(Some));
-    for w in [h.h0(cfg.slots), h.h1()] {
-        code.extend(word_code_bits(&w, cfg.ext).into_iter().map(Some));
+    match header {
+        Some(hw) => {
+            for w in hw {
+                code.extend(word_code_bits(&w, cfg.ext).into_iter().map(Some));
+            }
+        }
+        None => code.extend(std::iter::repeat(None).take(2 * cfg.word_bits() as usize)),
     }
-    for w in &fr.words {
+    for w in words {
         match w {
             Slot::Data(d) => code.extend(word_code_bits(d, cfg.ext).into_iter().map(Some)),
             Slot::Void => code.extend(void_code_bits(cfg.ext).into_iter().map(Some)),
@@ -1084,6 +1268,10 @@ fn model_result(
         cycles_to_recover,
         cycles_after_last,
         ber: case.ber,
+        rtx: case
+            .rtx
+            .as_ref()
+            .map(|(on, critical)| rtx_age(cfg, *on, critical, recs, clean)),
         rtl: !model_only,
         detect_bits: None,
         switchover_bits: None,
@@ -1094,6 +1282,37 @@ fn model_result(
         flips,
         accepted: 0,
         wall_s: 0.0,
+    }
+}
+
+/// A retransmission case's data age by slot class against the clean ring,
+/// and its packets (model).
+fn rtx_age(
+    cfg: &Config,
+    on: bool,
+    critical: &[bool],
+    recs: &[CycleRecord],
+    clean: &[CycleRecord],
+) -> RtxAge {
+    let [crit, other] = ring::age_stats(cfg, critical, recs, clean, 1);
+    let sent: Vec<_> = recs
+        .iter()
+        .filter_map(|r| r.rtx.as_ref())
+        .filter(|x| !x.slots.is_empty())
+        .collect();
+    RtxAge {
+        on,
+        critical: (0..critical.len()).filter(|&s| critical[s]).collect(),
+        crit: crit.into(),
+        other: other.into(),
+        packets: sent.len() as u32,
+        requests: sent.iter().map(|x| x.slots.len() as u32).sum(),
+        left: recs
+            .iter()
+            .filter_map(|r| r.rtx.as_ref())
+            .map(|x| x.left as u32)
+            .sum(),
+        bits: sent.iter().map(|x| x.bits as u64).sum(),
     }
 }
 
@@ -1215,6 +1434,7 @@ pub const CLASSES: &[&str] = &[
     "double-repair",
     "restart",
     "bit-errors",
+    "retransmission",
     "burst",
     "clock-offset",
 ];
@@ -1546,6 +1766,7 @@ pub fn markdown(r: &Report) -> String {
         );
     }
     o += &ber_table(r);
+    o += &rtx_table(r);
     o += &takeover_table(r);
     let bad: Vec<&CaseResult> = r.cases.iter().filter(|c| c.mismatches > 0).collect();
     if !bad.is_empty() {
@@ -1637,6 +1858,59 @@ fn ber_table(r: &Report) -> String {
             cs.iter().map(|c| c.words_lost).max().unwrap_or(0),
             mean(&|c| c.cycles_lost as f64),
             cs.iter().map(|c| c.cycles_lost).max().unwrap_or(0),
+        );
+    }
+    o
+}
+
+/// The retransmission runs by ring, rate and on/off: data age per slot
+/// class and the bandwidth the packets took (model).
+fn rtx_table(r: &Report) -> String {
+    type Key = (usize, String, u64, bool);
+    let mut by: BTreeMap<Key, Vec<(&CaseResult, &RtxAge)>> = BTreeMap::new();
+    for c in &r.cases {
+        if let Some(x) = &c.rtx {
+            let rate = c.ber.unwrap_or(0.0);
+            by.entry((c.nodes, c.ring.clone(), u64::MAX - rate.to_bits(), !x.on))
+                .or_default()
+                .push((c, x));
+        }
+    }
+    if by.is_empty() {
+        return String::new();
+    }
+    let mut o = format!("\n## Retransmission on demand: data age by slot class\n\nProtocol §8. The ring with slots 1 … slots / 3 critical (at most {RTX_MAX}) at the shortest period with room for a request per critical slot; errors in cycles 1 … {BER_CYCLES} in the DATA frames and the retransmission packets (at most one per packet and fibre), then {CLEAN_CYCLES} clean cycles. *Off* — the same ring, period and frame errors with no slot critical. Ages in cycles, from cycle 1 on, over every live master's memory of the slots it does not write and every actuator's output; *older* — copies older than the same copy in the ring without errors (the goal for critical slots with retransmission on: 0). Model; the RTL agreed wherever the case has no mismatches.\n\n");
+    o += "| ring | BER | retransmission | runs | flips (mean) | critical: worst / mean age, older of copies | other slots: worst / mean age, older of copies | packets, requests (not fitted) | bits per cycle (% of period) |\n";
+    o += "|---|---|---|---|---|---|---|---|---|\n";
+    for ((_, ring, _, _), cs) in &by {
+        let class = |f: &dyn Fn(&RtxAge) -> AgeClass| {
+            let v: Vec<AgeClass> = cs.iter().map(|(_, x)| f(x)).collect();
+            let copies: u64 = v.iter().map(|a| a.copies).sum();
+            let sum: f64 = v.iter().map(|a| a.mean * a.copies as f64).sum();
+            format!(
+                "{} / {:.3}, {} of {copies}",
+                v.iter().map(|a| a.worst).max().unwrap_or(0),
+                sum / copies.max(1) as f64,
+                v.iter().map(|a| a.older).sum::<u64>()
+            )
+        };
+        let (c0, x0) = cs[0];
+        let n = cs.len() as f64;
+        let cycles = n * (1 + BER_CYCLES + CLEAN_CYCLES) as f64;
+        let bits: u64 = cs.iter().map(|(_, x)| x.bits).sum();
+        let per = bits as f64 / cycles.max(1.0);
+        o += &format!(
+            "| {ring} | {:e} | {} | {} | {:.1} | {} | {} | {}, {} ({}) | {per:.1} ({:.2} %) |\n",
+            c0.ber.unwrap_or(0.0),
+            if x0.on { "on" } else { "off" },
+            cs.len(),
+            cs.iter().map(|(c, _)| c.flips as f64).sum::<f64>() / n,
+            class(&|x| x.crit),
+            class(&|x| x.other),
+            cs.iter().map(|(_, x)| x.packets).sum::<u32>(),
+            cs.iter().map(|(_, x)| x.requests).sum::<u32>(),
+            cs.iter().map(|(_, x)| x.left).sum::<u32>(),
+            100.0 * per / c0.period_bits.unwrap_or(f64::INFINITY),
         );
     }
     o

@@ -285,11 +285,16 @@ fn bounded_campaign_agrees_with_the_model() {
         "double-repair",
         "restart",
         "burst",
+        "retransmission",
     ] {
         assert!(
             md.contains(&format!("| ring8 | {class} |")),
             "{class}:\n{md}"
         );
+    }
+    // Retransmission on demand, on and off, side by side (issue 23).
+    for on in ["on", "off"] {
+        assert!(md.contains(&format!("| ring8 | 1e-4 | {on} | 2 |")), "{md}");
     }
     assert!(md.contains("0 single-bit errors accepted"), "{md}");
     // Every single break (16 fibres) and death (7 nodes) ran.
@@ -306,6 +311,8 @@ fn bounded_campaign_agrees_with_the_model() {
     // restarted, and with node 3 as a backup the special master's and the
     // backup's restart (protocol §12): 6 + 1 + 2.
     assert_eq!(json.matches("\"class\": \"restart\"").count(), 9);
+    // Two runs at BER 1e-4, each with retransmission on and off.
+    assert_eq!(json.matches("\"class\": \"retransmission\"").count(), 4);
     // Repaired double breaks: every one leaves failsafe (model; the RTL
     // agreed: no mismatches above).
     let report: serde_json::Value = serde_json::from_str(&json).unwrap();

@@ -16,8 +16,7 @@
 //! garbage bits in a DATA frame per cycle with probability BURST.
 
 use merkur_model::config::{self, Config, Fault, Fibre, FlipTarget};
-use merkur_model::ring::{self, ages, splitmix, Carry, CycleRecord};
-use std::collections::BTreeMap;
+use merkur_model::ring::{self, age_stats, splitmix, Carry, CycleRecord};
 
 /// Uniform draws from the model's seed mixer (counter mode).
 struct Draw(u64, u64);
@@ -144,40 +143,6 @@ fn errors(
     v
 }
 
-#[derive(Default)]
-struct Stat {
-    copies: u64,
-    sum: u64,
-    worst: u32,
-    older: u64,
-}
-
-impl Stat {
-    fn mean(&self) -> f64 {
-        self.sum as f64 / self.copies.max(1) as f64
-    }
-}
-
-/// Data age of critical and other copies, and how many were older than in
-/// `reference` (the same ring without errors), from cycle 3 on.
-fn age_stats(cfg: &Config, recs: &[CycleRecord], reference: &[CycleRecord]) -> [Stat; 2] {
-    let mut st = [Stat::default(), Stat::default()];
-    for (r, q) in recs.iter().zip(reference).skip(3) {
-        let want: BTreeMap<_, _> = ages(cfg, q).into_iter().collect();
-        for ((k, s), age) in ages(cfg, r) {
-            let Some(a) = age else { continue };
-            let x = &mut st[usize::from(!cfg.critical[s])];
-            x.copies += 1;
-            x.sum += a as u64;
-            x.worst = x.worst.max(a);
-            if want.get(&(k, s)).copied().flatten().is_some_and(|b| a > b) {
-                x.older += 1;
-            }
-        }
-    }
-    st
-}
-
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let cycles: u32 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(2000);
@@ -200,11 +165,7 @@ fn main() {
         // with room for a request per critical slot (at most
         // `config::RTX_MAX`), by the model's rule.
         let want = last.min(config::RTX_MAX);
-        base.period = base.min_period();
-        while base.rtx_capacity(false) < want {
-            base.period += 1;
-        }
-        let room_all = base.period;
+        let room_all = base.period_for_requests(want).expect("critical slots");
         let all = if want == last {
             "all".to_string()
         } else {
@@ -228,7 +189,7 @@ fn main() {
                     }
                     let recs = ring::run(&cfg);
                     // Slot classes from the critical list of the ring with it.
-                    let [crit, other] = age_stats(&faulty, &recs, &clean);
+                    let [crit, other] = age_stats(&faulty, &faulty.critical, &recs, &clean, 3);
                     let rtx: Vec<_> = recs.iter().filter_map(|r| r.rtx.as_ref()).collect();
                     let bits: u64 = rtx.iter().map(|x| x.bits as u64).sum();
                     let reqs: usize = rtx.iter().map(|x| x.slots.len()).sum();

@@ -355,6 +355,16 @@ impl Config {
         ))
     }
 
+    /// The shortest legal period whose healthy ring has room for `k`
+    /// retransmission requests (at most [`RTX_MAX`]) per cycle (protocol
+    /// §8); `None` without critical slots.
+    pub fn period_for_requests(&self, k: usize) -> Option<u32> {
+        let c = self.last_critical()?;
+        let k = k.min(RTX_MAX);
+        let need = rtx_period(self.slots, self.nodes.len(), self.ext, c, k);
+        Some(self.min_period().max(need))
+    }
+
     /// How many requests fit in the retransmission packet of a cycle
     /// (protocol §8): 0 without critical slots or when none fits.
     pub fn rtx_capacity(&self, wrapped: bool) -> usize {
@@ -588,7 +598,13 @@ fn latency_bound(nodes: usize, wrapped: bool) -> u32 {
 /// The period a ring with critical slots up to `c_max` needs at least
 /// for one retransmission request in the healthy ring (protocol §8).
 pub fn rtx_min_period(slots: usize, nodes: usize, ext: bool, c_max: usize) -> u32 {
-    rtx_start(slots, nodes, ext, c_max, false) + rtx_bits(1, ext) + latency_bound(nodes, false)
+    rtx_period(slots, nodes, ext, c_max, 1)
+}
+
+/// The period a ring with critical slots up to `c_max` needs at least
+/// for `k` retransmission requests in the healthy ring (protocol §8).
+pub fn rtx_period(slots: usize, nodes: usize, ext: bool, c_max: usize, k: usize) -> u32 {
+    rtx_start(slots, nodes, ext, c_max, false) + rtx_bits(k, ext) + latency_bound(nodes, false)
 }
 
 /// Bit times of a retransmission packet with `k` requests: J K, two

@@ -22,7 +22,7 @@ mod node;
 mod record;
 mod rtx;
 mod switching;
-pub use age::ages;
+pub use age::{age_stats, ages, AgeStat};
 use clock_base::*;
 pub use events::*;
 use faults::*;

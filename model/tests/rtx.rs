@@ -140,6 +140,70 @@ fn a_period_without_room_refuses_and_the_minimum_has_room_for_one() {
     );
 }
 
+#[test]
+fn a_rejected_header_hit_again_in_h0_requests_nothing() {
+    // Cycle 14 of ring8_rtx: H1 hit on P1, every critical slot requested.
+    // A second error, in H0 on P4, leaves the clock base a frame whose H0
+    // is unreadable: nothing is requested (§8).
+    let mut cfg = tb("ring8_rtx");
+    cfg.faults.retain(|&(c, _)| c != 14);
+    let h1 = (
+        14,
+        Fault::Flip {
+            fibre: Fibre::P(1),
+            target: FlipTarget::H1,
+            bit: 5,
+        },
+    );
+    let h0 = (
+        14,
+        Fault::Flip {
+            fibre: Fibre::P(4),
+            target: FlipTarget::H0,
+            bit: 11,
+        },
+    );
+    let mut once = cfg.clone();
+    once.faults.push(h1);
+    let mut twice = once.clone();
+    twice.faults.push(h0);
+    let (a, b) = (ring::run(&once), ring::run(&twice));
+    assert_eq!(a[14].rtx.as_ref().map(|x| x.slots.len()), Some(2));
+    assert!(b[14].rtx.is_none(), "{:?}", b[14].rtx);
+}
+
+#[test]
+fn an_actuator_missing_the_frame_writes_its_alive_into_a_copy_damaged_after_its_lead() {
+    // ring8_rtx with slot 7 (actuator 7, served by master 3) the only
+    // critical slot. Cycle 4: H1 hit on P5, so nodes 6 and 7 miss the frame
+    // and the RTX requests slot 7; master 3 fills it; the copy is hit on P6
+    // (after its first group, `damaged`) or not (`good`).
+    let mut cfg = tb("ring8_rtx");
+    cfg.faults.clear();
+    cfg.critical.iter_mut().for_each(|x| *x = false);
+    cfg.critical[7] = true;
+    let flip = |fibre, target, bit| (4, Fault::Flip { fibre, target, bit });
+    let mut good = cfg.clone();
+    good.faults.push(flip(Fibre::P(5), FlipTarget::H1, 5));
+    let mut damaged = good.clone();
+    damaged
+        .faults
+        .push(flip(Fibre::P(6), FlipTarget::Rtx(1), 12));
+    let (g, d, clean) = (ring::run(&good), ring::run(&damaged), ring::run(&cfg));
+    assert_eq!(g[4].rtx.as_ref().map(|x| x.slots.clone()), Some(vec![7]));
+    assert_eq!(d[4].rtx.as_ref().map(|x| x.back.clone()), Some(vec![false]));
+    // The good copy reaches the actuator's output, the damaged one not.
+    assert_eq!(g[4].nodes[7].out_born, Some(4));
+    assert_ne!(d[4].nodes[7].out_born, Some(4));
+    // Either way the actuator wrote its Alive into the copy (§8), so its
+    // Alive toggles as if it had processed the frame; node 6, a sensor
+    // that missed it and wrote nothing, does not.
+    for r in [&g, &d] {
+        assert_eq!(r[4].nodes[7].toggle, clean[4].nodes[7].toggle);
+        assert_ne!(r[4].nodes[6].toggle, clean[4].nodes[6].toggle);
+    }
+}
+
 /// A flip in the frame's word `target` on the fibre into path position
 /// `hop` (the fibre the frame leaves node path[hop - 1] on), bit `bit`.
 fn frame_flip(

@@ -528,7 +528,7 @@ struct Snapshots {
     /// Per cycle with a retransmission packet (protocol §8): the fibres it
     /// travels and the ticks from the frame's H1 until it has passed
     /// (its bad words count in the cycle).
-    rtx_tail: Vec<Option<(Vec<usize>, u64)>>,
+    pub(crate) rtx_tail: Vec<Option<(Vec<usize>, u64)>>,
 }
 
 const COUNTERS: [(u32, &str); 4] = [
@@ -672,8 +672,9 @@ impl Snapshots {
 /// Frame `k` has passed fibre `f`: its H1 (not an older one with the same
 /// CYC) was seen and its last slot too; or, when a bit error made it
 /// invisible there, as long after its start as the fibre's last visible
-/// frame took to end (learnt into `off`, the H1 delay after a frame's
-/// start), plus 8 bit times: in the idle gap before the next.
+/// frame took to end (learnt into `off`, the delay of the last H1 decoded
+/// there after its frame's start), plus 8 bit times: in the idle gap
+/// before the next.
 #[allow(clippy::too_many_arguments)]
 fn frame_over(
     r: &mut Ring,
@@ -691,7 +692,9 @@ fn frame_over(
     let ended = fr >> 3 & 1 == 0
         && fr & 7 == (k & 7) as u64
         && th1.wrapping_sub(prev) & 0xffff_ffff < 1 << 31;
-    let cyc = (fr & 7) as u32;
+    // The frame TH1 belongs to: the CYC of the H1 decoded with it (FRAME's
+    // CYC also counts on across a damaged H1, where TH1 stays).
+    let cyc = ((r.rd(f, st::H1) >> 12) & 7) as u32;
     if let Some(j) = (0..sent).rev().find(|j| j & 7 == cyc) {
         let d = th1.wrapping_sub(starts[j as usize]) & 0xffff_ffff;
         if d < 2 * period * TICKS_PER_BIT as u64 {

@@ -29,3 +29,51 @@ pub fn ages(cfg: &Config, r: &CycleRecord) -> Vec<((usize, usize), Option<u32>)>
     }
     v
 }
+
+/// Data age of one class of copies over a run (protocol §8).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct AgeStat {
+    /// Copies counted (per node, slot and cycle).
+    pub copies: u64,
+    /// Sum of their ages, in cycles.
+    pub sum: u64,
+    /// The oldest, in cycles.
+    pub worst: u32,
+    /// Copies older than the same copy in the reference run.
+    pub older: u64,
+}
+
+impl AgeStat {
+    /// Mean age in cycles (0 without copies).
+    pub fn mean(&self) -> f64 {
+        self.sum as f64 / self.copies.max(1) as f64
+    }
+}
+
+/// Data age of the copies of critical slots (`[0]`) and of the other slots
+/// (`[1]`, by `critical`, per slot) in `recs`, from cycle `from` on, and
+/// how many were older than in `reference` (the same ring without the
+/// errors, cycle for cycle). Copies without a value yet are left out.
+pub fn age_stats(
+    cfg: &Config,
+    critical: &[bool],
+    recs: &[CycleRecord],
+    reference: &[CycleRecord],
+    from: usize,
+) -> [AgeStat; 2] {
+    let mut st = [AgeStat::default(); 2];
+    for (r, q) in recs.iter().zip(reference).skip(from) {
+        let want: std::collections::BTreeMap<_, _> = ages(cfg, q).into_iter().collect();
+        for ((k, s), age) in ages(cfg, r) {
+            let Some(a) = age else { continue };
+            let x = &mut st[usize::from(!critical[s])];
+            x.copies += 1;
+            x.sum += a as u64;
+            x.worst = x.worst.max(a);
+            if want.get(&(k, s)).copied().flatten().is_some_and(|b| a > b) {
+                x.older += 1;
+            }
+        }
+    }
+    st
+}

@@ -29,6 +29,13 @@ impl Ring {
             }
             match t {
                 FlipTarget::Cs => frame.hdr = HeaderRx::NoCs,
+                // A header already rejected further up (its H0 good) whose
+                // H0 is now hit: the next receiver stops at this fresh,
+                // unmarked damage (§4, §9), and so does the clock base (§8).
+                FlipTarget::H0 if frame.hdr == HeaderRx::Bad && !frame.hdr_bad.0 => {
+                    frame.hdr_bad.0 = true;
+                    frame.hdr_marked = false;
+                }
                 FlipTarget::H0 | FlipTarget::H1 => {
                     if let HeaderRx::Ok(h) = frame.hdr {
                         let (w, other) = if t == FlipTarget::H0 {

@@ -249,11 +249,19 @@ impl Ring {
 
     /// Node `k` takes a good copy of slot `s` from the RTX, as it would
     /// have taken the frame's word but without an Alive check (§8); an
-    /// actuator puts its own Alive into its slot's copy, as in the frame
+    /// actuator puts its own Alive into its slot's copy, as in the frame,
+    /// also into one damaged after its first group, which reads as data
     /// (returns whether it did).
     fn rtx_take(&mut self, k: usize, s: usize, w: &mut Slot, born: Option<u32>) -> bool {
+        let own = matches!(self.cfg.slot_kind[s], SlotKind::Act { actuator } if actuator == k);
         let Slot::Data(d) = w else {
-            return false;
+            return own
+                && match *w {
+                    Slot::Bad(l) | Slot::Marked(l) => {
+                        l == Lead::Data || (l == Lead::Alarm && self.cfg.ext)
+                    }
+                    _ => false,
+                };
         };
         let kind = self.cfg.nodes[k].kind;
         let nd = &mut self.nodes[k];
@@ -262,7 +270,7 @@ impl Ring {
             nd.db_born[s] = born;
             nd.valid[s] = true;
         }
-        if matches!(self.cfg.slot_kind[s], SlotKind::Act { actuator } if actuator == k) {
+        if own {
             nd.output = d.data;
             nd.out_born = born;
             d.alive = nd.toggle;

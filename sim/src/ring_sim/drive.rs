@@ -604,27 +604,19 @@ impl<'a> Drive<'a> {
     /// passed fibre `f`, or none travelled it by the model: the next
     /// packet there is then cycle k + 1's frame. Timed from the fibre's
     /// frame offset (measured at its H1, 10 + 2W bit times after its J K)
-    /// plus the RTX's start T and length, and 8 bit times.
-    fn rtx_over(&mut self, f: usize, k: u32) -> bool {
-        let Some(x) = &self.recs[k as usize].rtx else {
+    /// plus the packet's tail after H1 (`Snapshots::rtx_tail`: the RTX's
+    /// start T and length, and 8 bit times).
+    fn rtx_over(&self, f: usize, k: u32) -> bool {
+        let Some((fibres, tail)) = &self.snaps.rtx_tail[k as usize] else {
             return true;
         };
-        if !x.fibres.contains(&f) {
+        if !fibres.contains(&f) {
             return true;
         }
         let Some(off) = self.pace_off[f] else {
             return true;
         };
-        let head = 10 + 2 * self.cfg.word_bits() as u64;
-        let rtx = merkur_rtl::top::synth_top::RtxStatic::of(self.cfg);
-        let rec = &self.recs[k as usize];
-        let at = if rec.nodes[rec.base].rw {
-            rtx.at_wrapped
-        } else {
-            rtx.at
-        } as u64;
-        let end = self.starts[k as usize] + off + (at + x.bits as u64 + 8) * TICKS_PER_BIT as u64;
-        self.r.ticks >= end.saturating_sub(head * TICKS_PER_BIT as u64)
+        self.r.ticks >= self.starts[k as usize] + off + tail
     }
 
     /// Injects every fault whose moment has come.
