@@ -914,7 +914,7 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
         // Words already hit in this cycle (on any fibre): a second flip in
         // a word that travels on damaged is a double error, which these
         // runs do not inject (the report says so).
-        let mut hit: Vec<(bool, usize)> = vec![];
+        let mut hit: Vec<usize> = vec![];
         for (fi, carry) in rec.fibres.iter().enumerate() {
             // The frame's code bits (DATA frames: the harness places a flip
             // exactly only on a line bit that starts with an edge, a code 1;
@@ -941,33 +941,42 @@ fn ber_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
                     (at - 10 - 2 * w) % w,
                 ),
             };
-            // A word's last bit also hits the next word (protocol §4).
-            let word = |a: usize| match a {
-                0..=9 => 0,
-                _ => 1 + (a - 10) / w,
-            };
-            let sec = false;
-            let words = [word(at), word(at + 1)];
-            if words.iter().any(|w| hit.contains(&(sec, *w))) {
-                continue;
-            }
-            hit.extend(words.iter().map(|w| (sec, *w)));
-            let fibre = if fi < n {
-                Fibre::P(fi)
-            } else {
-                Fibre::S(fi - n)
-            };
-            v.push((
-                rec.cycle,
-                Fault::Flip {
-                    fibre,
-                    target,
-                    bit: bit as u32,
-                },
-            ));
+            let fibre = Fibre::from_index(fi, n);
+            push_single(&mut v, &mut hit, w, at, rec.cycle, fibre, (target, bit));
         }
     }
     placeable(cfg, v)
+}
+
+/// Adds the flip of line bit `at` of a packet on `fibre` in cycle `c`
+/// (`target`, and the bit in it) unless a word it touches — its own and,
+/// at a word's last bit, the next (protocol §4); J K counts as word 0 —
+/// was hit already in the cycle (`hit`, word positions in packets of `w`
+/// line bits per word): a second flip in a word that travels on damaged
+/// is a double error, which the campaign does not inject.
+fn push_single(
+    v: &mut Vec<(u32, Fault)>,
+    hit: &mut Vec<usize>,
+    w: usize,
+    at: usize,
+    c: u32,
+    fibre: Fibre,
+    (target, bit): (FlipTarget, usize),
+) {
+    let word = |a: usize| if a < 10 { 0 } else { 1 + (a - 10) / w };
+    let words = [word(at), word(at + 1)];
+    if words.iter().any(|x| hit.contains(x)) {
+        return;
+    }
+    hit.extend(words);
+    v.push((
+        c,
+        Fault::Flip {
+            fibre,
+            target,
+            bit: bit as u32,
+        },
+    ));
 }
 
 /// The flips of `v` the RTL harness can place in `cfg`'s ring: errors can
@@ -1021,26 +1030,8 @@ fn rtx_flips(cfg: &Config, ber: f64, seed: u64) -> Vec<(u32, Fault)> {
             } else {
                 (FlipTarget::Rtx((at - head) / w), (at - head) % w)
             };
-            // A word's last bit also hits the next word (protocol §4).
-            let word = |a: usize| if a < 10 { 0 } else { 1 + (a - 10) / w };
-            let words = [word(at), word(at + 1)];
-            if words.iter().any(|x| hit.contains(x)) {
-                continue;
-            }
-            hit.extend(words);
-            let fibre = if fi < n {
-                Fibre::P(fi)
-            } else {
-                Fibre::S(fi - n)
-            };
-            v.push((
-                rec.cycle,
-                Fault::Flip {
-                    fibre,
-                    target,
-                    bit: bit as u32,
-                },
-            ));
+            let fibre = Fibre::from_index(fi, n);
+            push_single(&mut v, &mut hit, w, at, rec.cycle, fibre, (target, bit));
         }
     }
     v

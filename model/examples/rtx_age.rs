@@ -34,14 +34,6 @@ impl Draw {
     }
 }
 
-fn fibre(i: usize, n: usize) -> Fibre {
-    if i < n {
-        Fibre::P(i)
-    } else {
-        Fibre::S(i - n)
-    }
-}
-
 /// Bit errors and bursts on the fibres the clean run's frames cross.
 /// `slots_only`: errors in the DATA frames' slot words only (no header,
 /// no start delimiter, no retransmission packet), to separate what the
@@ -74,7 +66,7 @@ fn errors(
             if !matches!(carry, Carry::Data(_)) {
                 continue;
             }
-            let fb = fibre(fi, n);
+            let fb = Fibre::from_index(fi, n);
             // One flip per word and cycle (`.0`: in the retransmission
             // packet): a second error in a word is a double error.
             let place = |hit: &mut Vec<(bool, u64)>,
