@@ -669,12 +669,20 @@ impl Snapshots {
     }
 }
 
+/// What the driver learnt of a fibre's pace ([`frame_over`]).
+#[derive(Clone, Copy, Default)]
+pub(crate) struct Pace {
+    /// Ticks from a frame's start to its H1 there (the last H1 decoded).
+    pub(crate) off: Option<u64>,
+    /// The fibre's TH1 that `off` was learnt from (or found too old).
+    th1: Option<u64>,
+}
+
 /// Frame `k` has passed fibre `f`: its H1 (not an older one with the same
 /// CYC) was seen and its last slot too; or, when a bit error made it
 /// invisible there, as long after its start as the fibre's last visible
-/// frame took to end (learnt into `off`, the delay of the last H1 decoded
-/// there after its frame's start), plus 8 bit times: in the idle gap
-/// before the next.
+/// frame took to end (learnt into `pace`, once per H1 decoded there),
+/// plus 8 bit times: in the idle gap before the next.
 #[allow(clippy::too_many_arguments)]
 fn frame_over(
     r: &mut Ring,
@@ -682,7 +690,7 @@ fn frame_over(
     k: u32,
     starts: &[u64],
     sent: u32,
-    off: &mut [Option<u64>],
+    pace: &mut [Pace],
     period: u64,
     slot_bits: u64,
 ) -> bool {
@@ -692,17 +700,21 @@ fn frame_over(
     let ended = fr >> 3 & 1 == 0
         && fr & 7 == (k & 7) as u64
         && th1.wrapping_sub(prev) & 0xffff_ffff < 1 << 31;
-    // The frame TH1 belongs to: the CYC of the H1 decoded with it (FRAME's
-    // CYC also counts on across a damaged H1, where TH1 stays).
-    let cyc = ((r.rd(f, st::H1) >> 12) & 7) as u32;
-    if let Some(j) = (0..sent).rev().find(|j| j & 7 == cyc) {
-        let d = th1.wrapping_sub(starts[j as usize]) & 0xffff_ffff;
-        if d < 2 * period * TICKS_PER_BIT as u64 {
-            off[f] = Some(d);
+    if pace[f].th1 != Some(th1) {
+        pace[f].th1 = Some(th1);
+        // The frame TH1 belongs to: the CYC of the H1 decoded with it
+        // (FRAME's CYC also counts on across a damaged H1, where TH1
+        // stays).
+        let cyc = ((r.rd(f, st::H1) >> 12) & 7) as u32;
+        if let Some(j) = (0..sent).rev().find(|j| j & 7 == cyc) {
+            let d = th1.wrapping_sub(starts[j as usize]) & 0xffff_ffff;
+            if d < 2 * period * TICKS_PER_BIT as u64 {
+                pace[f].off = Some(d);
+            }
         }
     }
     let tail = (slot_bits + 8) * TICKS_PER_BIT as u64;
-    ended || off[f].is_some_and(|o| r.ticks >= prev + o + tail)
+    ended || pace[f].off.is_some_and(|o| r.ticks >= prev + o + tail)
 }
 
 /// Whether some slot's writer is off the frame's path in this cycle (dead,

@@ -253,7 +253,7 @@ pub(super) struct Drive<'a> {
     /// Per fault timed in the idle gap, the tick to inject at.
     gap_at: Vec<Option<u64>>,
     /// Per fibre: ticks from a frame's start to its H1 there.
-    pace_off: Vec<Option<u64>>,
+    pace: Vec<Pace>,
     mode_ticks: Vec<(usize, u64, u64)>,
     fs_ticks: Vec<Option<u64>>,
     /// Per node, the switchbox mode last polled.
@@ -323,7 +323,7 @@ impl<'a> Drive<'a> {
             alq: alarms::AlarmQueues::new(cfg),
             fault_ticks: vec![None; cfg.faults.len()],
             gap_at: vec![None; cfg.faults.len()],
-            pace_off: vec![None; 2 * n],
+            pace: vec![Default::default(); 2 * n],
             mode_ticks: vec![],
             fs_ticks: vec![None; n],
             modes: vec![0; n],
@@ -594,7 +594,7 @@ impl<'a> Drive<'a> {
             k,
             &self.starts,
             self.sent,
-            &mut self.pace_off,
+            &mut self.pace,
             period,
             self.cfg.word_bits() as u64 * self.cfg.slots as u64,
         )
@@ -613,7 +613,7 @@ impl<'a> Drive<'a> {
         if !fibres.contains(&f) {
             return true;
         }
-        let Some(off) = self.pace_off[f] else {
+        let Some(off) = self.pace[f].off else {
             return true;
         };
         self.r.ticks >= self.starts[k as usize] + off + tail
