@@ -172,12 +172,15 @@ pub struct NodeResult {
     pub pterms: Option<u64>,
     /// Critical path (nets) when timing failed.
     pub critical_path: Vec<String>,
-    /// The Yosys strategy whose netlist was placed (bitstream targets; the
-    /// last one tried when none fits): the synthesis command and options.
+    /// The Yosys strategy whose netlist was kept (bitstream targets: the
+    /// first that placed and met the design clock, else the fastest that
+    /// placed; the last one tried when none fits): the synthesis command
+    /// and options.
     pub strategy: String,
     /// What the build had to do beyond the first strategy and the heap
-    /// placer (strategies that did not fit, seeds placed by the SA placer
-    /// or not at all).
+    /// placer (strategies that did not fit or missed the design clock,
+    /// with their need or Fmax; seeds placed by the SA placer or not at
+    /// all).
     pub notes: Vec<String>,
     /// Files written for this node, relative to the output folder.
     pub artifacts: Vec<String>,
