@@ -452,6 +452,22 @@ fn campaign_refuses_bad_arguments() {
     }
 }
 
+/// `synth.json` of a `merkur synth` run written to `dir`.
+fn synth_report(dir: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(dir.join("synth.json")).unwrap()).unwrap()
+}
+
+/// The Fmax a node's notes give for a Yosys strategy that missed the design
+/// clock ("`synth_ice40 -nodffe`: Fmax 97.25 MHz …").
+fn strategy_fmax(notes: &str, strategy: &str) -> f64 {
+    notes
+        .split(&format!("{strategy}: Fmax "))
+        .nth(1)
+        .and_then(|s| s.split_whitespace().next())
+        .and_then(|s| s.parse().ok())
+        .unwrap_or_else(|| panic!("no Fmax of {strategy} in {notes}"))
+}
+
 /// What CI requires of synthesis (issues 7, 20): a whole ring's node kinds
 /// — the special master, a master and a slave of tb-data/ring8.toml —
 /// become iCE40-HX8K bitstreams with timing met at the design line rate
@@ -474,8 +490,7 @@ fn synth_makes_a_ring_of_bitstreams() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
+    let json = synth_report(&out);
     // ring8: node 0 the special master, node 3 a master (one block more
     // each since the alarm queue, issue 22), node 1 a sensor (none).
     for (i, (node, label, brams)) in [(0, "special_master", 9), (3, "master", 6), (1, "slave", 0)]
@@ -530,8 +545,7 @@ fn synth_closes_the_special_master_with_retransmission() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
+    let json = synth_report(&out);
     let n = &json["nodes"][0];
     assert_eq!(n["status"], "ok", "{n}");
     assert!(n["fmax_mhz"].as_f64().unwrap() >= 100.0, "{n}");
@@ -539,12 +553,7 @@ fn synth_closes_the_special_master_with_retransmission() {
     // The defaults were tried first and missed the clock: their Fmax is
     // recorded, below 100 MHz.
     let notes = n["notes"].to_string();
-    let first: f64 = notes
-        .split("(Yosys' defaults): Fmax ")
-        .nth(1)
-        .and_then(|s| s.split_whitespace().next())
-        .and_then(|s| s.parse().ok())
-        .unwrap_or_else(|| panic!("no Fmax of the defaults in {notes}"));
+    let first = strategy_fmax(&notes, "`synth_ice40` (Yosys' defaults)");
     assert!(first < 100.0, "{notes}");
     // The kept strategy's files are the ones in the node's folder (no
     // folder of a strategy set aside is left).
@@ -640,8 +649,7 @@ fn synth_fits_the_lean_slave_into_the_hx1k() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("synth.json")).unwrap()).unwrap();
+    let json = synth_report(&out);
     let n = &json["nodes"][0];
     assert_eq!(n["status"], "ok", "{n}");
     assert_eq!(n["lcs_available"], 1280, "{n}");
@@ -740,21 +748,12 @@ fn synth_fails_when_timing_is_not_met() {
     );
     // Both of the HX8K's strategies missed 200 MHz: the faster one is
     // kept, with its files, and the notes give each one's Fmax.
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("synth.json")).unwrap()).unwrap();
+    let json = synth_report(&dir);
     let n = &json["nodes"][0];
     let notes = n["notes"].to_string();
-    let fmax_of = |strategy: &str| -> f64 {
-        notes
-            .split(&format!("{strategy}: Fmax "))
-            .nth(1)
-            .and_then(|s| s.split_whitespace().next())
-            .and_then(|s| s.parse().ok())
-            .unwrap_or_else(|| panic!("no Fmax of {strategy} in {notes}"))
-    };
     let (default, nodffe) = (
-        fmax_of("`synth_ice40` (Yosys' defaults)"),
-        fmax_of("`synth_ice40 -nodffe`"),
+        strategy_fmax(&notes, "`synth_ice40` (Yosys' defaults)"),
+        strategy_fmax(&notes, "`synth_ice40 -nodffe`"),
     );
     let kept = n["fmax_mhz"].as_f64().unwrap();
     assert!(
@@ -896,8 +895,7 @@ fn synth_makes_an_ecp5_bitstream_at_the_design_line_rate() {
         dir.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", text(&o.stderr));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("synth.json")).unwrap()).unwrap();
+    let json = synth_report(&dir);
     assert_eq!(json["clock_mhz"], 100.0);
     let n = &json["nodes"][0];
     assert_eq!(n["status"], "ok", "{n}");
