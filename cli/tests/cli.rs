@@ -452,6 +452,16 @@ fn campaign_refuses_bad_arguments() {
     }
 }
 
+/// `merkur synth ARGS -o out`, which must succeed: its `synth.json`.
+fn synth_ok(args: &[&str], out: &Path) -> serde_json::Value {
+    let mut all = vec!["synth"];
+    all.extend_from_slice(args);
+    all.extend(["-o", out.to_str().unwrap()]);
+    let o = merkur(&all);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    synth_report(out)
+}
+
 /// `synth.json` of a `merkur synth` run written to `dir`.
 fn synth_report(dir: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(dir.join("synth.json")).unwrap()).unwrap()
@@ -479,18 +489,16 @@ fn strategy_fmax(notes: &str, strategy: &str) -> f64 {
 fn synth_makes_a_ring_of_bitstreams() {
     let dir = scratch("synth");
     let out = dir.join("ice40");
-    let o = merkur(&[
-        "synth",
-        "tb-data/ring8.toml",
-        "--target",
-        "ice40-hx8k",
-        "--seeds",
-        "3",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let json = synth_report(&out);
+    let json = synth_ok(
+        &[
+            "tb-data/ring8.toml",
+            "--target",
+            "ice40-hx8k",
+            "--seeds",
+            "3",
+        ],
+        &out,
+    );
     // ring8: node 0 the special master, node 3 a master (one block more
     // each since the alarm queue, issue 22), node 1 a sensor (none).
     for (i, (node, label, brams)) in [(0, "special_master", 9), (3, "master", 6), (1, "slave", 0)]
@@ -532,20 +540,18 @@ fn synth_makes_a_ring_of_bitstreams() {
 fn synth_closes_the_special_master_with_retransmission() {
     let dir = scratch("synth-rtx");
     let out = dir.join("out");
-    let o = merkur(&[
-        "synth",
-        "tb-data/ring8_rtx.toml",
-        "--target",
-        "ice40-hx8k",
-        "--node",
-        "0",
-        "--seeds",
-        "3",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let json = synth_report(&out);
+    let json = synth_ok(
+        &[
+            "tb-data/ring8_rtx.toml",
+            "--target",
+            "ice40-hx8k",
+            "--node",
+            "0",
+            "--seeds",
+            "3",
+        ],
+        &out,
+    );
     let n = &json["nodes"][0];
     assert_eq!(n["status"], "ok", "{n}");
     assert!(n["fmax_mhz"].as_f64().unwrap() >= 100.0, "{n}");
@@ -636,20 +642,18 @@ fn synth_refuses_the_full_slave_on_the_hx1k() {
 fn synth_fits_the_lean_slave_into_the_hx1k() {
     let dir = scratch("synth-hx1k");
     let out = dir.join("out");
-    let o = merkur(&[
-        "synth",
-        "tb-data/ring8.toml",
-        "--target",
-        "ice40-hx1k",
-        "--node",
-        "1",
-        "--diag",
-        "off",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let json = synth_report(&out);
+    let json = synth_ok(
+        &[
+            "tb-data/ring8.toml",
+            "--target",
+            "ice40-hx1k",
+            "--node",
+            "1",
+            "--diag",
+            "off",
+        ],
+        &out,
+    );
     let n = &json["nodes"][0];
     assert_eq!(n["status"], "ok", "{n}");
     assert_eq!(n["lcs_available"], 1280, "{n}");
@@ -884,18 +888,10 @@ fn synth_names_a_missing_tool() {
 #[test]
 fn synth_makes_an_ecp5_bitstream_at_the_design_line_rate() {
     let dir = scratch("synth-ecp5");
-    let o = merkur(&[
-        "synth",
-        "tb-data/ring8.toml",
-        "--target",
-        "ecp5-85",
-        "--node",
-        "1",
-        "-o",
-        dir.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", text(&o.stderr));
-    let json = synth_report(&dir);
+    let json = synth_ok(
+        &["tb-data/ring8.toml", "--target", "ecp5-85", "--node", "1"],
+        &dir,
+    );
     assert_eq!(json["clock_mhz"], 100.0);
     let n = &json["nodes"][0];
     assert_eq!(n["status"], "ok", "{n}");

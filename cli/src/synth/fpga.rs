@@ -619,16 +619,13 @@ impl Aside {
     fn restore(self) -> Result<NodeResult, String> {
         remove_files(&self.dir, &self.files)?;
         move_files(&self.folder, &self.dir, &self.files)?;
-        self.discard_folder()?;
+        self.discard()?;
         Ok(self.r)
     }
 
-    /// A faster strategy replaces it: its files go.
-    fn discard(self) -> Result<(), String> {
-        self.discard_folder()
-    }
-
-    fn discard_folder(&self) -> Result<(), String> {
+    /// Its folder removed (a faster strategy replaces it, or its files
+    /// are back in place).
+    fn discard(&self) -> Result<(), String> {
         std::fs::remove_dir_all(&self.folder)
             .map_err(|e| format!("error: cannot remove {}: {e}", self.folder.display()))
     }
