@@ -398,15 +398,31 @@ fn write(dir: &Path, name: &str, text: &str) -> Result<(), String> {
 /// `synth_coolrunner2` in its steps, with memories (ROM tables included)
 /// mapped to flip-flops first and without `extract_counter`, which crashes
 /// Yosys 0.23 on the nodes (`dict::at()` out of range); the T flip-flops of
-/// counters are still found by the `map_tff` step.
-const XC2_SCRIPT: &str =
-    "read_verilog top.v; hierarchy -top merkur_top; proc; flatten; memory; opt; \
-    synth_coolrunner2 -top merkur_top -run :fine; \
-    techmap -map +/coolrunner2/cells_counter_map.v; clean; opt -fast -full; \
-    techmap -map +/techmap.v -map +/coolrunner2/cells_latch.v; opt -fast; \
-    dfflibmap -prepare -liberty +/coolrunner2/xc2_dff.lib; \
-    synth_coolrunner2 -top merkur_top -run map_tff:; write_edif top.edif; \
-    tee -q -o stat.json stat -json";
+/// counters are still found by the `map_tff` step. Before it,
+/// [`XC2_SAT_PASSES`] rounds of `opt_dff -sat` remove the flip-flops that
+/// can never leave their initial value.
+fn xc2_script() -> String {
+    format!(
+        "read_verilog top.v; hierarchy -top merkur_top; proc; flatten; memory; opt; \
+         {}synth_coolrunner2 -top merkur_top -run :fine; \
+         techmap -map +/coolrunner2/cells_counter_map.v; clean; opt -fast -full; \
+         techmap -map +/techmap.v -map +/coolrunner2/cells_latch.v; opt -fast; \
+         dfflibmap -prepare -liberty +/coolrunner2/xc2_dff.lib; \
+         synth_coolrunner2 -top merkur_top -run map_tff:; write_edif top.edif; \
+         tee -q -o stat.json stat -json",
+        "opt_dff -sat; opt_clean; ".repeat(XC2_SAT_PASSES)
+    )
+}
+
+/// Rounds of `opt_dff -sat` in [`xc2_script`]. A counter that counts down
+/// from a static value (the switch controller's grace counter: half the
+/// CS timeout, 20 bits wide) never sets the bits above that value's
+/// highest one. `opt_dff -sat` proves one such bit constant per round,
+/// from the top down, because each proof needs the bit above it already
+/// gone; so a 20-bit counter needs up to 20 rounds. On ring8's sensor this
+/// removes 9 flip-flops and about 290 product terms
+/// (docs/benchmarks.md).
+const XC2_SAT_PASSES: usize = 20;
 
 /// Maps a slave to a CoolRunner-II; status `does not fit` (which [`run`]
 /// turns into a refusal) when it cannot fit the device, naming what it
@@ -418,7 +434,7 @@ fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(),
         return Ok(());
     }
     write(dir, "top.v", &node_top(st)?)?;
-    run_tool(dir, "yosys", &["-p", XC2_SCRIPT], "yosys.log")?;
+    run_tool(dir, "yosys", &["-p", &xc2_script()], "yosys.log")?;
     let cells = yosys_cells(&read_json(dir, "stat.json")?);
     let mc = sum_cells(&cells, |n| n == "MACROCELL_XOR");
     let pt = sum_cells(&cells, |n| n == "ANDTERM");
