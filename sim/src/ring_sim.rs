@@ -754,25 +754,13 @@ fn dump_fibre(r: &mut Ring, f: usize, c: u32, frame: &ring::Frame) {
 /// A recovery window's first and last cycle, if any.
 type Span = Option<(u32, u32)>;
 
-/// Compares every fibre's capture of cycle `c` with the model. `spans`: the
-/// recovery window that holds cycle `c`, and the one whose repeat tail
-/// holds it (protocol §13). About 175 lines: one pass over the captures,
-/// with each window rule at the words it applies to.
-fn compare_cycle(
-    r: &mut Ring,
-    cfg: &Config,
-    recs: &[CycleRecord],
-    c: u32,
-    (win, tail): (Span, Span),
-    mism: &mut Vec<Mismatch>,
-    words: &mut u64,
-) {
-    let capn = r.capn;
-    let ep = r.ep[c as usize];
-    // Whole at the clock base: on its PI or its SI fibre.
+/// Marks cycle `c` whole when the clock base got its frame back complete,
+/// on its PI or its SI fibre: H1 and every slot fresh and present.
+fn mark_whole(r: &mut Ring, cfg: &Config, recs: &[CycleRecord], c: u32) {
+    let (capn, ep) = (r.capn, r.ep[c as usize]);
     let sm = recs[c as usize].base;
-    let n_ = cfg.nodes.len();
-    for f in [(sm + n_ - 1) % n_, n_ + sm] {
+    let n = cfg.nodes.len();
+    for f in [(sm + n - 1) % n, n + sm] {
         let h1 = r.cap(f, 4 * capn + 2 * (c & 3) as usize + 1);
         let mut whole = fresh(h1, c, ep) && (h1 >> 18) & 3 == 1;
         for slot in 0..cfg.slots {
@@ -783,69 +771,97 @@ fn compare_cycle(
             r.whole[c as usize] = true;
         }
     }
+}
+
+/// Inside a recovery window `win` (protocol §13) slot `slot` may show
+/// nothing, a bad word, VOID, or data that the model put in that slot on
+/// any fibre or that the slot's writer produced, from the cycle before the
+/// window to its end (Alive and alarm flags are bit timing there): never a
+/// foreign value. Outside a window, the repeat tail's rule.
+fn legal_in_window(
+    cfg: &Config,
+    recs: &[CycleRecord],
+    c: u32,
+    (win, tail): (Span, Span),
+    slot: usize,
+    got: &Slot,
+) -> bool {
+    let Some((a, z)) = win else {
+        return repeat_tail(cfg, recs, c, tail, slot, got);
+    };
+    let Slot::Data(g) = got else { return true };
+    let span = &recs[a.saturating_sub(1) as usize..=z as usize];
+    // A RECONFIG alarm (§11) of a mode its sender had in the window:
+    // which of its modes is pending when it next writes depends on
+    // bit timing (a switchbox change just before or after a frame
+    // start; protocol §13).
+    let sender = cfg.nodes.iter().position(|nd| nd.address == slot);
+    let reconfig = !cfg.ext
+        && g.alarm
+        && sender.is_some_and(|w| {
+            span.iter().any(|x| {
+                g.data & !SEQ_BIT
+                    == (merkur_model::ring::reason::reconfig(x.nodes[w].mode) as u16) << 12
+            })
+        });
+    reconfig
+        || span.iter().any(|x| {
+            x.produced.get(slot) == Some(&g.data)
+                || x.fibres.iter().any(|carry| match carry {
+                    Carry::Data(fr) => {
+                        matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data == g.data)
+                    }
+                    _ => false,
+                })
+        })
+}
+
+/// A slot whose writer is off the frame's path (a ring split by a second
+/// fault, protocol §13), or frozen in failsafe, carries what the last frame
+/// before the split brought back, which is bit timing: VOID, or data the
+/// model showed in that slot before (up to cycle `c`) — never a foreign
+/// value.
+fn stranded_word(cfg: &Config, recs: &[CycleRecord], c: u32, slot: usize, got: &Slot) -> bool {
+    let (rec, w) = (&recs[c as usize], cfg.writer[slot]);
+    if rec.path.contains(&w) && !rec.nodes[w].failsafe {
+        return false;
+    }
+    let Slot::Data(g) = got else {
+        return matches!(got, Slot::Void);
+    };
+    recs[..=c as usize].iter().any(|x| {
+        x.produced.get(slot) == Some(&g.data)
+            || x.fibres.iter().any(|carry| {
+                matches!(carry, Carry::Data(fr)
+                if matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data == g.data))
+            })
+    })
+}
+
+/// Compares every fibre's capture of cycle `c` with the model. `spans`: the
+/// recovery window that holds cycle `c`, and the one whose repeat tail
+/// holds it (protocol §13). One pass over the captures, with each window
+/// rule ([`legal_in_window`], [`stranded_word`]) at the words it applies to.
+fn compare_cycle(
+    r: &mut Ring,
+    cfg: &Config,
+    recs: &[CycleRecord],
+    c: u32,
+    spans: (Span, Span),
+    mism: &mut Vec<Mismatch>,
+    words: &mut u64,
+) {
+    let capn = r.capn;
+    let ep = r.ep[c as usize];
+    let sm = recs[c as usize].base;
+    let win = spans.0;
+    mark_whole(r, cfg, recs, c);
     let n = cfg.nodes.len();
     let rec = &recs[c as usize];
     let b = (c & 3) as usize;
     if win.is_some() {
         r.alive_inv.iter_mut().for_each(|x| *x = None);
     }
-    // Inside a recovery window (protocol §13) a slot may show nothing, a
-    // bad word, VOID, or data that the model put in that slot on any fibre
-    // or that the slot's writer produced, from the cycle before the window
-    // to its end (Alive and alarm flags are bit timing there): never a
-    // foreign value.
-    let legal = |slot: usize, got: &Slot| -> bool {
-        let Some((a, z)) = win else {
-            return repeat_tail(cfg, recs, c, tail, slot, got);
-        };
-        let Slot::Data(g) = got else { return true };
-        let span = &recs[a.saturating_sub(1) as usize..=z as usize];
-        // A RECONFIG alarm (§11) of a mode its sender had in the window:
-        // which of its modes is pending when it next writes depends on
-        // bit timing (a switchbox change just before or after a frame
-        // start; protocol §13).
-        let sender = cfg.nodes.iter().position(|nd| nd.address == slot);
-        let reconfig = !cfg.ext
-            && g.alarm
-            && sender.is_some_and(|w| {
-                span.iter().any(|x| {
-                    g.data & !SEQ_BIT
-                        == (merkur_model::ring::reason::reconfig(x.nodes[w].mode) as u16) << 12
-                })
-            });
-        reconfig
-            || span.iter().any(|x| {
-                x.produced.get(slot) == Some(&g.data)
-                    || x.fibres.iter().any(|carry| match carry {
-                        Carry::Data(fr) => {
-                            matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data == g.data)
-                        }
-                        _ => false,
-                    })
-            })
-    };
-    // A slot whose writer is off the frame's path (a ring split by a second
-    // fault, protocol §13) carries what the last frame before the split
-    // brought back, which is bit timing: VOID, or data the model showed in
-    // that slot before — never a foreign value.
-    let stranded = |slot: usize, got: &Slot| -> bool {
-        let w = cfg.writer[slot];
-        // (Or frozen: a writer in failsafe wrote last whatever it wrote
-        // before the second fault reached it.)
-        if rec.path.contains(&w) && !rec.nodes[w].failsafe {
-            return false;
-        }
-        let Slot::Data(g) = got else {
-            return matches!(got, Slot::Void);
-        };
-        recs[..=c as usize].iter().any(|x| {
-            x.produced.get(slot) == Some(&g.data)
-                || x.fibres.iter().any(|carry| {
-                    matches!(carry, Carry::Data(fr)
-                    if matches!(fr.words.get(slot), Some(Slot::Data(m)) if m.data == g.data))
-                })
-        })
-    };
     // The last frame of a clock base that dies at the next cycle's start,
     // on the fibres back into it: its neighbours' wrap (their loss of
     // signal, 32 bit times after the death) may cut its tail, as a frame's
@@ -913,7 +929,11 @@ fn compare_cycle(
                         }
                     }
                     let cut = cut_back(f) && g == Slot::Missing;
-                    if want != got && !legal(slot, &g) && !stranded(slot, &g) && !cut {
+                    if want != got
+                        && !legal_in_window(cfg, recs, c, spans, slot, &g)
+                        && !stranded_word(cfg, recs, c, slot, &g)
+                        && !cut
+                    {
                         push(format!("slot {slot}"), want, got);
                     }
                 }
