@@ -607,6 +607,35 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
         .unwrap_or(0);
     assert!(n > 100, "{target}: {err}");
     assert!(!out.exists(), "{target}: nothing may be written");
+    if target.starts_with("xc2c") {
+        // Where the product terms go: four blocks, most first, each within
+        // the node's total; the node's own blocks are named.
+        let total: u64 = err
+            .split("macrocells, ")
+            .nth(1)
+            .and_then(|s| s.split_whitespace().next())
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(0);
+        let blocks = err.split("Most product terms: ").nth(1).unwrap_or("");
+        let terms: Vec<u64> = blocks
+            .split(", ")
+            .filter_map(|b| {
+                b.split(" product terms")
+                    .next()?
+                    .rsplit(' ')
+                    .next()?
+                    .parse()
+                    .ok()
+            })
+            .collect();
+        assert_eq!(terms.len(), 4, "{err}");
+        assert!(terms.windows(2).all(|w| w[0] >= w[1]), "{err}");
+        assert!(total > 0 && terms.iter().sum::<u64>() <= total, "{err}");
+        assert!(
+            blocks.contains("node.fwd ") && blocks.contains("node.rx_in "),
+            "{err}"
+        );
+    }
     if target == "ice40-hx1k" {
         // Every strategy was tried, and each one's need is named: the
         // smallest need first, then the four strategies of

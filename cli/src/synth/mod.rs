@@ -28,6 +28,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 mod fpga;
+mod xc2_blocks;
 pub use fpga::Flow;
 
 /// Synthesis targets besides the CoolRunner-IIs ([`CPLDS`]).
@@ -409,7 +410,7 @@ fn xc2_script() -> String {
          techmap -map +/techmap.v -map +/coolrunner2/cells_latch.v; opt -fast; \
          dfflibmap -prepare -liberty +/coolrunner2/xc2_dff.lib; \
          synth_coolrunner2 -top merkur_top -run map_tff:; write_edif top.edif; \
-         tee -q -o stat.json stat -json",
+         write_json top.json; tee -q -o stat.json stat -json",
         "opt_dff -sat; opt_clean; ".repeat(XC2_SAT_PASSES)
     )
 }
@@ -448,21 +449,28 @@ fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(),
     }));
     r.ios = Some(io);
     r.artifacts
-        .extend(["top.v", "top.edif", "stat.json", "yosys.log"].map(String::from));
+        .extend(["top.v", "top.edif", "top.json", "stat.json", "yosys.log"].map(String::from));
+    let costs = xc2_blocks::block_costs(&read_json(dir, "top.json")?);
     let over = mc > c.macrocells || pt > c.pterms() || io > c.io;
     if over {
         r.status = "does not fit".into();
         r.reason = format!(
             "it needs {mc} macrocells, {pt} product terms and {io} I/O; the {} has {} \
-             macrocells, {} product terms ({} function blocks × 56) and at most {} user I/O",
+             macrocells, {} product terms ({} function blocks × 56) and at most {} user I/O. \
+             Most product terms: {}",
             c.device,
             c.macrocells,
             c.pterms(),
             c.blocks,
-            c.io
+            c.io,
+            xc2_blocks::summary(&costs, 4)
         );
         return Ok(());
     }
+    r.notes.push(format!(
+        "product terms by block: {}",
+        xc2_blocks::summary(&costs, costs.len())
+    ));
     r.status = "ok".into();
     r.reason = "within the device's macrocells, product terms and I/O (no open fitter places \
                 this device: routing not checked, docs/synthesis.md)"
