@@ -23,7 +23,7 @@
 //! | `o_failsafe` | out | 1 | all | failsafe |
 //! | `i_diag_sel` | in | 3 | all (with `diag`) | which value `o_diag` shows (below) |
 //! | `o_diag` | out | 16 | all (with `diag`) | 0 perr, 1 ferr, 2 aerr, 3 serr, 4 hop, 5 frames sent, 6 actuator register (values a kind lacks read 0) |
-//! | `i_sensor` | in | 16 | slave (without `diag`: sensor) | sensor value (asynchronous; synchronised here) |
+//! | `i_sensor` | in | 16 | slave (without `diag`: sensor) | sensor value (synchronised here bit by bit: a value changing at a capture edge can arrive mixed, old and new bits; drive it from a register on `clk` or a handshake, docs/synthesis.md) |
 //! | `o_act` | out | 16 | actuator without `diag` | actuator output register |
 //! | `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr[13:0]`, `i_wb_dat[15:0]` | in | | master, SM | Wishbone B4 host port on `clk` ([`crate::node::mdb`]) |
 //! | `o_wb_dat[15:0]`, `o_wb_ack` | out | | master, SM | Wishbone read data, acknowledge |
