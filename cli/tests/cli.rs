@@ -572,6 +572,16 @@ fn synth_closes_the_special_master_with_retransmission() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The number that follows the first `marker` in `text` (0 when there is
+/// none).
+fn number_after(text: &str, marker: &str) -> u64 {
+    text.split(marker)
+        .nth(1)
+        .and_then(|s| s.split_whitespace().next())
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0)
+}
+
 /// `merkur synth --node 1 --diag on` of ring8's sensor on a device too small
 /// for it: refused with what it needs and what the device has (exit status
 /// 2, nothing written).
@@ -599,23 +609,13 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
         "{target}: {err}"
     );
     // The need is a measured count, not a word.
-    let n: u64 = err
-        .split("it needs ")
-        .nth(1)
-        .and_then(|s| s.split_whitespace().next())
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(0);
+    let n = number_after(&err, "it needs ");
     assert!(n > 100, "{target}: {err}");
     assert!(!out.exists(), "{target}: nothing may be written");
     if target.starts_with("xc2c") {
         // Where the product terms go: four blocks, most first, each within
         // the node's total; the node's own blocks are named.
-        let total: u64 = err
-            .split("macrocells, ")
-            .nth(1)
-            .and_then(|s| s.split_whitespace().next())
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(0);
+        let total = number_after(&err, "macrocells, ");
         let blocks = err.split("Most product terms: ").nth(1).unwrap_or("");
         let terms: Vec<u64> = blocks
             .split(", ")
