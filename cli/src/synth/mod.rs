@@ -456,21 +456,24 @@ fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(),
         r.status = "does not fit".into();
         r.reason = format!(
             "it needs {mc} macrocells, {pt} product terms and {io} I/O; the {} has {} \
-             macrocells, {} product terms ({} function blocks × 56) and at most {} user I/O. \
-             Most product terms: {}",
+             macrocells, {} product terms ({} function blocks × 56) and at most {} user I/O",
             c.device,
             c.macrocells,
             c.pterms(),
             c.blocks,
             c.io,
-            xc2_blocks::summary(&costs, 4)
         );
+        if !costs.is_empty() {
+            r.reason += &format!(". Most product terms: {}", xc2_blocks::summary(&costs, 4));
+        }
         return Ok(());
     }
-    r.notes.push(format!(
-        "product terms by block: {}",
-        xc2_blocks::summary(&costs, costs.len())
-    ));
+    if !costs.is_empty() {
+        r.notes.push(format!(
+            "product terms by block: {}",
+            xc2_blocks::summary(&costs, costs.len())
+        ));
+    }
     r.status = "ok".into();
     r.reason = "within the device's macrocells, product terms and I/O (no open fitter places \
                 this device: routing not checked, docs/synthesis.md)"

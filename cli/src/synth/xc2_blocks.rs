@@ -237,6 +237,13 @@ mod tests {
     }
 
     #[test]
+    fn no_top_module_no_blocks() {
+        let netlist = serde_json::json!({"modules": {"other": {"cells": {}, "netnames": {}}}});
+        assert!(block_costs(&netlist).is_empty());
+        assert!(block_costs(&serde_json::json!({})).is_empty());
+    }
+
+    #[test]
     fn register_names_win_over_ports() {
         let a = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
         assert_eq!(
