@@ -276,16 +276,19 @@ pub fn read_json(dir: &Path, name: &str) -> Result<serde_json::Value, String> {
     serde_json::from_str(&text).map_err(|e| format!("error: {}: {e}", p.display()))
 }
 
+/// The `merkur_top` module of a Yosys JSON file (`stat -json` or
+/// `write_json`), whether or not Yosys escaped its name.
+pub fn yosys_top(json: &serde_json::Value) -> Option<&serde_json::Value> {
+    json["modules"].as_object().and_then(|m| {
+        m.iter()
+            .find(|(k, _)| k.trim_start_matches('\\') == "merkur_top")
+            .map(|(_, v)| v)
+    })
+}
+
 /// Cell counts of the top module from Yosys' `stat -json`.
 pub fn yosys_cells(stat: &serde_json::Value) -> Vec<(String, u64)> {
-    let m = stat["modules"]
-        .as_object()
-        .and_then(|m| {
-            m.iter()
-                .find(|(k, _)| k.trim_start_matches('\\') == "merkur_top")
-        })
-        .map(|(_, v)| v.clone())
-        .unwrap_or_else(|| stat["design"].clone());
+    let m = yosys_top(stat).unwrap_or(&stat["design"]);
     m["num_cells_by_type"]
         .as_object()
         .map(|o| {

@@ -31,11 +31,7 @@ pub struct BlockCost {
 /// The blocks of `merkur_top` in a Yosys JSON netlist, most product terms
 /// first; an empty list when the netlist has no such module.
 pub fn block_costs(netlist: &Value) -> Vec<BlockCost> {
-    let Some(top) = netlist["modules"].as_object().and_then(|m| {
-        m.iter()
-            .find(|(k, _)| k.trim_start_matches('\\') == "merkur_top")
-            .map(|(_, v)| v)
-    }) else {
+    let Some(top) = super::fpga::yosys_top(netlist) else {
         return Vec::new();
     };
     let empty = serde_json::Map::new();
@@ -122,23 +118,17 @@ fn bits(v: &Value) -> impl Iterator<Item = u64> + '_ {
     v.as_array().into_iter().flatten().filter_map(Value::as_u64)
 }
 
-/// Every name Yosys kept for each net bit (`$`-names left out), with the
-/// bit index where the net is wider than one.
+/// Every name Yosys kept for each net bit (`$`-names left out).
 fn bit_names(netnames: &serde_json::Map<String, Value>) -> HashMap<u64, Vec<String>> {
     let mut m: HashMap<u64, Vec<String>> = HashMap::new();
     for (name, net) in netnames {
         if name.starts_with('$') {
             continue;
         }
-        let name = name.trim_start_matches('\\');
-        let list: Vec<u64> = bits(&net["bits"]).collect();
-        for (i, bit) in list.iter().enumerate() {
-            let alias = if list.len() > 1 {
-                format!("{name}[{i}]")
-            } else {
-                name.to_string()
-            };
-            m.entry(*bit).or_default().push(alias);
+        for bit in bits(&net["bits"]) {
+            m.entry(bit)
+                .or_default()
+                .push(name.trim_start_matches('\\').to_string());
         }
     }
     m
