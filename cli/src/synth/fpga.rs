@@ -180,6 +180,61 @@ fn is_core_clock(name: &str) -> bool {
     n == "clk" || n.starts_with("clk$") || n.ends_with(".clk")
 }
 
+/// The capture edge a critical path's end names (`negedge clk90$…`), in
+/// quarters of the core clock after `clk` rises: `clk` ↑ 0, `clk90` ↑ 1,
+/// `clk` ↓ 2, `clk90` ↓ 3; `None` for another clock or `<async>`.
+fn capture_edge(end: &str) -> Option<u32> {
+    let (edge, clock) = end.split_once(' ')?;
+    let n = clock.trim_start_matches("$glbnet$");
+    let clk90 = n == "clk90" || n.starts_with("clk90$") || n.ends_with(".clk90");
+    let q = match (clk90, is_core_clock(clock), edge) {
+        (true, _, "posedge") => 1,
+        (true, _, "negedge") => 3,
+        (false, true, "posedge") => 0,
+        (false, true, "negedge") => 2,
+        _ => return None,
+    };
+    Some(q)
+}
+
+/// The core clock the quadrature capture's transfers allow, MHz, and the
+/// transfer that sets it (`negedge clk90 → posedge clk: 1.60 ns in 1/4
+/// of a clock`). nextpnr takes `clk` and `clk90` for unrelated clocks: it
+/// reports the paths between them but holds them to no constraint, and
+/// its Fmax of `clk` leaves them out. A path from one capture edge to the
+/// next has the quarters of a clock between them, so its delay (clock to
+/// output, routing, setup; both clocks on global networks) × 4 / quarters
+/// is a clock period it needs. `None` when the report has no such path.
+fn quadrature_fmax(report: &serde_json::Value) -> Option<(f64, String)> {
+    let paths = report["critical_paths"].as_array()?;
+    paths
+        .iter()
+        .filter_map(|p| {
+            let (from, to) = (p["from"].as_str()?, p["to"].as_str()?);
+            let (a, b) = (capture_edge(from)?, capture_edge(to)?);
+            if a % 2 == 0 && b % 2 == 0 {
+                return None; // clk to clk: in nextpnr's Fmax
+            }
+            let quarters = match (b + 4 - a) % 4 {
+                0 => 4,
+                q => q,
+            };
+            let ns: f64 = p["path"]
+                .as_array()?
+                .iter()
+                .filter_map(|s| s["delay"].as_f64())
+                .sum();
+            let mhz = 1000.0 * f64::from(quarters) / (4.0 * ns);
+            let what = format!(
+                "{} → {}: {ns:.2} ns in {quarters}/4 of a clock",
+                from.split('$').next().unwrap_or(from),
+                to.split('$').next().unwrap_or(to)
+            );
+            Some((mhz, what))
+        })
+        .min_by(|x, y| x.0.total_cmp(&y.0))
+}
+
 /// Runs a tool in `dir` (YoWASP tools see only that folder), its output in
 /// `log`; (exit success, output).
 pub fn run_tool_status(
@@ -749,7 +804,7 @@ impl Job<'_> {
             let report = format!("report-s{seed}.json");
             r.artifacts.extend([report.clone(), self.placed_file(seed)]);
             let rep = read_json(dir, &report)?;
-            read_timing(&rep, r.seeds.len(), r)?;
+            read_timing(&rep, seed, r.seeds.len(), r)?;
             read_utilisation(&rep, f.family, r);
             let fmax = r.fmax_mhz.unwrap_or(0.0);
             if best.map_or(true, |(_, b)| fmax > b) {
@@ -887,9 +942,16 @@ fn median(v: &[f64]) -> Option<f64> {
     }
 }
 
-/// Every clock's Fmax from one seed's report (seed index `i`); the core
-/// clock's goes to `r.fmax_mhz` for this seed.
-fn read_timing(rep: &serde_json::Value, i: usize, r: &mut NodeResult) -> Result<(), String> {
+/// Every clock's Fmax from the report of `seed` (index `i` in
+/// `r.seeds`); the core clock's, bounded by the quadrature capture's
+/// transfers ([`quadrature_fmax`], with a note when they set it), goes to
+/// `r.fmax_mhz` for this seed.
+fn read_timing(
+    rep: &serde_json::Value,
+    seed: u64,
+    i: usize,
+    r: &mut NodeResult,
+) -> Result<(), String> {
     let clocks = rep["fmax"]
         .as_object()
         .ok_or("error: nextpnr report without fmax")?;
@@ -908,9 +970,22 @@ fn read_timing(rep: &serde_json::Value, i: usize, r: &mut NodeResult) -> Result<
             }
         };
         c.fmax_mhz.resize(i, f64::NAN);
-        c.fmax_mhz.push(achieved);
         if is_core_clock(name) {
-            r.fmax_mhz = Some(achieved);
+            // The capture's transfers between clk and clk90 bound it too.
+            let core = match quadrature_fmax(rep) {
+                Some((q, what)) if q < achieved => {
+                    r.notes.push(format!(
+                        "seed {seed}: the quadrature capture's {what} allows {q:.2} MHz \
+                         (nextpnr's Fmax of the core clock alone: {achieved:.2} MHz)"
+                    ));
+                    q
+                }
+                _ => achieved,
+            };
+            c.fmax_mhz.push(core);
+            r.fmax_mhz = Some(core);
+        } else {
+            c.fmax_mhz.push(achieved);
         }
     }
     Ok(())
@@ -953,5 +1028,49 @@ mod tests {
         .unwrap();
         assert_eq!(r, Some((false, "placed\n".to_string())));
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// A report shaped like nextpnr-ice40's (names as it writes them): the
+    /// core clock's own path is left to its Fmax; of the capture's
+    /// transfers, 1.6 ns in a quarter clock (156.25 MHz) binds before
+    /// 1.5 ns in three quarters (500 MHz); `<async>` and other clocks are
+    /// not capture edges.
+    #[test]
+    fn quadrature_transfers_bound_the_core_clock() {
+        let path = |from: &str, to: &str, steps: &[f64]| {
+            let steps: Vec<_> = steps
+                .iter()
+                .map(|d| serde_json::json!({"delay": d, "type": "routing"}))
+                .collect();
+            serde_json::json!({"from": from, "to": to, "path": steps})
+        };
+        let (clk, clk90) = ("clk$SB_IO_IN_$glb_clk", "clk90$SB_IO_IN_$glb_clk");
+        let rep = serde_json::json!({"critical_paths": [
+            path(&format!("posedge {clk}"), &format!("posedge {clk}"), &[5.0, 4.0]),
+            path(&format!("posedge {clk90}"), &format!("posedge {clk}"), &[0.5, 1.0]),
+            path(&format!("negedge {clk90}"), &format!("posedge {clk}"), &[0.54, 0.59, 0.47]),
+            path("<async>", &format!("negedge {clk90}"), &[9.0]),
+            path("posedge other", &format!("posedge {clk}"), &[9.0]),
+        ]});
+        let (mhz, what) = quadrature_fmax(&rep).unwrap();
+        assert!((mhz - 156.25).abs() < 1e-9, "{mhz}");
+        assert_eq!(what, "negedge clk90 → posedge clk: 1.60 ns in 1/4 of a clock");
+        // It bounds the seed's Fmax of the core clock, with a note.
+        let mut r = NodeResult::default();
+        let mut rep = rep;
+        rep["fmax"] = serde_json::json!({clk: {"achieved": 170.0, "constraint": 100.0}});
+        read_timing(&rep, 7, 0, &mut r).unwrap();
+        assert!((r.fmax_mhz.unwrap() - 156.25).abs() < 1e-9);
+        assert!(r.notes[0].starts_with("seed 7: the quadrature capture's negedge clk90"));
+        assert!((r.clocks[0].fmax_mhz[0] - 156.25).abs() < 1e-9);
+        // Without transfers, nextpnr's Fmax stands.
+        let rep = serde_json::json!({"fmax": {clk: {"achieved": 120.0, "constraint": 100.0}}});
+        let mut r = NodeResult::default();
+        read_timing(&rep, 1, 0, &mut r).unwrap();
+        assert_eq!(r.fmax_mhz, Some(120.0));
+        assert!(r.notes.is_empty());
+        assert_eq!(capture_edge("posedge $glbnet$node.cap_pi.clk90"), Some(1));
+        assert_eq!(capture_edge("negedge $glbnet$clk$TRELLIS_IO_IN"), Some(2));
+        assert_eq!(capture_edge("<async>"), None);
     }
 }

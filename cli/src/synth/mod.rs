@@ -29,6 +29,7 @@ use std::process::Command;
 
 mod fpga;
 mod xc2_blocks;
+mod xc2_timing;
 pub use fpga::Flow;
 
 /// Synthesis targets besides the CoolRunner-IIs ([`CPLDS`]).
@@ -401,7 +402,8 @@ fn write(dir: &Path, name: &str, text: &str) -> Result<(), String> {
 /// Yosys 0.23 on the nodes (`dict::at()` out of range); the T flip-flops of
 /// counters are still found by the `map_tff` step. Before it,
 /// [`XC2_SAT_PASSES`] rounds of `opt_dff -sat` remove the flip-flops that
-/// can never leave their initial value.
+/// can never leave their initial value. Its `map_cells` step is
+/// [`XC2_MAP_CELLS`], which puts the clocks on global clock buffers.
 fn xc2_script() -> String {
     format!(
         "read_verilog top.v; hierarchy -top merkur_top; proc; flatten; memory; opt; \
@@ -409,11 +411,32 @@ fn xc2_script() -> String {
          techmap -map +/coolrunner2/cells_counter_map.v; clean; opt -fast -full; \
          techmap -map +/techmap.v -map +/coolrunner2/cells_latch.v; opt -fast; \
          dfflibmap -prepare -liberty +/coolrunner2/xc2_dff.lib; \
-         synth_coolrunner2 -top merkur_top -run map_tff:; write_edif top.edif; \
+         synth_coolrunner2 -top merkur_top -run map_tff:map_cells; {XC2_MAP_CELLS} \
+         synth_coolrunner2 -top merkur_top -run check:; write_edif top.edif; \
          write_json top.json; tee -q -o stat.json stat -json",
         "opt_dff -sat; opt_clean; ".repeat(XC2_SAT_PASSES)
     )
 }
+
+/// `synth_coolrunner2`'s `map_cells` step (Yosys 0.23) with `clkbufmap`
+/// before the pads: every flip-flop's clock (`clk`, `clk90`) comes from a
+/// `BUFG`, the global clock network (FCLK) of a GCK pin. Without it,
+/// `coolrunner2_fixup` gives each flip-flop a clock of its own through a
+/// product term (one `ANDTERM` per flip-flop: 569 on ring8's sensor), as
+/// it must for a clock that no `BUFG` drives. The flip-flop cells are
+/// marked as clock sinks (`clkbuf_sink`), which Yosys 0.23's CoolRunner-II
+/// library does not do (docs/synthesis.md).
+const XC2_MAP_CELLS: &str = "dfflibmap -liberty +/coolrunner2/xc2_dff.lib; \
+     dffinit -ff FDCP Q INIT; dffinit -ff FDCP_N Q INIT; dffinit -ff FTCP Q INIT; \
+     dffinit -ff FTCP_N Q INIT; dffinit -ff LDCP Q INIT; dffinit -ff LDCP_N Q INIT; \
+     coolrunner2_sop; clean; read_verilog -lib +/coolrunner2/cells_sim.v; \
+     setattr -set clkbuf_sink 1 =FDCP/w:C =FDCP_N/w:C =FTCP/w:C =FTCP_N/w:C; \
+     clkbufmap -buf BUFG O:I; \
+     iopadmap -bits -inpad IBUF O:I -outpad IOBUFE I:IO -inoutpad IOBUFE O:IO \
+     -toutpad IOBUFE E:I:IO -tinoutpad IOBUFE E:O:I:IO; \
+     attrmvcp -attr src -attr LOC t:IOBUFE n:*; \
+     attrmvcp -attr src -attr LOC -driven t:IBUF n:*; \
+     coolrunner2_fixup; splitnets; clean;";
 
 /// Rounds of `opt_dff -sat` in [`xc2_script`]. A counter that counts down
 /// from a static value (the switch controller's grace counter: half the
@@ -427,8 +450,17 @@ const XC2_SAT_PASSES: usize = 20;
 
 /// Maps a slave to a CoolRunner-II; status `does not fit` (which [`run`]
 /// turns into a refusal) when it cannot fit the device, naming what it
-/// needs and what the device has.
-fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(), String> {
+/// needs and what the device has, where its product terms go and how fast
+/// it would run; `timing failed` when it fits but Xilinx's delay model
+/// gives the fastest speed grade less than the design clock (`clock`,
+/// MHz).
+fn xc2c(
+    dir: &Path,
+    st: &NodeStatic,
+    c: &Cpld,
+    clock: f64,
+    r: &mut NodeResult,
+) -> Result<(), String> {
     if !matches!(st.kind, Kind::Sensor | Kind::Actuator) {
         r.status = "not attempted".into();
         r.reason = "a master's memories (≥ 64 kbit) cannot map to a CPLD without block RAM".into();
@@ -450,7 +482,10 @@ fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(),
     r.ios = Some(io);
     r.artifacts
         .extend(["top.v", "top.edif", "top.json", "stat.json", "yosys.log"].map(String::from));
-    let costs = xc2_blocks::block_costs(&read_json(dir, "top.json")?);
+    let netlist = read_json(dir, "top.json")?;
+    let costs = xc2_blocks::block_costs(&netlist);
+    let paths = xc2_timing::paths(&netlist);
+    let timing = xc2_timing::summary(c.device, c.name, &paths);
     let over = mc > c.macrocells || pt > c.pterms() || io > c.io;
     if over {
         r.status = "does not fit".into();
@@ -466,6 +501,9 @@ fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(),
         if !costs.is_empty() {
             r.reason += &format!(". Most product terms: {}", xc2_blocks::summary(&costs, 4));
         }
+        if let Some(t) = &timing {
+            r.reason += &format!(". If it fit: {t}");
+        }
         return Ok(());
     }
     if !costs.is_empty() {
@@ -478,6 +516,20 @@ fn xc2c(dir: &Path, st: &NodeStatic, c: &Cpld, r: &mut NodeResult) -> Result<(),
     r.reason = "within the device's macrocells, product terms and I/O (no open fitter places \
                 this device: routing not checked, docs/synthesis.md)"
         .into();
+    let fastest = xc2_timing::speeds(c.name).first();
+    if let (Some(t), Some((mhz, _))) = (timing, fastest.and_then(|s| xc2_timing::fmax(&paths, s)))
+    {
+        r.fmax_mhz = Some(mhz);
+        r.max_line_rate_mbps = Some(mhz / 2.0);
+        r.notes.push(t);
+        if mhz < clock {
+            r.status = "timing failed".into();
+            r.reason = format!(
+                "{mhz:.1} MHz by Xilinx's delay model at the fastest speed grade < {clock} MHz \
+                 design clock (estimated from the mapping, docs/synthesis.md)"
+            );
+        }
+    }
     Ok(())
 }
 
@@ -908,7 +960,7 @@ impl NodeJob<'_> {
             }
             t if cpld(t).is_some() => {
                 let c = cpld(t).expect("matched");
-                xc2c(&tmp, st, &c, &mut r)
+                xc2c(&tmp, st, &c, self.clock, &mut r)
             }
             "xc6s" => xc6s(&tmp, st, &mut r),
             _ => xem(&tmp, st, &mut r),

@@ -28,62 +28,138 @@ pub struct BlockCost {
     pub pterms: u64,
 }
 
-/// The blocks of `merkur_top` in a Yosys JSON netlist, most product terms
-/// first; an empty list when the netlist has no such module.
-pub fn block_costs(netlist: &Value) -> Vec<BlockCost> {
-    let Some(top) = super::fpga::yosys_top(netlist) else {
-        return Vec::new();
-    };
-    let empty = serde_json::Map::new();
-    let cells = top["cells"].as_object().unwrap_or(&empty);
-    let names = bit_names(top["netnames"].as_object().unwrap_or(&empty));
-    let mut driver: HashMap<u64, &str> = HashMap::new();
-    let mut readers: HashMap<u64, Vec<(&str, &str)>> = HashMap::new();
-    for (cn, c) in cells {
-        let dirs = c["port_directions"].as_object().unwrap_or(&empty);
-        for (port, dir) in dirs {
-            for bit in bits(&c["connections"][port]) {
-                if dir == "output" {
-                    driver.insert(bit, cn);
-                } else {
-                    readers.entry(bit).or_default().push((cn, port));
+/// A `merkur_top` netlist from Yosys' JSON with each net bit's driver
+/// and readers: what [`block_costs`] and the timing estimate
+/// (`super::xc2_timing`) walk.
+pub struct Graph<'a> {
+    /// The cells by name.
+    pub cells: &'a serde_json::Map<String, Value>,
+    /// The cell that drives each net bit.
+    pub driver: HashMap<u64, &'a str>,
+    /// The cells and input ports that read each net bit.
+    pub readers: HashMap<u64, Vec<(&'a str, &'a str)>>,
+    /// Every name Yosys kept for each net bit (`$`-names left out).
+    pub names: HashMap<u64, Vec<String>>,
+}
+
+impl<'a> Graph<'a> {
+    /// The graph of `merkur_top`; `None` when the netlist has no such
+    /// module, or it has no cells or net names.
+    pub fn new(netlist: &'a Value) -> Option<Self> {
+        let top = super::fpga::yosys_top(netlist)?;
+        let cells = top["cells"].as_object()?;
+        let names = bit_names(top["netnames"].as_object()?);
+        let mut driver = HashMap::new();
+        let mut readers: HashMap<u64, Vec<(&str, &str)>> = HashMap::new();
+        for (cn, c) in cells {
+            let Some(dirs) = c["port_directions"].as_object() else {
+                continue;
+            };
+            for (port, dir) in dirs {
+                for bit in bits(&c["connections"][port]) {
+                    if dir == "output" {
+                        driver.insert(bit, cn.as_str());
+                    } else {
+                        readers.entry(bit).or_default().push((cn.as_str(), port.as_str()));
+                    }
                 }
             }
         }
+        Some(Self {
+            cells,
+            driver,
+            readers,
+            names,
+        })
     }
-    let kind = |cn: &str| cells[cn]["type"].as_str().unwrap_or("");
-    let mut sums: HashMap<String, (u64, u64)> = HashMap::new();
-    for (cn, c) in cells {
-        if kind(cn) != "MACROCELL_XOR" {
-            continue;
+
+    /// A cell's type (`""` for a name that is not a cell).
+    pub fn kind(&self, cell: &str) -> &'a str {
+        self.cells
+            .get(cell)
+            .and_then(|c| c["type"].as_str())
+            .unwrap_or("")
+    }
+
+    /// The net bits on one port of a cell.
+    pub fn port(&self, cell: &str, port: &str) -> Vec<u64> {
+        self.cells
+            .get(cell)
+            .map(|c| bits(&c["connections"][port]).collect())
+            .unwrap_or_default()
+    }
+
+    /// The cell driving a net bit, if it is of type `kind`.
+    fn driven_by(&self, bit: u64, kind: &str) -> Option<&'a str> {
+        self.driver.get(&bit).copied().filter(|d| self.kind(d) == kind)
+    }
+
+    /// The product terms (`ANDTERM`s) of a macrocell: its OR term's and
+    /// its PTC input's.
+    pub fn terms(&self, macrocell: &str) -> HashSet<&'a str> {
+        let mut terms = HashSet::new();
+        for bit in self.port(macrocell, "IN_PTC") {
+            terms.extend(self.driven_by(bit, "ANDTERM"));
         }
-        let out = bits(&c["connections"]["OUT"]).next();
-        let reg = out.and_then(|o| {
-            readers.get(&o)?.iter().find_map(|(r, port)| {
-                let is_ff = kind(r).starts_with("FD") || kind(r).starts_with("FT");
-                (is_ff && matches!(*port, "D" | "T")).then_some(*r)
-            })
-        });
-        let block = reg
-            .and_then(|r| bits(&cells[r]["connections"]["Q"]).next())
-            .and_then(|q| names.get(&q))
-            .map(|aliases| block_of(aliases))
-            .unwrap_or_else(|| "shared logic".to_string());
-        let mut terms: HashSet<&str> = HashSet::new();
-        for bit in bits(&c["connections"]["IN_PTC"]) {
-            terms.extend(driver.get(&bit).filter(|d| kind(d) == "ANDTERM"));
-        }
-        for bit in bits(&c["connections"]["IN_ORTERM"]) {
-            let Some(or) = driver.get(&bit).filter(|d| kind(d) == "ORTERM") else {
+        for bit in self.port(macrocell, "IN_ORTERM") {
+            let Some(or) = self.driven_by(bit, "ORTERM") else {
                 continue;
             };
-            for and in bits(&cells[*or]["connections"]["IN"]) {
-                terms.extend(driver.get(&and).filter(|d| kind(d) == "ANDTERM"));
+            for and in self.port(or, "IN") {
+                terms.extend(self.driven_by(and, "ANDTERM"));
             }
         }
+        terms
+    }
+
+    /// A register's name for a reader: from the names of its output
+    /// ([`register_name`]); its cell name when its output has none.
+    pub fn register_label(&self, reg: &str) -> String {
+        self.port(reg, "Q")
+            .first()
+            .and_then(|q| self.names.get(q))
+            .map(|aliases| register_name(aliases))
+            .filter(|n| !n.is_empty())
+            .unwrap_or_else(|| reg.to_string())
+    }
+
+    /// The register (flip-flop or latch) whose data input (`D`, `T`) a
+    /// net bit feeds, if any.
+    pub fn register_fed_by(&self, bit: u64) -> Option<&'a str> {
+        self.readers.get(&bit)?.iter().find_map(|(r, port)| {
+            (is_register(self.kind(r)) && matches!(*port, "D" | "T")).then_some(*r)
+        })
+    }
+}
+
+/// A CoolRunner-II register cell (`FDCP`, `FTCP_N`, `LDCP`, …).
+pub fn is_register(kind: &str) -> bool {
+    kind.starts_with("FD") || kind.starts_with("FT") || kind.starts_with("LD")
+}
+
+/// The blocks of `merkur_top` in a Yosys JSON netlist, most product terms
+/// first; an empty list when the netlist has no such module.
+pub fn block_costs(netlist: &Value) -> Vec<BlockCost> {
+    let Some(g) = Graph::new(netlist) else {
+        return Vec::new();
+    };
+    let mut sums: HashMap<String, (u64, u64)> = HashMap::new();
+    for cn in g.cells.keys() {
+        if g.kind(cn) != "MACROCELL_XOR" {
+            continue;
+        }
+        let reg = g
+            .port(cn, "OUT")
+            .first()
+            .and_then(|&o| g.register_fed_by(o));
+        let block = reg
+            .and_then(|r| g.port(r, "Q").first().copied())
+            .and_then(|q| g.names.get(&q))
+            .map(|aliases| block_of(aliases))
+            .unwrap_or_else(|| "shared logic".to_string());
         let e = sums.entry(block).or_default();
         e.0 += 1;
-        e.1 += terms.len() as u64;
+        e.1 += g.terms(cn).len() as u64;
     }
     let mut out: Vec<BlockCost> = sums
         .into_iter()
@@ -134,12 +210,25 @@ fn bit_names(netnames: &serde_json::Map<String, Value>) -> HashMap<u64, Vec<Stri
     m
 }
 
-/// The block of a register, from the names of its output: the name of the
-/// register itself (rust-hdl calls a flip-flop's output `<name>_q`) if
-/// there is one; else the longest instance path that is not an input port
-/// (`i_*`) of a block that reads it, such as the top's capture register
-/// `cap_pi.q` feeding `node.sbox.i_pi`; cut to two levels below the top.
+/// The block of a register, from the names of its output
+/// ([`register_name`]), cut to two levels below the top.
 fn block_of(aliases: &[String]) -> String {
+    let reg = register_name(aliases);
+    let path: Vec<&str> = reg.split('.').collect();
+    let inst = &path[..path.len().saturating_sub(1)];
+    if inst.is_empty() {
+        "top".to_string()
+    } else {
+        inst[..inst.len().min(2)].join(".")
+    }
+}
+
+/// The name of a register among the names of its output: its own name
+/// (rust-hdl calls a flip-flop's output `<name>_q`) if there is one; else
+/// the longest instance path that is not an input port (`i_*`) of a block
+/// that reads it, such as the top's capture register `cap_pi.q` feeding
+/// `node.sbox.i_pi`.
+fn register_name(aliases: &[String]) -> String {
     let base: Vec<String> = aliases
         .iter()
         .map(|a| a.split('[').next().unwrap_or(a).to_string())
@@ -150,17 +239,10 @@ fn block_of(aliases: &[String]) -> String {
             .cloned()
     };
     let is_input = |a: &String| a.rsplit('.').next().is_some_and(|l| l.starts_with("i_"));
-    let reg = deepest(&mut base.iter().filter(|a| a.ends_with("_q")))
+    deepest(&mut base.iter().filter(|a| a.ends_with("_q")))
         .or_else(|| deepest(&mut base.iter().filter(|a| !is_input(a))))
         .or_else(|| deepest(&mut base.iter()))
-        .unwrap_or_default();
-    let path: Vec<&str> = reg.split('.').collect();
-    let inst = &path[..path.len().saturating_sub(1)];
-    if inst.is_empty() {
-        "top".to_string()
-    } else {
-        inst[..inst.len().min(2)].join(".")
-    }
+        .unwrap_or_default()
 }
 
 #[cfg(test)]
