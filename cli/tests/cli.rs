@@ -635,6 +635,30 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
             blocks.contains("node.fwd ") && blocks.contains("node.rx_in "),
             "{err}"
         );
+        // How fast it would run: both speed grades, the faster one
+        // faster, and the path that sets it (docs/synthesis.md, "Line rate
+        // on the CoolRunner-II").
+        let fit = err.split(". If it fit: ").nth(1).unwrap_or("");
+        let rate = |grade: &str| {
+            let after = fit.split(&format!("{device}{grade} ")).nth(1)?;
+            after
+                .split(" MHz, ")
+                .nth(1)?
+                .split(' ')
+                .next()?
+                .parse::<f64>()
+                .ok()
+        };
+        let (fast, slow) = (rate("-7"), rate("-10"));
+        assert!(
+            matches!((fast, slow), (Some(f), Some(s)) if f > s && s > 1.0),
+            "{err}"
+        );
+        assert!(
+            fit.contains("; set by ") && fit.contains(" of a clock)"),
+            "{err}"
+        );
+        assert!(number_after(fit, "deepest logic ") >= 1, "{err}");
     }
     if target == "ice40-hx1k" {
         // Every strategy was tried, and each one's need is named: the

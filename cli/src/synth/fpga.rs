@@ -1054,7 +1054,10 @@ mod tests {
         ]});
         let (mhz, what) = quadrature_fmax(&rep).unwrap();
         assert!((mhz - 156.25).abs() < 1e-9, "{mhz}");
-        assert_eq!(what, "negedge clk90 → posedge clk: 1.60 ns in 1/4 of a clock");
+        assert_eq!(
+            what,
+            "negedge clk90 → posedge clk: 1.60 ns in 1/4 of a clock"
+        );
         // It bounds the seed's Fmax of the core clock, with a note.
         let mut r = NodeResult::default();
         let mut rep = rep;

@@ -517,8 +517,7 @@ fn xc2c(
                 this device: routing not checked, docs/synthesis.md)"
         .into();
     let fastest = xc2_timing::speeds(c.name).first();
-    if let (Some(t), Some((mhz, _))) = (timing, fastest.and_then(|s| xc2_timing::fmax(&paths, s)))
-    {
+    if let (Some(t), Some((mhz, _))) = (timing, fastest.and_then(|s| xc2_timing::fmax(&paths, s))) {
         r.fmax_mhz = Some(mhz);
         r.max_line_rate_mbps = Some(mhz / 2.0);
         r.notes.push(t);

@@ -60,7 +60,10 @@ impl<'a> Graph<'a> {
                     if dir == "output" {
                         driver.insert(bit, cn.as_str());
                     } else {
-                        readers.entry(bit).or_default().push((cn.as_str(), port.as_str()));
+                        readers
+                            .entry(bit)
+                            .or_default()
+                            .push((cn.as_str(), port.as_str()));
                     }
                 }
             }
@@ -91,7 +94,10 @@ impl<'a> Graph<'a> {
 
     /// The cell driving a net bit, if it is of type `kind`.
     fn driven_by(&self, bit: u64, kind: &str) -> Option<&'a str> {
-        self.driver.get(&bit).copied().filter(|d| self.kind(d) == kind)
+        self.driver
+            .get(&bit)
+            .copied()
+            .filter(|d| self.kind(d) == kind)
     }
 
     /// The product terms (`ANDTERM`s) of a macrocell: its OR term's and

@@ -200,7 +200,7 @@ pub fn paths(netlist: &Value) -> Vec<Path> {
         };
         let data = g.port(reg, "D").into_iter().chain(g.port(reg, "T"));
         for bit in data {
-            for (from, d) in depth.into_bit(bit) {
+            for (from, d) in depth.feeding(bit) {
                 let p = worst.entry((from, to)).or_insert_with(|| Path {
                     from,
                     to,
@@ -311,7 +311,7 @@ impl Depths<'_, '_> {
     /// The deepest paths into a register's data input bit: through a
     /// macrocell, or straight from a register (which the fitter routes
     /// through one macrocell). Pins count for nothing.
-    fn into_bit(&mut self, bit: u64) -> HashMap<Edge, u32> {
+    fn feeding(&mut self, bit: u64) -> HashMap<Edge, u32> {
         let Some(&d) = self.g.driver.get(&bit) else {
             return HashMap::new();
         };
@@ -358,9 +358,7 @@ mod tests {
     /// (`clk90` ↓) feeds `q` (`clk` ↑) through one macrocell; `q` feeds
     /// `r` (`clk` ↑) through two macrocells in a row.
     fn netlist() -> Value {
-        let cell = |t: &str, dirs: Value, conns: Value| {
-            serde_json::json!({"type": t, "port_directions": dirs, "connections": conns})
-        };
+        let cell = |t: &str, dirs: Value, conns: Value| serde_json::json!({"type": t, "port_directions": dirs, "connections": conns});
         let buf = serde_json::json!({"I": "input", "O": "output"});
         let ff = serde_json::json!({"C": "input", "D": "input", "Q": "output"});
         let and = serde_json::json!({"IN": "input", "IN_B": "input", "OUT": "output"});
