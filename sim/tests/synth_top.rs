@@ -8,7 +8,7 @@ use merkur_model::scenario::Kind;
 use merkur_rtl::emit::verilog::WAIVERS;
 use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::top::synth_top::{node_top, NodeStatic, DDR_IO};
-use merkur_rtl::top::ulx3s::{ulx3s_verilog, PLL_BLACKBOX};
+use merkur_rtl::top::ulx3s::{ulx3s_verilog, ECP5_BLACKBOXES, PLL_BLACKBOX};
 use merkur_rtl::top::xem6010::{
     xem6010_core_verilog, xem6010_verilog, OK_BLACKBOXES, XILINX_BLACKBOXES,
 };
@@ -316,7 +316,11 @@ fn every_synthesis_top_is_lint_clean() {
         lint(
             &format!("ulx3s-{}", kind.name()),
             "merkur_ulx3s",
-            &[("top.v", &v), ("pll.v", PLL_BLACKBOX)],
+            &[
+                ("top.v", &v),
+                ("pll.v", PLL_BLACKBOX),
+                ("ecp5.v", ECP5_BLACKBOXES),
+            ],
         );
     }
     for kind in [Kind::Master, Kind::SpecialMaster] {

@@ -31,6 +31,13 @@
 //! from the PLL's output whether or not it is locked yet (`led[3]` shows
 //! the lock). Holding the node until lock would need a reset or clock
 //! enable the node does not have; not done here, not tested on hardware.
+//!
+//! Both PLL outputs go through a `DCCA` onto a global clock network, so
+//! the capture's four sample edges keep the PLL's quarter-clock spacing:
+//! nextpnr-ecp5 promotes only a clock with five or more clock loads, and
+//! `clk90` has four (the capture's), so without the `DCCA` it ran on
+//! general routing with a delay of its own ([`ECP5_BLACKBOXES`] declares
+//! the primitive for lint).
 
 use crate::top::synth_top::{node_top, NodeStatic};
 use merkur_model::scenario::Kind;
@@ -52,6 +59,22 @@ endmodule
 /* verilator lint_on UNDRIVEN */
 "#;
 
+/// The ECP5 primitive the top instantiates (`DCCA`, a global clock
+/// buffer), ports only, for Verilator (Yosys knows it from its ECP5 cell
+/// library).
+pub const ECP5_BLACKBOXES: &str = r#"// ECP5 primitives, port declarations for lint only.
+// A port declaration without a body: its output undriven, inputs unused.
+/* verilator lint_off UNDRIVEN */
+/* verilator lint_off UNUSEDSIGNAL */
+module DCCA(CLKI, CE, CLKO);
+    input wire CLKI;
+    input wire CE;
+    output wire CLKO;
+endmodule
+/* verilator lint_on UNUSEDSIGNAL */
+/* verilator lint_on UNDRIVEN */
+"#;
+
 const TOP: &str = r#"
 // merkur_ulx3s: a slave on the Radiona ULX3S (rtl/src/top/ulx3s.rs).
 module merkur_ulx3s(clk_25mhz, pi, si, po, so, btn, sw, led, sensor, diag);
@@ -65,10 +88,17 @@ module merkur_ulx3s(clk_25mhz, pi, si, po, so, btn, sw, led, sensor, diag);
     output wire [3:0] led;
     input wire [15:0] sensor;
     output wire [15:0] diag;
+    wire clk_pll;
+    wire clk90_pll;
     wire clk;
     wire clk90;
     wire locked;
-    merkur_pll pll(.clk_25mhz(clk_25mhz), .clk(clk), .clk90(clk90), .locked(locked));
+    merkur_pll pll(.clk_25mhz(clk_25mhz), .clk(clk_pll), .clk90(clk90_pll), .locked(locked));
+    // Both clocks on global networks, so the capture's four sample edges
+    // keep the PLL's quarter-clock spacing: nextpnr-ecp5 promotes only a
+    // clock with 5 or more clock loads, and clk90 has 4.
+    DCCA gclk(.CLKI(clk_pll), .CE(1'b1), .CLKO(clk));
+    DCCA gclk90(.CLKI(clk90_pll), .CE(1'b1), .CLKO(clk90));
     assign led[3] = locked;
     merkur_top node(.clk(clk), .clk90(clk90), .pi(pi), .si(si), .po(po), .so(so),
         .i_irq1(btn[1]), .i_irq2(btn[2]), .i_fs_req(btn[3]),
