@@ -215,10 +215,7 @@ fn quadrature_fmax(report: &serde_json::Value) -> Option<(f64, String)> {
             if a % 2 == 0 && b % 2 == 0 {
                 return None; // clk to clk: in nextpnr's Fmax
             }
-            let quarters = match (b + 4 - a) % 4 {
-                0 => 4,
-                q => q,
-            };
+            let quarters = super::capture_quarters(a, b);
             let ns: f64 = p["path"]
                 .as_array()?
                 .iter()

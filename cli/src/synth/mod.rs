@@ -75,6 +75,19 @@ impl Cpld {
     }
 }
 
+/// The quarters of a core clock from a launching capture edge to the
+/// capturing one, each given in quarters after `clk` rises (`clk` ↑ 0,
+/// `clk90` ↑ 1, `clk` ↓ 2, `clk90` ↓ 3): the next edge of its kind, a
+/// whole clock from an edge to itself. The quadrature capture's transfers
+/// between `clk` and `clk90` have that fraction of a clock (the FPGAs'
+/// [`fpga`] report and the CoolRunner-II estimate, `xc2_timing`).
+pub fn capture_quarters(from: u32, to: u32) -> u32 {
+    match (to % 4 + 4 - from % 4) % 4 {
+        0 => 4,
+        q => q,
+    }
+}
+
 /// The CoolRunner-II family.
 pub const CPLDS: [Cpld; 6] = [
     Cpld {

@@ -151,12 +151,9 @@ impl Edge {
 }
 
 /// The quarters of a clock from a launching edge to the capturing edge
-/// (the next one of its kind: a whole clock from an edge to itself).
+/// ([`super::capture_quarters`]).
 fn quarters(from: Edge, to: Edge) -> u32 {
-    match (to as u32 + 4 - from as u32) % 4 {
-        0 => 4,
-        q => q,
-    }
+    super::capture_quarters(from as u32, to as u32)
 }
 
 /// The deepest path between two clock edges.
