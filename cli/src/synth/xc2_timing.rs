@@ -245,11 +245,11 @@ pub fn summary(device: &str, target: &str, paths: &[Path]) -> Option<String> {
     let (_, p) = fmax(paths, fastest)?;
     let deepest = paths.iter().max_by_key(|p| p.macrocells)?;
     Some(format!(
-        "core clock and line rate by Xilinx's delay model: {}; set by {} ({} macrocell(s) \
-         from {} to {}, {} of a clock); deepest logic {} macrocells, into {}",
+        "core clock and line rate by Xilinx's delay model: {}; set by {} ({} from {} to {}, \
+         {} of a clock); deepest logic {}, into {}",
         grades.join("; "),
         p.register,
-        p.macrocells,
+        macrocells(p.macrocells),
         p.from.name(),
         p.to.name(),
         match quarters(p.from, p.to) {
@@ -258,9 +258,14 @@ pub fn summary(device: &str, target: &str, paths: &[Path]) -> Option<String> {
             2 => "half",
             _ => "a quarter",
         },
-        deepest.macrocells,
+        macrocells(deepest.macrocells),
         deepest.register,
     ))
+}
+
+/// `1 macrocell`, `3 macrocells`.
+fn macrocells(n: u32) -> String {
+    format!("{n} macrocell{}", if n == 1 { "" } else { "s" })
 }
 
 /// A register's clock edge: its clock traced back through `BUFG` and
@@ -421,7 +426,7 @@ mod tests {
         let line = summary("XC2C512", "xc2c512", &p).unwrap();
         assert!(
             line.contains("XC2C512-7 41.7 MHz, 20.8 Mbit/s")
-                && line.contains("set by q (1 macrocell(s) from clk90 ↓ to clk ↑, a quarter")
+                && line.contains("set by q (1 macrocell from clk90 ↓ to clk ↑, a quarter")
                 && line.ends_with("deepest logic 2 macrocells, into r"),
             "{line}"
         );
