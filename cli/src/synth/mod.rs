@@ -66,6 +66,9 @@ pub struct Cpld {
     pub blocks: u64,
     /// User I/O, largest package.
     pub io: u64,
+    /// Speed grades, fastest first: the delays of [`xc2_timing`]'s line
+    /// rate estimate.
+    pub speeds: [xc2_timing::Speed; 2],
 }
 
 impl Cpld {
@@ -88,7 +91,8 @@ pub fn capture_quarters(from: u32, to: u32) -> u32 {
     }
 }
 
-/// The CoolRunner-II family.
+/// The CoolRunner-II family: sizes from Xilinx DS090's family table,
+/// speed grades from Project Combine's database ([`xc2_timing`]).
 pub const CPLDS: [Cpld; 6] = [
     Cpld {
         name: "xc2c32a",
@@ -96,6 +100,10 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 32,
         blocks: 2,
         io: 33,
+        speeds: [
+            xc2_timing::sp("-4", [600, 600, 600, 300, 1500]),
+            xc2_timing::sp("-6", [700, 1400, 1600, 700, 1800]),
+        ],
     },
     Cpld {
         name: "xc2c64a",
@@ -103,6 +111,10 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 64,
         blocks: 4,
         io: 64,
+        speeds: [
+            xc2_timing::sp("-5", [400, 1500, 900, 500, 1400]),
+            xc2_timing::sp("-7", [700, 3000, 1600, 700, 1800]),
+        ],
     },
     Cpld {
         name: "xc2c128",
@@ -110,6 +122,10 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 128,
         blocks: 8,
         io: 100,
+        speeds: [
+            xc2_timing::sp("-6", [400, 1800, 800, 900, 1400]),
+            xc2_timing::sp("-7", [700, 3400, 1600, 700, 1400]),
+        ],
     },
     Cpld {
         name: "xc2c256",
@@ -117,6 +133,10 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 256,
         blocks: 16,
         io: 184,
+        speeds: [
+            xc2_timing::sp("-6", [400, 1700, 800, 500, 1300]),
+            xc2_timing::sp("-7", [700, 3000, 1600, 700, 1800]),
+        ],
     },
     Cpld {
         name: "xc2c384",
@@ -124,6 +144,10 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 384,
         blocks: 24,
         io: 240,
+        speeds: [
+            xc2_timing::sp("-7", [200, 2200, 900, 500, 1700]),
+            xc2_timing::sp("-10", [700, 4500, 1600, 700, 2000]),
+        ],
     },
     Cpld {
         name: "xc2c512",
@@ -131,6 +155,10 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 512,
         blocks: 32,
         io: 270,
+        speeds: [
+            xc2_timing::sp("-7", [400, 3300, 900, 500, 1400]),
+            xc2_timing::sp("-10", [700, 4500, 1600, 700, 1800]),
+        ],
     },
 ];
 
@@ -498,7 +526,7 @@ fn xc2c(
     let netlist = read_json(dir, "top.json")?;
     let costs = xc2_blocks::block_costs(&netlist);
     let paths = xc2_timing::paths(&netlist);
-    let timing = xc2_timing::summary(c.device, c.name, &paths);
+    let timing = xc2_timing::summary(c, &paths);
     let over = mc > c.macrocells || pt > c.pterms() || io > c.io;
     if over {
         r.status = "does not fit".into();
@@ -529,8 +557,7 @@ fn xc2c(
     r.reason = "within the device's macrocells, product terms and I/O (no open fitter places \
                 this device: routing not checked, docs/synthesis.md)"
         .into();
-    let fastest = xc2_timing::speeds(c.name).first();
-    if let (Some(t), Some((mhz, _))) = (timing, fastest.and_then(|s| xc2_timing::fmax(&paths, s))) {
+    if let (Some(t), Some((mhz, _))) = (timing, xc2_timing::fmax(&paths, &c.speeds[0])) {
         r.fmax_mhz = Some(mhz);
         r.max_line_rate_mbps = Some(mhz / 2.0);
         r.notes.push(t);

@@ -38,6 +38,7 @@ use std::collections::HashMap;
 use serde_json::Value;
 
 use super::xc2_blocks::{is_register, Graph};
+use super::Cpld;
 
 /// One speed grade's delays, picoseconds (see the module doc).
 #[derive(Debug, Clone, Copy)]
@@ -57,7 +58,11 @@ pub struct Speed {
     pub setup: u32,
 }
 
-const fn sp(grade: &'static str, v: [u32; 5]) -> Speed {
+/// One speed grade from its delays in the order of [`Speed`]'s fields
+/// (`DEL_CLK_Q`, `DEL_UIM_IMUX`, `DEL_IMUX_OR`, `DEL_D_Q_COMB`,
+/// `SETUPHOLD_D_CLK_PT_FCLK` setup; ps, from Project Combine's database,
+/// see the module doc), for [`super::CPLDS`].
+pub const fn sp(grade: &'static str, v: [u32; 5]) -> Speed {
     Speed {
         grade,
         clk_q: v[0],
@@ -66,63 +71,6 @@ const fn sp(grade: &'static str, v: [u32; 5]) -> Speed {
         d_q_comb: v[3],
         setup: v[4],
     }
-}
-
-/// Each device's speed grades, fastest first: `DEL_CLK_Q`, `DEL_UIM_IMUX`,
-/// `DEL_IMUX_OR`, `DEL_D_Q_COMB`, `SETUPHOLD_D_CLK_PT_FCLK` setup, in ps,
-/// from Project Combine's database (see the module doc).
-const SPEEDS: [(&str, [Speed; 2]); 6] = [
-    (
-        "xc2c32a",
-        [
-            sp("-4", [600, 600, 600, 300, 1500]),
-            sp("-6", [700, 1400, 1600, 700, 1800]),
-        ],
-    ),
-    (
-        "xc2c64a",
-        [
-            sp("-5", [400, 1500, 900, 500, 1400]),
-            sp("-7", [700, 3000, 1600, 700, 1800]),
-        ],
-    ),
-    (
-        "xc2c128",
-        [
-            sp("-6", [400, 1800, 800, 900, 1400]),
-            sp("-7", [700, 3400, 1600, 700, 1400]),
-        ],
-    ),
-    (
-        "xc2c256",
-        [
-            sp("-6", [400, 1700, 800, 500, 1300]),
-            sp("-7", [700, 3000, 1600, 700, 1800]),
-        ],
-    ),
-    (
-        "xc2c384",
-        [
-            sp("-7", [200, 2200, 900, 500, 1700]),
-            sp("-10", [700, 4500, 1600, 700, 2000]),
-        ],
-    ),
-    (
-        "xc2c512",
-        [
-            sp("-7", [400, 3300, 900, 500, 1400]),
-            sp("-10", [700, 4500, 1600, 700, 1800]),
-        ],
-    ),
-];
-
-/// The speed grades of a target (`xc2c512`), fastest first.
-pub fn speeds(target: &str) -> &'static [Speed] {
-    SPEEDS
-        .iter()
-        .find(|(t, _)| *t == target)
-        .map(|(_, s)| s.as_slice())
-        .unwrap_or(&[])
 }
 
 /// A clock edge of the quadrature capture, in quarters of the core clock
@@ -229,8 +177,10 @@ pub fn fmax<'p>(paths: &'p [Path], s: &Speed) -> Option<(f64, &'p Path)> {
 
 /// One line for the report: each speed grade's core clock and line rate
 /// (half the clock), the path that sets them, and the deepest logic.
-pub fn summary(device: &str, target: &str, paths: &[Path]) -> Option<String> {
-    let grades: Vec<String> = speeds(target)
+pub fn summary(c: &Cpld, paths: &[Path]) -> Option<String> {
+    let device = c.device;
+    let grades: Vec<String> = c
+        .speeds
         .iter()
         .filter_map(|s| {
             let (mhz, _) = fmax(paths, s)?;
@@ -241,8 +191,7 @@ pub fn summary(device: &str, target: &str, paths: &[Path]) -> Option<String> {
             ))
         })
         .collect();
-    let fastest = speeds(target).first()?;
-    let (_, p) = fmax(paths, fastest)?;
+    let (_, p) = fmax(paths, &c.speeds[0])?;
     let deepest = paths.iter().max_by_key(|p| p.macrocells)?;
     Some(format!(
         "core clock and line rate by Xilinx's delay model: {}; set by {} ({} from {} to {}, \
@@ -354,6 +303,7 @@ impl Depths<'_, '_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::{cpld, CPLDS};
     use super::*;
 
     /// A netlist with the clocks through `IBUF` and `BUFG`: register `a`
@@ -416,14 +366,15 @@ mod tests {
     #[test]
     fn quarter_clock_capture_sets_the_clock() {
         let p = paths(&netlist());
-        let s = speeds("xc2c512")[0];
+        let c = cpld("xc2c512").unwrap();
+        let s = c.speeds[0];
         assert_eq!(s.grade, "-7");
         assert!((p[0].period_ps(&s) - 10_700.0).abs() < 1e-6);
         assert!((p[1].period_ps(&s) - 24_000.0).abs() < 1e-6);
         let (mhz, by) = fmax(&p, &s).unwrap();
         assert!((mhz - 1e6 / 24_000.0).abs() < 1e-9);
         assert_eq!(by.register, "q");
-        let line = summary("XC2C512", "xc2c512", &p).unwrap();
+        let line = summary(&c, &p).unwrap();
         assert!(
             line.contains("XC2C512-7 41.7 MHz, 20.8 Mbit/s")
                 && line.contains("set by q (1 macrocell from clk90 ↓ to clk ↑, a quarter")
@@ -438,17 +389,17 @@ mod tests {
         assert_eq!(quarters(Edge::Clk90Fall, Edge::ClkRise), 1);
         assert_eq!(quarters(Edge::Clk90Rise, Edge::ClkRise), 3);
         assert_eq!(quarters(Edge::ClkRise, Edge::ClkFall), 2);
-        assert!(speeds("xc9572").is_empty());
         assert!(paths(&serde_json::json!({})).is_empty());
         // Every device of the family has its two grades, fastest first.
-        for (t, s) in SPEEDS {
+        for c in CPLDS {
+            let s = c.speeds;
             let one = Path {
                 from: Edge::ClkRise,
                 to: Edge::ClkRise,
                 macrocells: 1,
                 register: "x".into(),
             };
-            assert!(one.period_ps(&s[0]) < one.period_ps(&s[1]), "{t}");
+            assert!(one.period_ps(&s[0]) < one.period_ps(&s[1]), "{}", c.name);
         }
     }
 }
