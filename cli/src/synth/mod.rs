@@ -29,6 +29,10 @@ use std::process::Command;
 
 mod fpga;
 mod xc2_blocks;
+mod xc2_fit;
+#[cfg(test)]
+mod xc2_jed_sim;
+mod xc2_pins;
 mod xc2_timing;
 pub use fpga::Flow;
 
@@ -66,6 +70,9 @@ pub struct Cpld {
     pub blocks: u64,
     /// User I/O, largest package.
     pub io: u64,
+    /// That package, as the fitter names it (`FT256`): every pad of the
+    /// die is bonded in it ([`xc2_pins`]).
+    pub package: &'static str,
     /// Speed grades, fastest first: the delays of [`xc2_timing`]'s line
     /// rate estimate.
     pub speeds: [xc2_timing::Speed; 2],
@@ -100,6 +107,7 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 32,
         blocks: 2,
         io: 33,
+        package: "VQ44",
         speeds: [
             xc2_timing::sp("-4", [600, 600, 600, 300, 1500]),
             xc2_timing::sp("-6", [700, 1400, 1600, 700, 1800]),
@@ -111,6 +119,7 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 64,
         blocks: 4,
         io: 64,
+        package: "VQ100",
         speeds: [
             xc2_timing::sp("-5", [400, 1500, 900, 500, 1400]),
             xc2_timing::sp("-7", [700, 3000, 1600, 700, 1800]),
@@ -122,6 +131,7 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 128,
         blocks: 8,
         io: 100,
+        package: "TQ144",
         speeds: [
             xc2_timing::sp("-6", [400, 1800, 800, 900, 1400]),
             xc2_timing::sp("-7", [700, 3400, 1600, 700, 1400]),
@@ -133,6 +143,7 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 256,
         blocks: 16,
         io: 184,
+        package: "FT256",
         speeds: [
             xc2_timing::sp("-6", [400, 1700, 800, 500, 1300]),
             xc2_timing::sp("-7", [700, 3000, 1600, 700, 1800]),
@@ -144,6 +155,7 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 384,
         blocks: 24,
         io: 240,
+        package: "FG324",
         speeds: [
             xc2_timing::sp("-7", [200, 2200, 900, 500, 1700]),
             xc2_timing::sp("-10", [700, 4500, 1600, 700, 2000]),
@@ -155,6 +167,7 @@ pub const CPLDS: [Cpld; 6] = [
         macrocells: 512,
         blocks: 32,
         io: 270,
+        package: "FG324",
         speeds: [
             xc2_timing::sp("-7", [400, 3300, 900, 500, 1400]),
             xc2_timing::sp("-10", [700, 4500, 1600, 700, 1800]),
@@ -553,10 +566,31 @@ fn xc2c(
             xc2_blocks::summary(&costs, costs.len())
         ));
     }
-    r.status = "ok".into();
-    r.reason = "within the device's macrocells, product terms and I/O (no open fitter places \
-                this device: routing not checked, docs/synthesis.md)"
-        .into();
+    match xc2_fit::fit(dir, c) {
+        Ok(pins) => {
+            r.artifacts.extend(["top.jed", "top.ucf"].map(String::from));
+            r.notes.push(format!(
+                "pins (top.ucf): {}",
+                pins.iter()
+                    .map(|p| format!("{} {}", p.port, p.pin))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ));
+            r.status = "ok".into();
+            r.reason = format!(
+                "placed and routed on the {} by the open fitter (xc2par, third_party/README.md): \
+                 top.jed, pins in top.ucf; the bitstream is checked in simulation, not yet on a \
+                 device (docs/synthesis.md)",
+                xc2_fit::part(c)
+            );
+        }
+        Err(e) if e.starts_with("error:") => return Err(e),
+        Err(e) => {
+            r.status = "does not fit".into();
+            r.reason = e;
+            return Ok(());
+        }
+    }
     if let (Some(t), Some((mhz, _))) = (timing, xc2_timing::fmax(&paths, &c.speeds[0])) {
         r.fmax_mhz = Some(mhz);
         r.max_line_rate_mbps = Some(mhz / 2.0);

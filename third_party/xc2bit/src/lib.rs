@@ -23,6 +23,10 @@ OR TORT (INCLUDING NEGLIGENCE OR OTHERWISE) ARISING IN ANY WAY OUT OF THE USE
 OF THIS SOFTWARE, EVEN IF ADVISED OF THE POSSIBILITY OF SUCH DAMAGE.
 */
 
+// merkur: lints that rustc gained after this code was written (2020); the
+// code is upstream's as published, apart from the changes marked "merkur".
+#![allow(mismatched_lifetime_syntaxes, redundant_semicolons, suspicious_double_ref_op)]
+
 //! # xc2bit: A library for working with Xilinx Coolrunner-II bitstreams
 //!
 //! xc2bit is a library for reading and writing bitstreams for the Xilinx Coolrunner-II family of CPLD devices.

@@ -198,3 +198,60 @@ pub fn xc2par_complete_flow<R, W, L>(options: &XC2ParOptions, device_type: XC2De
         PARResult::FailureIterationsExceeded => Err(PARFlowError::PARIterationsExceeded),
     }
 }
+
+/// merkur: the placement of a design's pins, for a pin report.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct XC2PinPlacement {
+    /// The name of the Yosys cell of the pin's buffer (`IBUF`, `IOBUFE`).
+    pub name: String,
+    /// Function block.
+    pub fb: u32,
+    /// Macrocell in the function block.
+    pub mc: u32,
+    /// The global clock (`GCK` index) that the pin drives, if any.
+    pub gck: Option<u32>,
+}
+
+/// merkur: `xc2par_complete_flow`, also returning where each pin went.
+pub fn xc2par_flow_with_pins<R, W, L>(options: &XC2ParOptions, device_type: XC2DeviceSpeedPackage, input: R, output: W,
+    logger: L) -> Result<Vec<XC2PinPlacement>, PARFlowError> where R: std::io::Read, W: std::io::Write, L: Into<Option<slog::Logger>> {
+
+    let logger = logger.into().unwrap_or(slog::Logger::root(slog_stdlog::StdLog.fuse(), o!()));
+
+    let yosys_netlist = yosys_netlist_json::Netlist::from_reader(input)?;
+    let intermediate_graph = IntermediateGraph::from_yosys_netlist(&yosys_netlist,
+        logger.new(o!("pass" => "yosys -> intermediate")))?;
+    let mut input_graph = InputGraph::from_intermed_graph(&intermediate_graph,
+        logger.new(o!("pass" => "intermediate -> input")))?;
+    let par_result = do_par(&mut input_graph, device_type, options,
+        logger.new(o!("pass" => "PAR")));
+
+    match par_result {
+        PARResult::Success(x) => {
+            let bitstream = produce_bitstream(device_type, &input_graph, &x);
+            if options.output_fmt == ParOutputFormat::Jed {
+                bitstream.to_jed(output)?;
+            } else {
+                bitstream.to_crbit().write_to_writer(output)?;
+            }
+            let mut pins = Vec::new();
+            for idx in input_graph.mcs.iter_idx() {
+                let mc = input_graph.mcs.get(idx);
+                if mc.io_bits.is_none() {
+                    continue;
+                }
+                let loc = x.mcs.get(idx.into()).loc.unwrap();
+                let mut gck = None;
+                for bidx in input_graph.bufg_clks.iter_idx() {
+                    if input_graph.bufg_clks.get(bidx).input == idx {
+                        gck = Some(x.bufg_clks.get(bidx.into()).loc.unwrap().i);
+                    }
+                }
+                pins.push(XC2PinPlacement { name: mc.name.clone(), fb: loc.fb, mc: loc.i, gck });
+            }
+            Ok(pins)
+        },
+        PARResult::FailureSanity(x) => Err(PARFlowError::PARSanityCheckFailed(x)),
+        PARResult::FailureIterationsExceeded => Err(PARFlowError::PARIterationsExceeded),
+    }
+}

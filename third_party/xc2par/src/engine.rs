@@ -216,6 +216,22 @@ fn mcs_can_be_paired(mc0: &InputGraphMacrocell, mc1: &InputGraphMacrocell) -> bo
     }
 }
 
+// merkur: on the XC2C128 and larger some macrocells have no pad. A pin, and a
+// buried register whose feedback has to take the I/O path, need one; upstream
+// placed them anywhere and then unwrapped the missing pad (`engine.rs:862`).
+fn mc_needs_pad(mc: &InputGraphMacrocell) -> bool {
+    match mc.get_type() {
+        InputGraphMacrocellType::BuriedComb => false,
+        InputGraphMacrocellType::BuriedReg => mc.xor_feedback_used && mc.reg_feedback_used,
+        _ => true,
+    }
+}
+
+// merkur: whether macrocell `mc` of function block `fb` has a pad.
+fn site_has_pad(device: XC2Device, fb: usize, mc: usize) -> bool {
+    fb_mc_num_to_iob_num(device, fb as u32, mc as u32).is_some()
+}
+
 // First element of tuple is anything, second element can only be pin input
 pub fn greedy_initial_placement(g: &mut InputGraph, go: &mut OutputGraph, device_type: XC2DeviceSpeedPackage,
     logger: &slog::Logger) -> Option<Vec<PARFBAssignment>> {
@@ -391,6 +407,13 @@ pub fn greedy_initial_placement(g: &mut InputGraph, go: &mut OutputGraph, device
         let is_pininput = mc.get_type().is_pininput();
 
         if let Some(RequestedLocation{fb, i: Some(mc_idx)}) = mc.requested_loc {
+            if mc_needs_pad(mc) && !site_has_pad(device_type.dev, fb as usize, mc_idx as usize) {
+                error!(logger, "PAR - cannot place macrocell (fixed) because the site has no pad";
+                    "name" => &mc.name,
+                    "fb" => fb,
+                    "mc" => mc_idx);
+                return None;
+            }
             let x = if !is_pininput {
                 &mut ret[fb as usize][mc_idx as usize].0
             } else {
@@ -442,6 +465,9 @@ pub fn greedy_initial_placement(g: &mut InputGraph, go: &mut OutputGraph, device
         if let Some(RequestedLocation{fb, i: None}) = mc.requested_loc {
             let mut mc_i = None;
             for i in 0..MCS_PER_FB {
+                if mc_needs_pad(&mc) && !site_has_pad(device_type.dev, fb as usize, i) {
+                    continue;
+                }
                 if !is_pininput {
                     if ret[fb as usize][i].0 != PARMCAssignment::None {
                         continue;
@@ -494,6 +520,9 @@ pub fn greedy_initial_placement(g: &mut InputGraph, go: &mut OutputGraph, device
             let mut fbmc_i = None;
             for fb in 0..num_fbs {
                 for i in 0..MCS_PER_FB {
+                    if mc_needs_pad(&mc) && !site_has_pad(device_type.dev, fb, i) {
+                        continue;
+                    }
                     if !is_pininput {
                         if ret[fb][i].0 != PARMCAssignment::None {
                             continue;
@@ -1227,6 +1256,30 @@ pub fn try_assign_entire_chip(g: &InputGraph, go: &mut OutputGraph, mc_assignmen
     (par_results_per_fb, placement_violations, placement_violations_score)
 }
 
+// merkur: puts every macrocell's location in `go` where `placement` has it.
+// Scoring a candidate move swaps two cells and swaps them back, but a better
+// candidate is kept as the best placement *after* the swap back, so upstream
+// went on (and wrote the bitstream) with the locations of the placement
+// before: a macrocell in one function block with its product terms in
+// another (`output.rs`, "pt_loc.fb == fb_i").
+fn sync_locs(go: &mut OutputGraph, placement: &[PARFBAssignment]) {
+    for (fb_i, fb) in placement.iter().enumerate() {
+        for (mc_i, site) in fb.iter().enumerate() {
+            for a in [site.0, site.1].iter() {
+                if let PARMCAssignment::MC(mc_idx) = *a {
+                    go.mcs.get_mut(ObjPoolIndex::from(mc_idx)).loc = Some(AssignedLocation {
+                        fb: fb_i as u32,
+                        i: mc_i as u32,
+                    });
+                }
+            }
+        }
+    }
+}
+
+// merkur: the results kept with the best placement are no longer used (they
+// are recomputed for the placement found), so their assignments go unread.
+#[allow(unused_assignments)]
 pub fn do_par<L: Into<Option<slog::Logger>>>(g: &mut InputGraph, device_type: XC2DeviceSpeedPackage,
     options: &XC2ParOptions, logger: L) -> PARResult {
 
@@ -1255,10 +1308,15 @@ pub fn do_par<L: Into<Option<slog::Logger>>>(g: &mut InputGraph, device_type: XC
 
     for iter_count in 0..options.max_iter {
         macrocell_placement = best_placement.clone();
+        sync_locs(&mut go, &macrocell_placement);
 
         if best_placement_violations.len() == 0 {
             // It worked!
             info!(logger, "PAR - placement successfully found");
+            // merkur: the product terms and ZIA of exactly this placement
+            let (results, violations, _) = try_assign_entire_chip(g, &mut go, &macrocell_placement, device_type);
+            assert!(violations.is_empty());
+            best_par_results_per_fb = results;
             for i in 0..device_type.dev.num_fbs() {
                 let result_i = std::mem::replace(&mut best_par_results_per_fb[i], None);
                 let zia = result_i.unwrap();
@@ -1441,6 +1499,11 @@ pub fn do_par<L: Into<Option<slog::Logger>>>(g: &mut InputGraph, device_type: XC
             }
 
             for cand_mc in 0..MCS_PER_FB {
+                // merkur: a cell that needs a pad moves only to a site with one
+                if mc_needs_pad(g.mcs.get(to_move_mc_idx))
+                    && !site_has_pad(device_type.dev, cand_fb, cand_mc) {
+                    continue;
+                }
                 // This site is not usable
                 let cand_cur_assign = if !move_pininput {
                     macrocell_placement[cand_fb][cand_mc].0
@@ -1453,6 +1516,10 @@ pub fn do_par<L: Into<Option<slog::Logger>>>(g: &mut InputGraph, device_type: XC
                     },
                     PARMCAssignment::MC(cand_mc_idx) => {
                         let cand_mc = g.mcs.get(cand_mc_idx);
+                        // merkur: nor may the swap move a cell that needs a pad to a site without one
+                        if mc_needs_pad(cand_mc) && !site_has_pad(device_type.dev, move_fb as usize, move_mc as usize) {
+                            continue;
+                        }
                         if let Some(cand_mc_req_loc) = cand_mc.requested_loc {
                             // The thing we want to swap with has a LOC restriction of some kind
                             if cand_mc_req_loc.i.is_some() {

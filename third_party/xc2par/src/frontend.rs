@@ -799,7 +799,9 @@ impl IntermediateGraph {
             }
 
             let net = nets.get(net_idx);
-            if net.source.is_none() {
+            // merkur: a net that nothing drives and nothing reads is a name
+            // Yosys kept (a public wire left dangling), not an error.
+            if net.source.is_none() && !net.sinks.is_empty() {
                 error!(logger, "connectivity - undriven net";
                     "net" => &net.name);
                 return Err(FrontendError::NoNetDrivers(net.name.as_ref()
