@@ -338,9 +338,17 @@ endmodule
 
     /// Synthesises [`DESIGN`] with `merkur synth`'s CoolRunner-II script,
     /// fits it on `c` and returns the folder with `top.jed` and the pins.
+    /// With `MERKUR_KEEP_XC2_FIT=<dir>` the folders stay, as
+    /// `<dir>/<target>` (scripts/check-xc2-jed.sh reads their `.jed`).
     fn build(c: &Cpld) -> (std::path::PathBuf, Vec<Pin>) {
-        let dir =
-            std::env::temp_dir().join(format!("merkur-xc2fit-{}-{}", std::process::id(), c.name));
+        let dir = match std::env::var_os("MERKUR_KEEP_XC2_FIT") {
+            Some(d) => std::path::PathBuf::from(d).join(c.name),
+            None => std::env::temp_dir().join(format!(
+                "merkur-xc2fit-{}-{}",
+                std::process::id(),
+                c.name
+            )),
+        };
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("top.v"), DESIGN).unwrap();
@@ -438,7 +446,9 @@ endmodule
                     );
                 }
             }
-            let _ = std::fs::remove_dir_all(&dir);
+            if std::env::var_os("MERKUR_KEEP_XC2_FIT").is_none() {
+                let _ = std::fs::remove_dir_all(&dir);
+            }
         }
     }
 }
