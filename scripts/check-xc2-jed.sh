@@ -2,7 +2,8 @@
 # Cross-checks the open CoolRunner-II flow's .jed against Project Combine.
 #
 # The test `the_fitted_jed_computes_the_design` (cli/src/synth/xc2_fit.rs)
-# fits a small design on the XC2C64A, XC2C256 and XC2C512 and runs each
+# fits a small design on the XC2C64A, XC2C256 and XC2C512, and
+# `a_crowded_xc2c256_is_placed_and_computes` a crowded one, and runs each
 # .jed as xc2bit reads it back. That read-back uses the tables that wrote
 # the file, so it cannot see a wrong fuse position or ZIA map. This script
 # reads the same files with Project Combine's own disassembler
@@ -26,8 +27,8 @@ pc=$(cd "$1" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 (cd "$pc/public" && cargo build --quiet --release -p prjcombine-coolrunner2 --bin coolrunner2_dis)
-MERKUR_KEEP_XC2_FIT="$work" cargo test --quiet --release -p merkur --bin merkur \
-    the_fitted_jed_computes_the_design >/dev/null
+MERKUR_KEEP_XC2_FIT="$work" cargo test --quiet --release -p merkur --bin merkur xc2_fit \
+    >/dev/null
 cargo build --quiet --release -p merkur --example xc2_jed_fields
 status=0
 for jed in "$work"/*/top.jed; do

@@ -336,22 +336,23 @@ endmodule
         }
     }
 
-    /// Synthesises [`DESIGN`] with `merkur synth`'s CoolRunner-II script,
+    /// Synthesises `verilog` with `merkur synth`'s CoolRunner-II script,
     /// fits it on `c` and returns the folder with `top.jed` and the pins.
     /// With `MERKUR_KEEP_XC2_FIT=<dir>` the folders stay, as
-    /// `<dir>/<target>` (scripts/check-xc2-jed.sh reads their `.jed`).
-    fn build(c: &Cpld) -> (std::path::PathBuf, Vec<Pin>) {
+    /// `<dir>/<label>-<target>` (scripts/check-xc2-jed.sh reads their
+    /// `.jed`).
+    fn build(c: &Cpld, label: &str, verilog: &str) -> (std::path::PathBuf, Vec<Pin>) {
         let dir = match std::env::var_os("MERKUR_KEEP_XC2_FIT") {
-            Some(d) => std::path::PathBuf::from(d).join(c.name),
+            Some(d) => std::path::PathBuf::from(d).join(format!("{label}-{}", c.name)),
             None => std::env::temp_dir().join(format!(
-                "merkur-xc2fit-{}-{}",
+                "merkur-xc2fit-{}-{label}-{}",
                 std::process::id(),
                 c.name
             )),
         };
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
-        std::fs::write(dir.join("top.v"), DESIGN).unwrap();
+        std::fs::write(dir.join("top.v"), verilog).unwrap();
         let out = std::process::Command::new("yosys")
             .args(["-q", "-p", &xc2_script()])
             .current_dir(&dir)
@@ -385,7 +386,7 @@ endmodule
         let seed = Rng::seed(21);
         for name in ["xc2c64a", "xc2c256", "xc2c512"] {
             let c = cpld(name).unwrap();
-            let (dir, pins) = build(&c);
+            let (dir, pins) = build(&c, "small", DESIGN);
             let at = |port: &str| {
                 pins.iter()
                     .find(|p| p.port == port)
@@ -449,6 +450,146 @@ endmodule
             if std::env::var_os("MERKUR_KEEP_XC2_FIT").is_none() {
                 let _ = std::fs::remove_dir_all(&dir);
             }
+        }
+    }
+
+    /// Registers of the crowded design ([`crowded_design`]).
+    const CROWDED: usize = 10;
+
+    /// A design that fills the XC2C256 as a slave would: [`CROWDED`]
+    /// 16-bit shift registers with feedback, each enabled by a bit of the
+    /// one before, a multiplexer over them and a shift register on
+    /// `clk90` ↓; about two thirds of the macrocells and 85 % of the
+    /// product terms. The placer needs many iterations to place it.
+    fn crowded_design() -> String {
+        let mut v = String::from(
+            "module merkur_top(clk, clk90, d, en, sel, q, p);\n  input clk, clk90, d, en;\n  \
+             input [3:0] sel;\n  output reg [3:0] q = 4'd0;\n  output reg [7:0] p = 8'd0;\n",
+        );
+        for i in 0..CROWDED {
+            v += &format!("  reg [15:0] c{i} = 16'd{};\n", i * 7 + 1);
+        }
+        for i in 0..CROWDED {
+            let prev = (i + CROWDED - 1) % CROWDED;
+            v += &format!(
+                "  always @(posedge clk) if (en ^ c{prev}[{}]) c{i} <= {{c{i}[14:0], c{i}[15] ^ c{i}[{}] ^ d}};\n",
+                i % 16,
+                (i * 3) % 15
+            );
+        }
+        v += "  always @(posedge clk) case (sel)\n";
+        for i in 0..CROWDED {
+            v += &format!("    4'd{i}: q <= c{i}[3:0];\n");
+        }
+        v += "    default: q <= q ^ c0[7:4];\n  endcase\n";
+        v += "  always @(negedge clk90) p <= {p[6:0], ^q};\nendmodule\n";
+        v
+    }
+
+    /// [`crowded_design`], naively.
+    struct Crowded {
+        c: [u16; CROWDED],
+        q: u8,
+        p: u8,
+    }
+
+    impl Crowded {
+        fn clk_rise(&mut self, d: bool, en: bool, sel: usize) {
+            let old = self.c;
+            for i in 0..CROWDED {
+                let prev = old[(i + CROWDED - 1) % CROWDED];
+                if en ^ ((prev >> (i % 16)) & 1 == 1) {
+                    let x = old[i];
+                    let fb = (x >> 15) ^ (x >> ((i * 3) % 15)) ^ u16::from(d);
+                    self.c[i] = (x << 1) | (fb & 1);
+                }
+            }
+            self.q = if sel < CROWDED {
+                (old[sel] & 0xf) as u8
+            } else {
+                self.q ^ ((old[0] >> 4) & 0xf) as u8
+            };
+        }
+
+        fn clk90_fall(&mut self) {
+            self.p = (self.p << 1) | (self.q.count_ones() % 2) as u8;
+        }
+
+        fn outputs(&self) -> Vec<(String, bool)> {
+            let q = (0..4).map(|i| (format!("q<{i}>"), (self.q >> i) & 1 == 1));
+            let p = (0..8).map(|i| (format!("p<{i}>"), (self.p >> i) & 1 == 1));
+            q.chain(p).collect()
+        }
+    }
+
+    /// The placer at work: [`crowded_design`] on the XC2C256 is placed,
+    /// and its `.jed` computes the design for 200 cycles of seeded random
+    /// inputs, as [`the_fitted_jed_computes_the_design`] checks.
+    #[test]
+    fn a_crowded_xc2c256_is_placed_and_computes() {
+        let seed = Rng::seed(2121);
+        let c = cpld("xc2c256").unwrap();
+        let (dir, pins) = build(&c, "crowded", &crowded_design());
+        let netlist: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(dir.join("top.json")).unwrap()).unwrap();
+        let count = |t: &str| {
+            netlist["modules"]["merkur_top"]["cells"]
+                .as_object()
+                .unwrap()
+                .values()
+                .filter(|x| x["type"] == t)
+                .count() as u64
+        };
+        let (mc, pt) = (count("MACROCELL_XOR"), count("ANDTERM"));
+        assert!(
+            mc * 100 >= 60 * c.macrocells && pt * 100 >= 80 * c.pterms(),
+            "the design no longer crowds the device: {mc} macrocells, {pt} product terms"
+        );
+        let at = |port: &str| pins.iter().find(|p| p.port == port).unwrap();
+        let gck = |port: &str| {
+            at(port)
+                .gck
+                .unwrap_or_else(|| panic!("{port} not on a GCK"))
+        };
+        let (clk, clk90) = (gck("clk"), gck("clk90"));
+        let mut dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
+        let mut r = Crowded {
+            c: std::array::from_fn(|i| (i * 7 + 1) as u16),
+            q: 0,
+            p: 0,
+        };
+        let mut rng = Rng::new(seed);
+        let check = |dev: &Device, r: &Crowded, when: &str| {
+            for (port, want) in r.outputs() {
+                let p = at(&port);
+                assert_eq!(
+                    dev.out_pad(p.fb, p.mc),
+                    want,
+                    "{port} {when} (seed {seed}, MERKUR_SEED to repeat)"
+                );
+            }
+        };
+        check(&dev, &r, "at power-up");
+        for cycle in 0..200 {
+            let (d, en, sel) = (rng.below(2) == 1, rng.below(2) == 1, rng.below(16) as usize);
+            for (port, level) in [("d", d), ("en", en)] {
+                dev.set_pad(at(port).fb, at(port).mc, level);
+            }
+            for i in 0..4 {
+                let p = at(&format!("sel<{i}>"));
+                dev.set_pad(p.fb, p.mc, (sel >> i) & 1 == 1);
+            }
+            dev.clock(clk, true);
+            r.clk_rise(d, en, sel);
+            check(&dev, &r, &format!("after clk rose, cycle {cycle}"));
+            dev.clock(clk90, true);
+            dev.clock(clk, false);
+            dev.clock(clk90, false);
+            r.clk90_fall();
+            check(&dev, &r, &format!("after clk90 fell, cycle {cycle}"));
+        }
+        if std::env::var_os("MERKUR_KEEP_XC2_FIT").is_none() {
+            let _ = std::fs::remove_dir_all(&dir);
         }
     }
 }

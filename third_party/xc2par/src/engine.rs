@@ -798,6 +798,33 @@ pub enum ZIAAssignmentResult {
     FailureUnroutable(u32),
 }
 
+// merkur: the ZIA rows that can carry each choice on a device, built once.
+// Upstream scanned every row of the ZIA table for every input of every
+// function block at every placement step, which took half the placer's time.
+fn zia_rows(device: XC2Device, choice: XC2ZIAInput) -> &'static [usize] {
+    use std::sync::OnceLock;
+    static MAPS: [OnceLock<HashMap<XC2ZIAInput, Vec<usize>>>; 6] =
+        [OnceLock::new(), OnceLock::new(), OnceLock::new(), OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    let i = match device {
+        XC2Device::XC2C32 | XC2Device::XC2C32A => 0,
+        XC2Device::XC2C64 | XC2Device::XC2C64A => 1,
+        XC2Device::XC2C128 => 2,
+        XC2Device::XC2C256 => 3,
+        XC2Device::XC2C384 => 4,
+        XC2Device::XC2C512 => 5,
+    };
+    let map = MAPS[i].get_or_init(|| {
+        let mut m: HashMap<XC2ZIAInput, Vec<usize>> = HashMap::new();
+        for zia_i in 0..INPUTS_PER_ANDTERM {
+            for &x in zia_table_get_row(device, zia_i) {
+                m.entry(x).or_insert_with(Vec::new).push(zia_i);
+            }
+        }
+        m
+    });
+    map.get(&choice).map(|v| v.as_slice()).unwrap_or(&[])
+}
+
 pub fn try_assign_zia(g: &InputGraph, go: &mut OutputGraph, mc_assignment: &PARFBAssignment,
     device_type: XC2DeviceSpeedPackage) -> ZIAAssignmentResult {
 
@@ -906,49 +933,55 @@ pub fn try_assign_zia(g: &InputGraph, go: &mut OutputGraph, mc_assignment: &PARF
         };
 
         // Actually search the ZIA table for it
-        let mut candidate_sites_for_this_input = Vec::new();
-        for zia_i in 0..INPUTS_PER_ANDTERM {
-            let row = zia_table_get_row(device_type.dev, zia_i);
-            for &x in row {
-                if x == choice {
-                    candidate_sites_for_this_input.push(zia_i);
-                }
-            }
-        }
+        // merkur: from an index built once per device (`zia_rows`)
+        let candidate_sites_for_this_input = zia_rows(device_type.dev, choice).to_vec();
 
         (*input, choice, candidate_sites_for_this_input)
     }).collect::<Vec<_>>();
 
-    // Actually do the search to assign ZIA rows
-    let mut most_routed = 0;
-    fn backtrack_inner(most_routed: &mut u32, ret: &mut PARZIAAssignment,
-        candidate_sites: &[(InputGraphPTermInput, XC2ZIAInput, Vec<usize>)],
-        working_on_idx: usize,
-        input_to_row_map: &mut HashMap<InputGraphPTermInput, u32>) -> bool {
-
-        if working_on_idx == candidate_sites.len() {
-            // Complete assignment, we are done
-            return true;
-        }
-        let (input, choice, ref candidate_sites_for_this_input) = candidate_sites[working_on_idx];
-        for &candidate_zia_row in candidate_sites_for_this_input {
-            if ret.get(candidate_zia_row) == XC2ZIAInput::One {
-                // It is possible to assign to this site
-                ret.set(candidate_zia_row, choice);
-                input_to_row_map.insert(input, candidate_zia_row as u32);
-                *most_routed = working_on_idx as u32 + 1;
-                if backtrack_inner(most_routed, ret, candidate_sites, working_on_idx + 1, input_to_row_map) {
-                    return true;
-                }
-                ret.set(candidate_zia_row, XC2ZIAInput::One);
-                input_to_row_map.remove(&input);
+    // merkur: assigning inputs to ZIA rows is a bipartite matching (each input
+    // to one of the rows that can carry it, each row to one input). Upstream
+    // searched it by backtracking, which takes exponential time when a
+    // block's inputs cannot all be routed: with a design near the device's
+    // capacity one placement iteration took 14 s on the XC2C256. Kuhn's
+    // augmenting paths find a complete assignment whenever one exists, as the
+    // backtracking did, in polynomial time, and count the inputs left out of
+    // the largest one for the placer's score.
+    fn augment(i: usize, candidate_sites: &[(InputGraphPTermInput, XC2ZIAInput, Vec<usize>)],
+        row_owner: &mut [Option<usize>; INPUTS_PER_ANDTERM], seen: &mut [bool; INPUTS_PER_ANDTERM]) -> bool {
+        for &row in &candidate_sites[i].2 {
+            if seen[row] {
+                continue;
+            }
+            seen[row] = true;
+            let free = match row_owner[row] {
+                None => true,
+                Some(other) => augment(other, candidate_sites, row_owner, seen),
+            };
+            if free {
+                row_owner[row] = Some(i);
+                return true;
             }
         }
-        return false;
-    };
-
-    if !backtrack_inner(&mut most_routed, &mut ret_zia, &candidate_sites, 0, &mut input_to_row_map) {
-        return ZIAAssignmentResult::FailureUnroutable(candidate_sites.len() as u32 - most_routed);
+        false
+    }
+    let mut row_owner = [None; INPUTS_PER_ANDTERM];
+    let mut routed = 0;
+    for i in 0..candidate_sites.len() {
+        let mut seen = [false; INPUTS_PER_ANDTERM];
+        if augment(i, &candidate_sites, &mut row_owner, &mut seen) {
+            routed += 1;
+        }
+    }
+    if routed < candidate_sites.len() {
+        return ZIAAssignmentResult::FailureUnroutable((candidate_sites.len() - routed) as u32);
+    }
+    for (row, owner) in row_owner.iter().enumerate() {
+        if let Some(i) = *owner {
+            let (input, choice, _) = candidate_sites[i];
+            ret_zia.set(row, choice);
+            input_to_row_map.insert(input, row as u32);
+        }
     }
 
     // Now we search through all the inputs and record which row they go in
