@@ -375,6 +375,55 @@ endmodule
         (dir, pins)
     }
 
+    /// A fitted design on the model of its device, driven and read by
+    /// port name through the fitter's pins.
+    struct Board {
+        dev: Device,
+        pins: Vec<Pin>,
+        part: &'static str,
+        seed: u64,
+    }
+
+    impl Board {
+        fn pin(&self, port: &str) -> &Pin {
+            self.pins
+                .iter()
+                .find(|p| p.port == port)
+                .unwrap_or_else(|| panic!("{}: no pin for {port}", self.part))
+        }
+        /// The global clock that `port` drives.
+        fn gck(&self, port: &str) -> u32 {
+            self.pin(port)
+                .gck
+                .unwrap_or_else(|| panic!("{}: {port} not on a GCK", self.part))
+        }
+        /// Drives input bus `port` (`width` bits; 1: a single pin).
+        fn drive(&mut self, port: &str, width: u32, value: u64) {
+            for i in 0..width {
+                let name = if width == 1 {
+                    port.to_string()
+                } else {
+                    format!("{port}<{i}>")
+                };
+                let (fb, mc) = (self.pin(&name).fb, self.pin(&name).mc);
+                self.dev.set_pad(fb, mc, (value >> i) & 1 == 1);
+            }
+        }
+        /// Every output pad against the reference's levels.
+        fn check(&self, want: &[(String, bool)], when: &str) {
+            for (port, level) in want {
+                let p = self.pin(port);
+                assert_eq!(
+                    self.dev.out_pad(p.fb, p.mc),
+                    *level,
+                    "{}: {port} {when} (seed {}, MERKUR_SEED to repeat)",
+                    self.part,
+                    self.seed
+                );
+            }
+        }
+    }
+
     /// The open fitter's `.jed`, read back and run ([`Device`]), computes
     /// [`DESIGN`]: every output pad agrees with the reference model after
     /// every clock edge of 400 cycles of seeded random inputs. On the
@@ -387,23 +436,19 @@ endmodule
         for name in ["xc2c64a", "xc2c256", "xc2c512"] {
             let c = cpld(name).unwrap();
             let (dir, pins) = build(&c, "small", DESIGN);
-            let at = |port: &str| {
-                pins.iter()
-                    .find(|p| p.port == port)
-                    .unwrap_or_else(|| panic!("{}: no pin for {port}", c.device))
-            };
-            let gck = |port: &str| {
-                at(port)
-                    .gck
-                    .unwrap_or_else(|| panic!("{port} not on a GCK"))
-            };
-            let (clk, clk90) = (gck("clk"), gck("clk90"));
             assert_eq!(pins.len(), 39, "{}: every port bit placed", c.device);
             let ucf = std::fs::read_to_string(dir.join("top.ucf")).unwrap();
             for p in &pins {
                 assert!(ucf.contains(&format!("NET \"{}\" LOC = \"{}\";", p.port, p.pin)));
             }
-            let mut dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
+            let dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
+            let mut b = Board {
+                dev,
+                pins,
+                part: c.device,
+                seed,
+            };
+            let (clk, clk90) = (b.gck("clk"), b.gck("clk90"));
             let mut reference = Reference {
                 cnt: 3,
                 lfsr: 0xace1,
@@ -412,37 +457,20 @@ endmodule
                 hold: true,
             };
             let mut rng = Rng::new(seed);
-            let check = |dev: &Device, r: &Reference, when: &str| {
-                for (port, want) in r.outputs() {
-                    let p = at(&port);
-                    assert_eq!(
-                        dev.out_pad(p.fb, p.mc),
-                        want,
-                        "{}: {port} {when} (seed {seed}, MERKUR_SEED to repeat)",
-                        c.device
-                    );
-                }
-            };
-            check(&dev, &reference, "at power-up");
+            b.check(&reference.outputs(), "at power-up");
             for cycle in 0..400 {
                 let (d, en, k) = (rng.below(2) == 1, rng.below(4) != 0, rng.below(16) as u8);
-                let p = at("d");
-                dev.set_pad(p.fb, p.mc, d);
-                let p = at("en");
-                dev.set_pad(p.fb, p.mc, en);
-                for i in 0..4 {
-                    let p = at(&format!("k<{i}>"));
-                    dev.set_pad(p.fb, p.mc, (k >> i) & 1 == 1);
-                }
+                b.drive("d", 1, d.into());
+                b.drive("en", 1, en.into());
+                b.drive("k", 4, k.into());
                 for (e, (g, rising)) in [(clk, true), (clk90, true), (clk, false), (clk90, false)]
                     .into_iter()
                     .enumerate()
                 {
-                    dev.clock(g, rising);
+                    b.dev.clock(g, rising);
                     reference.edge(e as u32, d, en, k);
-                    check(
-                        &dev,
-                        &reference,
+                    b.check(
+                        &reference.outputs(),
                         &format!("after edge {e} of cycle {cycle}"),
                     );
                 }
@@ -545,48 +573,34 @@ endmodule
             mc * 100 >= 60 * c.macrocells && pt * 100 >= 80 * c.pterms(),
             "the design no longer crowds the device: {mc} macrocells, {pt} product terms"
         );
-        let at = |port: &str| pins.iter().find(|p| p.port == port).unwrap();
-        let gck = |port: &str| {
-            at(port)
-                .gck
-                .unwrap_or_else(|| panic!("{port} not on a GCK"))
+        let dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
+        let mut b = Board {
+            dev,
+            pins,
+            part: c.device,
+            seed,
         };
-        let (clk, clk90) = (gck("clk"), gck("clk90"));
-        let mut dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
+        let (clk, clk90) = (b.gck("clk"), b.gck("clk90"));
         let mut r = Crowded {
             c: std::array::from_fn(|i| (i * 7 + 1) as u16),
             q: 0,
             p: 0,
         };
         let mut rng = Rng::new(seed);
-        let check = |dev: &Device, r: &Crowded, when: &str| {
-            for (port, want) in r.outputs() {
-                let p = at(&port);
-                assert_eq!(
-                    dev.out_pad(p.fb, p.mc),
-                    want,
-                    "{port} {when} (seed {seed}, MERKUR_SEED to repeat)"
-                );
-            }
-        };
-        check(&dev, &r, "at power-up");
+        b.check(&r.outputs(), "at power-up");
         for cycle in 0..200 {
             let (d, en, sel) = (rng.below(2) == 1, rng.below(2) == 1, rng.below(16) as usize);
-            for (port, level) in [("d", d), ("en", en)] {
-                dev.set_pad(at(port).fb, at(port).mc, level);
-            }
-            for i in 0..4 {
-                let p = at(&format!("sel<{i}>"));
-                dev.set_pad(p.fb, p.mc, (sel >> i) & 1 == 1);
-            }
-            dev.clock(clk, true);
+            b.drive("d", 1, d.into());
+            b.drive("en", 1, en.into());
+            b.drive("sel", 4, sel as u64);
+            b.dev.clock(clk, true);
             r.clk_rise(d, en, sel);
-            check(&dev, &r, &format!("after clk rose, cycle {cycle}"));
-            dev.clock(clk90, true);
-            dev.clock(clk, false);
-            dev.clock(clk90, false);
+            b.check(&r.outputs(), &format!("after clk rose, cycle {cycle}"));
+            b.dev.clock(clk90, true);
+            b.dev.clock(clk, false);
+            b.dev.clock(clk90, false);
             r.clk90_fall();
-            check(&dev, &r, &format!("after clk90 fell, cycle {cycle}"));
+            b.check(&r.outputs(), &format!("after clk90 fell, cycle {cycle}"));
         }
         if std::env::var_os("MERKUR_KEEP_XC2_FIT").is_none() {
             let _ = std::fs::remove_dir_all(&dir);
