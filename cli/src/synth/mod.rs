@@ -71,8 +71,11 @@ pub struct Cpld {
     /// User I/O, largest package.
     pub io: u64,
     /// That package, as the fitter names it (`FT256`): every pad of the
-    /// die is bonded in it ([`xc2_pins`]).
+    /// die is bonded in it.
     pub package: &'static str,
+    /// Its pins: (function block, macrocell, package pin) of every pad
+    /// ([`xc2_pins`], generated from Project Combine's database).
+    pub pins: &'static [(u8, u8, &'static str)],
     /// Speed grades, fastest first: the delays of [`xc2_timing`]'s line
     /// rate estimate.
     pub speeds: [xc2_timing::Speed; 2],
@@ -108,6 +111,7 @@ pub const CPLDS: [Cpld; 6] = [
         blocks: 2,
         io: 33,
         package: "VQ44",
+        pins: xc2_pins::XC2C32A_VQ44,
         speeds: [
             xc2_timing::sp("-4", [600, 600, 600, 300, 1500]),
             xc2_timing::sp("-6", [700, 1400, 1600, 700, 1800]),
@@ -120,6 +124,7 @@ pub const CPLDS: [Cpld; 6] = [
         blocks: 4,
         io: 64,
         package: "VQ100",
+        pins: xc2_pins::XC2C64A_VQ100,
         speeds: [
             xc2_timing::sp("-5", [400, 1500, 900, 500, 1400]),
             xc2_timing::sp("-7", [700, 3000, 1600, 700, 1800]),
@@ -132,6 +137,7 @@ pub const CPLDS: [Cpld; 6] = [
         blocks: 8,
         io: 100,
         package: "TQ144",
+        pins: xc2_pins::XC2C128_TQ144,
         speeds: [
             xc2_timing::sp("-6", [400, 1800, 800, 900, 1400]),
             xc2_timing::sp("-7", [700, 3400, 1600, 700, 1400]),
@@ -144,6 +150,7 @@ pub const CPLDS: [Cpld; 6] = [
         blocks: 16,
         io: 184,
         package: "FT256",
+        pins: xc2_pins::XC2C256_FT256,
         speeds: [
             xc2_timing::sp("-6", [400, 1700, 800, 500, 1300]),
             xc2_timing::sp("-7", [700, 3000, 1600, 700, 1800]),
@@ -156,6 +163,7 @@ pub const CPLDS: [Cpld; 6] = [
         blocks: 24,
         io: 240,
         package: "FG324",
+        pins: xc2_pins::XC2C384_FG324,
         speeds: [
             xc2_timing::sp("-7", [200, 2200, 900, 500, 1700]),
             xc2_timing::sp("-10", [700, 4500, 1600, 700, 2000]),
@@ -168,6 +176,7 @@ pub const CPLDS: [Cpld; 6] = [
         blocks: 32,
         io: 270,
         package: "FG324",
+        pins: xc2_pins::XC2C512_FG324,
         speeds: [
             xc2_timing::sp("-7", [400, 3300, 900, 500, 1400]),
             xc2_timing::sp("-10", [700, 4500, 1600, 700, 1800]),

@@ -4,7 +4,6 @@
 //! the `.jed`; [`fit`] also writes the pin placement as a Xilinx `.ucf`
 //! (docs/synthesis.md, "The open fitter").
 
-use super::xc2_pins;
 use super::Cpld;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -22,18 +21,6 @@ pub struct Pin {
     pub pin: &'static str,
     /// The global clock (`GCK` index) the pin drives, if any.
     pub gck: Option<u32>,
-}
-
-/// The package pins of a device's largest package ([`xc2_pins`]).
-pub fn package_pins(device: &str) -> &'static [(u8, u8, &'static str)] {
-    match device {
-        "XC2C32A" => xc2_pins::XC2C32A_VQ44,
-        "XC2C64A" => xc2_pins::XC2C64A_VQ100,
-        "XC2C128" => xc2_pins::XC2C128_TQ144,
-        "XC2C256" => xc2_pins::XC2C256_FT256,
-        "XC2C384" => xc2_pins::XC2C384_FG324,
-        _ => xc2_pins::XC2C512_FG324,
-    }
 }
 
 /// The part name the fitter takes: device, fastest grade, package
@@ -62,7 +49,7 @@ pub fn fit(dir: &Path, c: &Cpld) -> Result<Vec<Pin>, String> {
         None,
     )
     .map_err(|e| fit_error(&part, e))?;
-    let pins = name_pins(&netlist, &placed, package_pins(c.device))?;
+    let pins = name_pins(&netlist, &placed, c.pins)?;
     std::fs::write(dir.join("top.jed"), &jed)
         .map_err(|e| format!("error: cannot write {}: {e}", dir.join("top.jed").display()))?;
     std::fs::write(dir.join("top.ucf"), ucf(&part, &pins))
@@ -252,7 +239,7 @@ mod tests {
     fn package_pins_are_the_pads_xc2bit_knows() {
         for c in CPLDS {
             let dev = xc2bit_device(c.name);
-            let pins = package_pins(c.device);
+            let pins = c.pins;
             let names: HashSet<_> = pins.iter().map(|p| p.2).collect();
             assert_eq!(names.len(), pins.len(), "{}: a pin twice", c.device);
             let table: HashSet<_> = pins.iter().map(|p| (p.0 as u32, p.1 as u32)).collect();
