@@ -372,6 +372,17 @@ endmodule
     }
 
     impl Board {
+        /// The `.jed` in `dir`, on the model of the device.
+        fn open(dir: &std::path::Path, pins: Vec<Pin>, part: &'static str, seed: u64) -> Board {
+            let dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
+            Board {
+                dev,
+                pins,
+                part,
+                seed,
+            }
+        }
+
         fn pin(&self, port: &str) -> &Pin {
             self.pins
                 .iter()
@@ -428,13 +439,7 @@ endmodule
             for p in &pins {
                 assert!(ucf.contains(&format!("NET \"{}\" LOC = \"{}\";", p.port, p.pin)));
             }
-            let dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
-            let mut b = Board {
-                dev,
-                pins,
-                part: c.device,
-                seed,
-            };
+            let mut b = Board::open(&dir, pins, c.device, seed);
             let (clk, clk90) = (b.gck("clk"), b.gck("clk90"));
             let mut reference = Reference {
                 cnt: 3,
@@ -560,13 +565,7 @@ endmodule
             mc * 100 >= 60 * c.macrocells && pt * 100 >= 80 * c.pterms(),
             "the design no longer crowds the device: {mc} macrocells, {pt} product terms"
         );
-        let dev = Device::from_jed(&std::fs::read(dir.join("top.jed")).unwrap());
-        let mut b = Board {
-            dev,
-            pins,
-            part: c.device,
-            seed,
-        };
+        let mut b = Board::open(&dir, pins, c.device, seed);
         let (clk, clk90) = (b.gck("clk"), b.gck("clk90"));
         let mut r = Crowded {
             c: std::array::from_fn(|i| (i * 7 + 1) as u16),
