@@ -4,7 +4,7 @@
 //! the `.jed`; [`fit`] also writes the pin placement as a Xilinx `.ucf`
 //! (docs/synthesis.md, "The open fitter").
 
-use super::Cpld;
+use super::{write, Cpld};
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -22,6 +22,9 @@ pub struct Pin {
     /// The global clock (`GCK` index) the pin drives, if any.
     pub gck: Option<u32>,
 }
+
+/// Placement iterations before the fitter gives up (xc2par's own default).
+const MAX_ITER: u32 = 1000;
 
 /// The part name the fitter takes: device, fastest grade, package
 /// (`XC2C256-6-FT256`).
@@ -42,7 +45,7 @@ pub fn fit(dir: &Path, c: &Cpld) -> Result<Vec<Pin>, String> {
         .ok_or_else(|| format!("error: the fitter does not know the part {part}"))?;
     let mut jed = Vec::new();
     let placed = xc2par::xc2par_flow_with_pins(
-        &xc2par::XC2ParOptions::new(),
+        xc2par::XC2ParOptions::new().max_iter(MAX_ITER),
         dev,
         json.as_slice(),
         &mut jed,
@@ -50,10 +53,10 @@ pub fn fit(dir: &Path, c: &Cpld) -> Result<Vec<Pin>, String> {
     )
     .map_err(|e| fit_error(&part, e))?;
     let pins = name_pins(&netlist, &placed, c.pins)?;
-    std::fs::write(dir.join("top.jed"), &jed)
-        .map_err(|e| format!("error: cannot write {}: {e}", dir.join("top.jed").display()))?;
-    std::fs::write(dir.join("top.ucf"), ucf(&part, &pins))
-        .map_err(|e| format!("error: cannot write {}: {e}", dir.join("top.ucf").display()))?;
+    let jed =
+        String::from_utf8(jed).map_err(|_| "error: the fitter's .jed is not text".to_string())?;
+    write(dir, "top.jed", &jed)?;
+    write(dir, "top.ucf", &ucf(&part, &pins))?;
     Ok(pins)
 }
 
@@ -63,9 +66,10 @@ pub fn fit(dir: &Path, c: &Cpld) -> Result<Vec<Pin>, String> {
 fn fit_error(part: &str, e: xc2par::PARFlowError) -> String {
     use xc2par::{PARFlowError as F, PARSanityResult as S};
     let why = match e {
-        F::PARIterationsExceeded => "no placement in 1,000 iterations: the totals fit, but not \
-                                     each function block's 40 inputs and 56 product terms"
-            .to_string(),
+        F::PARIterationsExceeded => format!(
+            "no placement in {MAX_ITER} iterations: the totals fit, but not each function \
+             block's 40 inputs and 56 product terms"
+        ),
         F::PARSanityCheckFailed(s) => match s {
             S::FailureTooManyMCs => "the design needs more macrocells than the device has",
             S::FailureTooManyPTerms => "the design needs more product terms than the device has",
@@ -186,7 +190,7 @@ fn ucf(part: &str, pins: &[Pin]) -> String {
 #[cfg(test)]
 mod tests {
     use super::super::xc2_jed_sim::Device;
-    use super::super::{cpld, xc2_script, CPLDS};
+    use super::super::{cpld, read_json, run_tool, xc2_script, CPLDS};
     use super::*;
     use merkur_sim::Rng;
     use std::collections::HashSet;
@@ -340,21 +344,12 @@ endmodule
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("top.v"), verilog).unwrap();
-        let out = std::process::Command::new("yosys")
-            .args(["-q", "-p", &xc2_script()])
-            .current_dir(&dir)
-            .output()
-            .expect("yosys on PATH (scripts/install-tools.sh)");
-        assert!(
-            out.status.success(),
-            "yosys: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        run_tool(&dir, "yosys", &["-p", &xc2_script()], "yosys.log")
+            .unwrap_or_else(|e| panic!("{e}"));
         // A net that nothing drives or reads, as Yosys 0.23 leaves in a
         // merkur node (`node.reason[0]` on ring8's sensor): the fitter
         // must pass it by (third_party/README.md).
-        let mut j: serde_json::Value =
-            serde_json::from_slice(&std::fs::read(dir.join("top.json")).unwrap()).unwrap();
+        let mut j: serde_json::Value = read_json(&dir, "top.json").unwrap();
         j["modules"]["merkur_top"]["netnames"]["dangling"] =
             serde_json::json!({"hide_name": 0, "bits": [1_000_000], "attributes": {}});
         std::fs::write(dir.join("top.json"), j.to_string()).unwrap();
@@ -550,8 +545,7 @@ endmodule
         let seed = Rng::seed(2121);
         let c = cpld("xc2c256").unwrap();
         let (dir, pins) = build(&c, "crowded", &crowded_design());
-        let netlist: serde_json::Value =
-            serde_json::from_slice(&std::fs::read(dir.join("top.json")).unwrap()).unwrap();
+        let netlist: serde_json::Value = read_json(&dir, "top.json").unwrap();
         let count = |t: &str| {
             netlist["modules"]["merkur_top"]["cells"]
                 .as_object()
