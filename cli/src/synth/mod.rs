@@ -29,6 +29,7 @@ use std::process::Command;
 
 mod fpga;
 mod xc2_blocks;
+mod xc2_cover;
 mod xc2_fit;
 #[cfg(test)]
 mod xc2_jed_sim;
@@ -475,10 +476,30 @@ fn xc2_script() -> String {
          techmap -map +/techmap.v -map +/coolrunner2/cells_latch.v; opt -fast; \
          dfflibmap -prepare -liberty +/coolrunner2/xc2_dff.lib; \
          synth_coolrunner2 -top merkur_top -run map_tff:map_cells; {XC2_MAP_CELLS} \
-         synth_coolrunner2 -top merkur_top -run check:; write_edif top.edif; \
-         write_json top.json; tee -q -o stat.json stat -json",
+         synth_coolrunner2 -top merkur_top -run check:; write_json top.json",
         "opt_dff -sat; opt_clean; ".repeat(XC2_SAT_PASSES)
     )
+}
+
+/// Maps `dir/top.v` to a CoolRunner-II netlist: [`xc2_script`], then
+/// each macrocell's product terms chosen again ([`xc2_cover`]), then Yosys
+/// once more for the netlist's check, `top.edif`, `top.json` and
+/// `stat.json`. Returns what the second step changed, or why it kept
+/// Yosys' cover (ABC failed).
+fn xc2_map(dir: &Path) -> Result<Result<xc2_cover::Recovered, String>, String> {
+    run_tool(dir, "yosys", &["-p", &xc2_script()], "yosys.log")?;
+    let recovered = xc2_cover::recover(dir);
+    run_tool(
+        dir,
+        "yosys",
+        &[
+            "-p",
+            "read_json top.json; hierarchy -top merkur_top; check -noinit -assert; \
+             write_edif top.edif; write_json top.json; tee -q -o stat.json stat -json",
+        ],
+        "yosys-cover.log",
+    )?;
+    Ok(recovered)
 }
 
 /// `synth_coolrunner2`'s `map_cells` step (Yosys 0.23) with `clkbufmap`
@@ -530,7 +551,14 @@ fn xc2c(
         return Ok(());
     }
     write(dir, "top.v", &node_top(st)?)?;
-    run_tool(dir, "yosys", &["-p", &xc2_script()], "yosys.log")?;
+    match xc2_map(dir)? {
+        Ok(c) => r.notes.push(format!(
+            "product terms chosen again per macrocell (D or T register, polarity): {} → {}; \
+             {} registers made T flip-flops, {} D",
+            c.pterms_before, c.pterms_after, c.to_t, c.to_d
+        )),
+        Err(e) => r.notes.push(format!("Yosys' product terms kept: {e}")),
+    }
     let cells = yosys_cells(&read_json(dir, "stat.json")?);
     let mc = sum_cells(&cells, |n| n == "MACROCELL_XOR");
     let pt = sum_cells(&cells, |n| n == "ANDTERM");

@@ -190,7 +190,7 @@ fn ucf(part: &str, pins: &[Pin]) -> String {
 #[cfg(test)]
 mod tests {
     use super::super::xc2_jed_sim::Device;
-    use super::super::{cpld, read_json, run_tool, xc2_script, CPLDS};
+    use super::super::{cpld, read_json, xc2_map, CPLDS};
     use super::*;
     use merkur_sim::Rng;
     use std::collections::HashSet;
@@ -327,7 +327,8 @@ endmodule
         }
     }
 
-    /// Synthesises `verilog` with `merkur synth`'s CoolRunner-II script,
+    /// Synthesises `verilog` with `merkur synth`'s CoolRunner-II mapping
+    /// (Yosys, then the covers chosen again: `super::super::xc2_cover`),
     /// fits it on `c` and returns the folder with `top.jed` and the pins.
     /// With `MERKUR_KEEP_XC2_FIT=<dir>` the folders stay, as
     /// `<dir>/<label>-<target>` (scripts/check-xc2-jed.sh reads their
@@ -344,8 +345,9 @@ endmodule
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("top.v"), verilog).unwrap();
-        run_tool(&dir, "yosys", &["-p", &xc2_script()], "yosys.log")
-            .unwrap_or_else(|e| panic!("{e}"));
+        xc2_map(&dir)
+            .unwrap_or_else(|e| panic!("{e}"))
+            .unwrap_or_else(|e| panic!("the covers were not chosen again: {e}"));
         // A net that nothing drives or reads, as Yosys 0.23 leaves in a
         // merkur node (`node.reason[0]` on ring8's sensor): the fitter
         // must pass it by (third_party/README.md).
