@@ -24,13 +24,17 @@
 //!    is fewer than Yosys' own, it reads at most 40 signals (a function
 //!    block's ZIA inputs, as Yosys' `abc -sop -I 40` keeps) and it is not
 //!    a constant; the macrocell's XOR inverts a cover of the complement,
-//!    and its register changes mode when the other input was cheaper.
+//!    and its register changes mode when the other input was cheaper;
+//! 4. ABC's `cec` proves that every changed macrocell, read back from the
+//!    rewritten netlist, gives its register the same next state as before
+//!    ([`recover`] keeps Yosys' cover otherwise).
 //!
-//! The macrocells stay the same in number and each computes the same
-//! register input as before (tested: `equivalent_after_recover` proves it
-//! with Yosys' `equiv_*` passes on a counter-rich design; the fitted `.jed`
-//! tests of `super::xc2_fit` run the step too). Measured on ring8's lean
-//! sensor in docs/benchmarks.md.
+//! The macrocells stay the same in number. Tests: below (a counter-rich
+//! design gets T flip-flops; an inverted product term and a register left
+//! in its old mode are refused by the proof), and the fitted-`.jed` tests
+//! of `super::xc2_fit`, which run every design through this step and
+//! simulate the `.jed` against a reference model. Measured on ring8's
+//! slaves in docs/benchmarks.md.
 
 use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
