@@ -577,11 +577,16 @@ fn xc2c(
     let costs = xc2_blocks::block_costs(&netlist);
     let paths = xc2_timing::paths(&netlist);
     let timing = xc2_timing::summary(c, &paths);
-    let over = mc > c.macrocells || pt > c.pterms() || io > c.io;
+    // Identical product terms share a site in a function block, so the
+    // different ones are what the device must hold at least.
+    let distinct = xc2_blocks::distinct_pterms(&netlist);
+    let over = mc > c.macrocells || distinct > c.pterms() || io > c.io;
     if over {
         r.status = "does not fit".into();
         r.reason = format!(
-            "it needs {mc} macrocells, {pt} product terms and {io} I/O; the {} has {} \
+            "it needs {mc} macrocells, {pt} product terms ({distinct} different ones; a \
+             function block's macrocells share a product term they all use) and {io} I/O; \
+             the {} has {} \
              macrocells, {} product terms ({} function blocks × 56) and at most {} user I/O",
             c.device,
             c.macrocells,

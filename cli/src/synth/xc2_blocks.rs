@@ -143,6 +143,26 @@ pub fn is_register(kind: &str) -> bool {
     kind.starts_with("FD") || kind.starts_with("FT") || kind.starts_with("LD")
 }
 
+/// The product terms (`ANDTERM`s) of `merkur_top` that differ from each
+/// other: the macrocells of one function block share a product term they
+/// all use (its PLA, Xilinx DS090; the fitter places them so), so a design
+/// with more than this count cannot fit, while one with more `ANDTERM`s
+/// may. 0 when the netlist has no such module.
+pub fn distinct_pterms(netlist: &Value) -> u64 {
+    let Some(g) = Graph::new(netlist) else {
+        return 0;
+    };
+    let mut seen = HashSet::new();
+    for c in g.cells.values().filter(|c| c["type"] == "ANDTERM") {
+        let mut t: Vec<u64> = bits(&c["connections"]["IN"]).collect();
+        let mut f: Vec<u64> = bits(&c["connections"]["IN_B"]).collect();
+        t.sort_unstable();
+        f.sort_unstable();
+        seen.insert((t, f));
+    }
+    seen.len() as u64
+}
+
 /// The blocks of `merkur_top` in a Yosys JSON netlist, most product terms
 /// first; an empty list when the netlist has no such module.
 pub fn block_costs(netlist: &Value) -> Vec<BlockCost> {
@@ -254,6 +274,28 @@ fn register_name(aliases: &[String]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Identical product terms (the same true and inverted inputs, in any
+    /// order) count once; one that reads an input the other way does not.
+    #[test]
+    fn identical_product_terms_count_once() {
+        let t = |ins: &[u64], inb: &[u64], out: u64| {
+            serde_json::json!({"type": "ANDTERM",
+                "port_directions": {"OUT": "output", "IN": "input", "IN_B": "input"},
+                "connections": {"OUT": [out], "IN": ins, "IN_B": inb}})
+        };
+        let netlist = serde_json::json!({"modules": {"merkur_top": {
+            "netnames": {"x": {"bits": [10, 11, 12]}},
+            "cells": {
+                "a1": t(&[10, 11], &[12], 1),
+                "a2": t(&[11, 10], &[12], 2),
+                "a3": t(&[10], &[11, 12], 3),
+                "a4": t(&[10, 11, 12], &[], 4),
+            }
+        }}});
+        assert_eq!(distinct_pterms(&netlist), 3);
+        assert_eq!(distinct_pterms(&serde_json::json!({})), 0);
+    }
 
     /// A hand-written netlist: a register in `node.fwd` fed by a macrocell
     /// of two product terms (OR term) and one PTC term, a register in `node`
