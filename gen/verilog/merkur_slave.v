@@ -268,6 +268,8 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     reg  [2:0] ferr_owed_q;
     reg  [19:0] quiet_d;
     reg  [19:0] quiet_q;
+    reg  quiet_max_d;
+    reg  quiet_max_q;
     reg  pend_fs_d;
     reg  pend_fs_q;
     reg  pend_rc_d;
@@ -471,6 +473,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         rw_d = rw_q;
         armed_d = armed_q;
         quiet_d = quiet_q;
+        quiet_max_d = quiet_max_q;
         pend_fs_d = pend_fs_q;
         pend_rc_d = pend_rc_q;
         pend_i1_d = pend_i1_q;
@@ -592,8 +595,9 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_seq != nxt_q)) begin
             fl_k_d = 2'h0;
         end
-        if (armed_q & (quiet_q != 20'hfffff)) begin
+        if (armed_q & ~quiet_max_q) begin
             quiet_d = quiet_q + 20'h1;
+            quiet_max_d = quiet_q == 20'hffffe;
         end
         if (i_irq1) begin
             pend_i1_d = 1'b1;
@@ -635,6 +639,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         end
         if (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & ~(rx_in__o_ok & (rx_in__o_ptype == 2'h2))) begin
             quiet_d = 20'h0;
+            quiet_max_d = 1'b0;
         end
         if (ferr_owed_q != 3'h0) begin
             ferr_owed_d = ferr_owed_q - 3'h1;
@@ -736,6 +741,8 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     always @(posedge clock) ferr_owed_q <= ferr_owed_d;
     initial quiet_q = 20'h0;
     always @(posedge clock) quiet_q <= quiet_d;
+    initial quiet_max_q = 1'h0;
+    always @(posedge clock) quiet_max_q <= quiet_max_d;
     initial pend_fs_q = 1'h0;
     always @(posedge clock) pend_fs_q <= pend_fs_d;
     initial pend_rc_q = 1'h0;
@@ -5612,7 +5619,6 @@ module merkur_slave__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_
     output reg  o_grace_over;
 
     // Constant declarations
-    localparam  reintegrate = 9'b100000100;
     localparam  reint_m1 = 9'b100000011;
     localparam  settle_start = 7'b1100100;
 
@@ -5666,7 +5672,7 @@ module merkur_slave__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_
         if (grace_q != 20'h0) begin
             grace_d = grace_q - 20'h1;
         end
-        if (settle_q != 7'h0) begin
+        if (busy_q) begin
             settle_d = settle_q - 7'h1;
         end
         busy_d = settle_q > 7'h1;
@@ -5699,7 +5705,7 @@ module merkur_slave__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_
         o_relink = go_wu | (unwrap & (mode_q == 2'h1));
         o_tst_start = go_wu | go_wd | turn;
         o_fs_set = acting & ((in_n & (((i_hard_in | i_hard_bsr) & i_rw) | (i_los_in & i_los_bsr))) | (~in_n & i_los_in));
-        ack_inc = live & ~in_n & i_tst_ack & (ack_time_q != 9'h1ff);
+        ack_inc = live & ~in_n & i_tst_ack & ~ack_done_q;
         if (live & ~in_n & i_tst_ack) begin
             seen_ack_d = 1'b1;
         end
@@ -5709,7 +5715,9 @@ module merkur_slave__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_
         if (live & (mode_q == 2'h1) & bsr_ok) begin
             pend_up_d = 1'b1;
         end
-        ack_done_d = (ack_time_q >= reintegrate) | ((ack_time_q == reint_m1) & ack_inc);
+        if ((ack_time_q == reint_m1) & ack_inc) begin
+            ack_done_d = 1'b1;
+        end
         if (i_armed & in_n & i_frame_start & ~i_tst_in & ~i_tst_bsr) begin
             joined_d = 1'b1;
         end

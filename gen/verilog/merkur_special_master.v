@@ -9404,7 +9404,6 @@ module merkur_special_master__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_
     output reg  o_grace_over;
 
     // Constant declarations
-    localparam  reintegrate = 9'b100000100;
     localparam  reint_m1 = 9'b100000011;
     localparam  settle_start = 7'b1100100;
 
@@ -9458,7 +9457,7 @@ module merkur_special_master__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_
         if (grace_q != 20'h0) begin
             grace_d = grace_q - 20'h1;
         end
-        if (settle_q != 7'h0) begin
+        if (busy_q) begin
             settle_d = settle_q - 7'h1;
         end
         busy_d = settle_q > 7'h1;
@@ -9491,7 +9490,7 @@ module merkur_special_master__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_
         o_relink = go_wu | (unwrap & (mode_q == 2'h1));
         o_tst_start = go_wu | go_wd | turn;
         o_fs_set = acting & ((in_n & (((i_hard_in | i_hard_bsr) & i_rw) | (i_los_in & i_los_bsr))) | (~in_n & i_los_in));
-        ack_inc = live & ~in_n & i_tst_ack & (ack_time_q != 9'h1ff);
+        ack_inc = live & ~in_n & i_tst_ack & ~ack_done_q;
         if (live & ~in_n & i_tst_ack) begin
             seen_ack_d = 1'b1;
         end
@@ -9501,7 +9500,9 @@ module merkur_special_master__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_
         if (live & (mode_q == 2'h1) & bsr_ok) begin
             pend_up_d = 1'b1;
         end
-        ack_done_d = (ack_time_q >= reintegrate) | ((ack_time_q == reint_m1) & ack_inc);
+        if ((ack_time_q == reint_m1) & ack_inc) begin
+            ack_done_d = 1'b1;
+        end
         if (i_armed & in_n & i_frame_start & ~i_tst_in & ~i_tst_bsr) begin
             joined_d = 1'b1;
         end

@@ -56,7 +56,7 @@ module switch_ctl_props (
     wire [6:0] settle_q;
     wire [8:0] ack_time_q;
     wire [19:0] grace_q;
-    wire seen_ack_q, pend_up_q, joined_q;
+    wire seen_ack_q, pend_up_q, joined_q, busy_q, ack_done_q;
     switch_ctl dut (
         .clock(clock), .i_armed(i_armed), .i_hard_in(i_hard_in),
         .i_hard_bsr(i_hard_bsr), .i_run_in(i_run_in), .i_run_bsr(i_run_bsr),
@@ -68,7 +68,8 @@ module switch_ctl_props (
         .o_relink(o_relink), .o_tst_start(o_tst_start), .o_fs_set(o_fs_set),
         .o_grace_over(o_grace_over),
         .settle_q(settle_q), .ack_time_q(ack_time_q), .grace_q(grace_q),
-        .seen_ack_q(seen_ack_q), .pend_up_q(pend_up_q), .joined_q(joined_q)
+        .seen_ack_q(seen_ack_q), .pend_up_q(pend_up_q), .joined_q(joined_q),
+        .busy_q(busy_q), .ack_done_q(ack_done_q)
     );
 
     wire [3:0] o_input, o_bsr;
@@ -184,7 +185,12 @@ module switch_ctl_props (
 
         // Induction invariants: the block's counters are the shadow's.
         inv_settle: assert (since >= SETTLE ? settle_q == 0 : settle_q == SETTLE - since);
-        inv_acks: assert (ack_time_q == acks && seen_ack_q == (acks != 0));
+        // ack_time stops at REINTEGRATE, where ack_done is set; busy is
+        // settle != 0 (the count down tests it).
+        inv_acks: assert (ack_time_q == (acks >= REINTEGRATE ? REINTEGRATE : acks)
+                          && seen_ack_q == (acks != 0));
+        inv_ack_done: assert (ack_done_q == (acks >= REINTEGRATE));
+        inv_busy: assert (busy_q == (settle_q != 0));
         inv_pend: assert (pend_up_q == (wu_ok && o_mode == WU));
         inv_grace: assert (grace_q == grace);
         inv_joined: assert (joined_q == joined);

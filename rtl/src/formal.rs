@@ -288,6 +288,8 @@ fn switch_ctl() -> Proof {
         "seen_ack_q",
         "pend_up_q",
         "joined_q",
+        "busy_q",
+        "ack_done_q",
     ];
     Proof {
         name: "switch_ctl",

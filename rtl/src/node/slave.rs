@@ -162,6 +162,12 @@ pub struct Slave {
     ferr_owed: DFF<Bits<3>>,
     cyc_gap: Signal<Local, Bits<3>>,
     quiet: DFF<Bits<20>>,
+    /// `quiet` stands at its highest value (0xfffff) and stops there: the
+    /// test in its own register, so that the counter's bits do not each
+    /// repeat a 20-bit comparison (on a CoolRunner-II, bit k of the
+    /// counter as a T flip-flop takes 20 − k product terms with the
+    /// comparison and one without; docs/benchmarks.md).
+    quiet_max: DFF<Bit>,
     pend_fs: DFF<Bit>,
     pend_rc: DFF<Bit>,
     pend_i1: DFF<Bit>,
@@ -266,6 +272,7 @@ impl Slave {
             ferr_owed: Default::default(),
             cyc_gap: Default::default(),
             quiet: Default::default(),
+            quiet_max: Default::default(),
             pend_fs: Default::default(),
             pend_rc: Default::default(),
             pend_i1: Default::default(),
@@ -292,7 +299,7 @@ impl Logic for Slave {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, failsafe, rw, armed, quiet, pend_fs, pend_rc, pend_i1, pend_i2, act_data,
+            self, clock, failsafe, rw, armed, quiet, quiet_max, pend_fs, pend_rc, pend_i1, pend_i2, act_data,
             perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush,
             inpkt_was, fl_k, nxt
         );
@@ -476,8 +483,9 @@ impl Logic for Slave {
         // counter restarts below at every H0 that is not a good TST's: a
         // frame whose header a bit error damaged still shows the ring is
         // alive, protocol §12 rule 4).
-        if self.armed.q.val() & (self.quiet.q.val() != 0xfffff) {
+        if self.armed.q.val() & !self.quiet_max.q.val() {
             self.quiet.d.next = self.quiet.q.val() + 1;
+            self.quiet_max.d.next = self.quiet.q.val() == 0xffffe;
         }
         // New requests after the clearing: a request in the clock its
         // predecessor went out is kept.
@@ -558,6 +566,7 @@ impl Logic for Slave {
             & !(self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 2))
         {
             self.quiet.d.next = 0.into();
+            self.quiet_max.d.next = false;
         }
         if self.ferr_owed.q.val() != 0 {
             self.ferr_owed.d.next = self.ferr_owed.q.val() - 1;

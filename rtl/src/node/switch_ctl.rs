@@ -68,6 +68,8 @@ use rust_hdl::prelude::*;
 
 /// Clocks a repaired link must show ACKed TST before a WD node unwraps (2 TST periods).
 pub const REINTEGRATE_CLOCKS: u64 = 260;
+// `ack_time` (9 bits) counts up to REINTEGRATE_CLOCKS and stops there.
+const _: () = assert!(REINTEGRATE_CLOCKS < 512);
 /// Clocks after a switchbox change during which the stream controllers are
 /// not acted on (50 bit times: the receivers lock to their new lines).
 pub const SETTLE_CLOCKS: u64 = 100;
@@ -121,7 +123,6 @@ pub struct SwitchCtl {
     pub o_fs_set: Signal<Out, Bit>,
     /// Grace period over.
     pub o_grace_over: Signal<Out, Bit>,
-    reintegrate: Constant<Bits<9>>,
     reint_m1: Constant<Bits<9>>,
     settle_start: Constant<Bits<7>>,
     mode: DFF<Bits<2>>,
@@ -175,7 +176,6 @@ impl Default for SwitchCtl {
             o_tst_start: Default::default(),
             o_fs_set: Default::default(),
             o_grace_over: Default::default(),
-            reintegrate: Constant::new(REINTEGRATE_CLOCKS.to_bits()),
             reint_m1: Constant::new((REINTEGRATE_CLOCKS - 1).to_bits()),
             settle_start: Constant::new(SETTLE_CLOCKS.to_bits()),
             mode: Default::default(),
@@ -214,7 +214,10 @@ impl Logic for SwitchCtl {
         if self.grace.q.val() != 0 {
             self.grace.d.next = self.grace.q.val() - 1;
         }
-        if self.settle.q.val() != 0 {
+        // The count down tests a register, not its counter: `busy` is
+        // `settle != 0` (on a CoolRunner-II a counter's bits would each
+        // repeat the comparison's product terms; docs/benchmarks.md).
+        if self.busy.q.val() {
             self.settle.d.next = self.settle.q.val() - 1;
         }
         // `busy` is `settle != 0`, kept in its own register (issue 20: the
@@ -281,10 +284,12 @@ impl Logic for SwitchCtl {
                 | (!self.in_n.val() & self.i_los_in.val()));
         // Wrapped: the partner's ACKed TST, and a WU node's DATA header on
         // BSR after it.
+        // `ack_time` stops where `ack_done` is set, so it never passes
+        // REINTEGRATE_CLOCKS (< 511).
         self.ack_inc.next = self.live.val()
             & !self.in_n.val()
             & self.i_tst_ack.val()
-            & (self.ack_time.q.val() != 511);
+            & !self.ack_done.q.val();
         if self.live.val() & !self.in_n.val() & self.i_tst_ack.val() {
             self.seen_ack.d.next = true;
         }
@@ -296,8 +301,9 @@ impl Logic for SwitchCtl {
         }
         // `ack_done` is `ack_time >= REINTEGRATE_CLOCKS`, in its own
         // register (cleared with `ack_time` at a change, below).
-        self.ack_done.d.next = (self.ack_time.q.val() >= self.reintegrate.val())
-            | ((self.ack_time.q.val() == self.reint_m1.val()) & self.ack_inc.val());
+        if (self.ack_time.q.val() == self.reint_m1.val()) & self.ack_inc.val() {
+            self.ack_done.d.next = true;
+        }
         // Whole again (§12): at a frame boundary in mode N, armed, with no
         // TST on INPUT or BSR.
         if self.i_armed.val()
