@@ -299,9 +299,9 @@ impl Logic for Slave {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, failsafe, rw, armed, quiet, quiet_max, pend_fs, pend_rc, pend_i1, pend_i2, act_data,
-            perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush,
-            inpkt_was, fl_k, nxt
+            self, clock, failsafe, rw, armed, quiet, quiet_max, pend_fs, pend_rc, pend_i1, pend_i2,
+            act_data, perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc,
+            sw_flush, inpkt_was, fl_k, nxt
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();

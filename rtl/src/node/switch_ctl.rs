@@ -286,10 +286,8 @@ impl Logic for SwitchCtl {
         // BSR after it.
         // `ack_time` stops where `ack_done` is set, so it never passes
         // REINTEGRATE_CLOCKS (< 511).
-        self.ack_inc.next = self.live.val()
-            & !self.in_n.val()
-            & self.i_tst_ack.val()
-            & !self.ack_done.q.val();
+        self.ack_inc.next =
+            self.live.val() & !self.in_n.val() & self.i_tst_ack.val() & !self.ack_done.q.val();
         if self.live.val() & !self.in_n.val() & self.i_tst_ack.val() {
             self.seen_ack.d.next = true;
         }
