@@ -43,6 +43,7 @@ use std::path::Path;
 use serde_json::{json, Map, Value};
 
 use super::fpga::{read_json, run_tool_status};
+use super::xc2_blocks::Graph;
 
 /// Signals one macrocell's product terms may read: a function block's ZIA
 /// inputs (Xilinx DS090), the limit Yosys' `abc -sop -I 40` keeps.
@@ -105,14 +106,10 @@ pub struct Recovered {
 /// was (`Err` with the reason; the caller keeps Yosys' cover).
 pub fn recover(dir: &Path) -> Result<Recovered, String> {
     let mut netlist = read_json(dir, "top.json")?;
-    let top = netlist["modules"]["merkur_top"]
-        .as_object_mut()
-        .ok_or("top.json has no module merkur_top")?;
-    let cells = top["cells"]
-        .as_object()
-        .ok_or("top.json: merkur_top has no cells")?;
-    let mcs = macrocells(cells);
-    let before = cells.values().filter(|c| c["type"] == "ANDTERM").count();
+    let g = Graph::new(&netlist).ok_or("top.json has no module merkur_top with cells")?;
+    let before = g.cells.values().filter(|c| c["type"] == "ANDTERM").count();
+    let mut next_bit = max_bit(&g) + 1;
+    let mcs = macrocells(&netlist);
     let mut funcs = Vec::new();
     for (k, mc) in mcs.iter().enumerate() {
         funcs.push(Func {
@@ -134,9 +131,10 @@ pub fn recover(dir: &Path) -> Result<Recovered, String> {
         pterms_after: before,
         ..Default::default()
     };
-    let mut next_bit = max_bit(top) + 1;
     let mut changed: HashMap<&str, &Macrocell> = HashMap::new();
-    let cells = top["cells"].as_object_mut().expect("checked above");
+    let cells = netlist["modules"]["merkur_top"]["cells"]
+        .as_object_mut()
+        .ok_or("top.json: merkur_top has no cells")?;
     for (k, mc) in mcs.iter().enumerate() {
         let same = covers.get(&format!("s{k}"));
         let other = covers.get(&format!("x{k}"));
@@ -163,7 +161,7 @@ pub fn recover(dir: &Path) -> Result<Recovered, String> {
         }
         changed.insert(&mc.xor, mc);
     }
-    prove(dir, cells, &changed)?;
+    prove(dir, &netlist, &changed)?;
     std::fs::write(dir.join("top.json"), netlist.to_string())
         .map_err(|e| format!("cannot write top.json: {e}"))?;
     Ok(out)
@@ -187,20 +185,16 @@ fn abc_covers(dir: &Path, model: &str) -> Result<HashMap<String, Cover>, String>
 }
 
 /// Proves with ABC's `cec` that each changed macrocell of the rewritten
-/// `cells` (read again from the netlist, as the fitter will read it)
+/// `netlist` (read again, as the fitter will read it)
 /// gives its register the same next state as before: the same function
 /// for a register that kept its mode, that function xor the register's
 /// output for one that changed it (D to T or back, as the rewritten
 /// netlist has the register).
-fn prove(
-    dir: &Path,
-    cells: &Map<String, Value>,
-    changed: &HashMap<&str, &Macrocell>,
-) -> Result<(), String> {
+fn prove(dir: &Path, netlist: &Value, changed: &HashMap<&str, &Macrocell>) -> Result<(), String> {
     if changed.is_empty() {
         return Ok(());
     }
-    let now: HashMap<String, Macrocell> = macrocells(cells)
+    let now: HashMap<String, Macrocell> = macrocells(netlist)
         .into_iter()
         .filter(|m| changed.contains_key(m.xor.as_str()))
         .map(|m| (m.xor.clone(), m))
@@ -259,76 +253,46 @@ fn constant(c: &Cover) -> bool {
     c.cubes.is_empty() || c.cubes.iter().any(|q| q.is_empty())
 }
 
-fn bits(v: &Value) -> Vec<Option<u64>> {
-    v.as_array()
-        .map(|a| a.iter().map(Value::as_u64).collect())
-        .unwrap_or_default()
+/// The net bits of a connection; `None` when one is a constant.
+fn nets(v: &Value) -> Option<Vec<u64>> {
+    v.as_array()?.iter().map(Value::as_u64).collect()
 }
 
-fn max_bit(top: &Map<String, Value>) -> u64 {
-    let mut m = 1;
-    for c in top["cells"]
-        .as_object()
-        .into_iter()
-        .flat_map(|c| c.values())
-    {
-        for v in c["connections"]
-            .as_object()
-            .into_iter()
-            .flat_map(|c| c.values())
-        {
-            m = m.max(bits(v).into_iter().flatten().max().unwrap_or(0));
-        }
-    }
-    for n in top["netnames"]
-        .as_object()
-        .into_iter()
-        .flat_map(|c| c.values())
-    {
-        m = m.max(bits(&n["bits"]).into_iter().flatten().max().unwrap_or(0));
-    }
-    m
+/// The highest net bit of the netlist, so that new nets can follow it.
+fn max_bit(g: &Graph) -> u64 {
+    g.driver
+        .keys()
+        .chain(g.readers.keys())
+        .chain(g.names.keys())
+        .copied()
+        .max()
+        .unwrap_or(1)
 }
 
-/// The macrocells whose sum of products can be read: every bit a net (not
-/// a constant), every product term and OR term read once.
-fn macrocells(cells: &Map<String, Value>) -> Vec<Macrocell> {
-    let mut driver: HashMap<u64, &str> = HashMap::new();
-    let mut readers: HashMap<u64, Vec<(&str, &str)>> = HashMap::new();
-    for (name, c) in cells {
-        for (port, dir) in c["port_directions"].as_object().into_iter().flatten() {
-            for b in bits(&c["connections"][port]).into_iter().flatten() {
-                if dir == "output" {
-                    driver.insert(b, name);
-                } else {
-                    readers.entry(b).or_default().push((name, port));
-                }
-            }
-        }
-    }
-    let one = |c: &str| -> Option<u64> {
-        let out = bits(&cells[c]["connections"]["OUT"]);
-        match out[..] {
-            [Some(b)] if readers.get(&b).map_or(0, Vec::len) == 1 => Some(b),
-            _ => None,
-        }
+/// The macrocells of `merkur_top` whose sum of products can be read:
+/// every bit a net (not a constant), every product term and OR term read
+/// once.
+fn macrocells(netlist: &Value) -> Vec<Macrocell> {
+    let Some(g) = Graph::new(netlist) else {
+        return Vec::new();
+    };
+    // A cell whose one output is read once.
+    let once = |c: &str| match g.port(c, "OUT")[..] {
+        [b] => g.readers.get(&b).map_or(0, Vec::len) == 1,
+        _ => false,
     };
     let term = |b: Option<u64>| -> Option<(String, Vec<Lit>)> {
-        let name = *driver.get(&b?)?;
-        let c = &cells[name];
-        if c["type"] != "ANDTERM" || one(name).is_none() {
+        let name = *g.driver.get(&b?)?;
+        if g.kind(name) != "ANDTERM" || !once(name) {
             return None;
         }
-        let mut lits = Vec::new();
-        for (port, pol) in [("IN", true), ("IN_B", false)] {
-            for b in bits(&c["connections"][port]) {
-                lits.push((b?, pol));
-            }
-        }
+        let conn = &g.cells[name]["connections"];
+        let mut lits: Vec<Lit> = nets(&conn["IN"])?.into_iter().map(|b| (b, true)).collect();
+        lits.extend(nets(&conn["IN_B"])?.into_iter().map(|b| (b, false)));
         Some((name.to_string(), lits))
     };
     let mut out = Vec::new();
-    'mc: for (name, c) in cells {
+    'mc: for (name, c) in g.cells {
         if c["type"] != "MACROCELL_XOR" {
             continue;
         }
@@ -344,13 +308,17 @@ fn macrocells(cells: &Map<String, Value>) -> Vec<Macrocell> {
                 .is_some_and(|s| s.contains('1')),
             reg: None,
         };
-        if let Some(b) = bits(&conn["IN_ORTERM"]).first() {
-            let Some(&or) = b.and_then(|b| driver.get(&b)) else {
+        if let Some(b) = conn["IN_ORTERM"].as_array().and_then(|a| a.first()) {
+            let Some(&or) = b.as_u64().and_then(|b| g.driver.get(&b)) else {
                 continue;
             };
-            if cells[or]["type"] == "ORTERM" && one(or).is_some() {
-                for b in bits(&cells[or]["connections"]["IN"]) {
-                    let Some((t, lits)) = term(b) else {
+            if g.kind(or) == "ORTERM" && once(or) {
+                for b in g.cells[or]["connections"]["IN"]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                {
+                    let Some((t, lits)) = term(b.as_u64()) else {
                         continue 'mc;
                     };
                     mc.terms.push(t);
@@ -358,30 +326,33 @@ fn macrocells(cells: &Map<String, Value>) -> Vec<Macrocell> {
                 }
                 mc.or = Some(or.to_string());
             } else {
-                let Some((t, lits)) = term(*b) else { continue };
+                let Some((t, lits)) = term(b.as_u64()) else {
+                    continue;
+                };
                 mc.terms.push(t);
                 mc.cubes.push(lits);
             }
         }
-        if let Some(b) = bits(&conn["IN_PTC"]).first() {
-            let Some((t, lits)) = term(*b) else { continue };
+        if let Some(b) = conn["IN_PTC"].as_array().and_then(|a| a.first()) {
+            let Some((t, lits)) = term(b.as_u64()) else {
+                continue;
+            };
             mc.terms.push(t);
             mc.ptc = Some(lits);
         }
+        let [out_bit] = g.port(name, "OUT")[..] else {
+            continue;
+        };
         if mc.terms.is_empty() {
             continue;
         }
-        let Some(Some(out_bit)) = bits(&conn["OUT"]).first().copied() else {
-            continue;
-        };
-        if let Some([(reg, port)]) = readers.get(&out_bit).map(Vec::as_slice) {
-            let kind = cells[*reg]["type"].as_str().unwrap_or("");
-            let t = match (kind, *port) {
+        if let Some([(reg, port)]) = g.readers.get(&out_bit).map(Vec::as_slice) {
+            let t = match (g.kind(reg), *port) {
                 ("FDCP" | "FDCP_N", "D") => Some(false),
                 ("FTCP" | "FTCP_N", "T") => Some(true),
                 _ => None,
             };
-            if let (Some(t), Some(Some(q))) = (t, bits(&cells[*reg]["connections"]["Q"]).first()) {
+            if let (Some(t), [q]) = (t, g.port(reg, "Q").as_slice()) {
                 mc.reg = Some((reg.to_string(), *q, t));
             }
         }
@@ -664,6 +635,12 @@ endmodule
         dir
     }
 
+    fn and_terms(dir: &Path) -> usize {
+        let j = read_json(dir, "top.json").unwrap();
+        let cells = j["modules"]["merkur_top"]["cells"].as_object().unwrap();
+        cells.values().filter(|c| c["type"] == "ANDTERM").count()
+    }
+
     fn registers(dir: &Path) -> (usize, usize) {
         let j = read_json(dir, "top.json").unwrap();
         let cells = j["modules"]["merkur_top"]["cells"].as_object().unwrap();
@@ -678,21 +655,16 @@ endmodule
     fn counters_become_t_flip_flops() {
         let dir = mapped("counters");
         let (d0, t0) = registers(&dir);
+        let terms_before = and_terms(&dir);
         let r = recover(&dir).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(r.pterms_before, terms_before);
         let (d1, t1) = registers(&dir);
         assert_eq!(d0 + t0, 30, "the design's 30 registers");
         assert_eq!(t1, t0 + r.to_t - r.to_d);
         assert_eq!(d1 + t1, d0 + t0);
         assert!(r.to_t >= 12, "the up-counter's bits at least: {r:?}");
-        assert!(r.pterms_after < r.pterms_before, "{r:?}");
-        let j = read_json(&dir, "top.json").unwrap();
-        let terms = j["modules"]["merkur_top"]["cells"]
-            .as_object()
-            .unwrap()
-            .values()
-            .filter(|c| c["type"] == "ANDTERM")
-            .count();
-        assert_eq!(terms, r.pterms_after);
+        assert_eq!(and_terms(&dir), r.pterms_after);
+        assert!(r.pterms_after < terms_before, "{r:?}");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
@@ -704,21 +676,17 @@ endmodule
         let dir = mapped("wrong");
         recover(&dir).unwrap_or_else(|e| panic!("{e}"));
         let j = read_json(&dir, "top.json").unwrap();
-        let cells = j["modules"]["merkur_top"]["cells"]
-            .as_object()
-            .unwrap()
-            .clone();
-        let mcs = macrocells(&cells);
+        let mcs = macrocells(&j);
         let mc = mcs
             .iter()
             .find(|m| m.reg.as_ref().is_some_and(|r| r.2))
             .expect("a T register");
         let mut changed = HashMap::new();
         changed.insert(mc.xor.as_str(), mc);
-        prove(&dir, &cells, &changed).expect("the netlist as written is its own function");
+        prove(&dir, &j, &changed).expect("the netlist as written is its own function");
 
-        let mut swapped = cells.clone();
-        let t = &mut swapped[mc.terms[0].as_str()]["connections"];
+        let mut swapped = j.clone();
+        let t = &mut swapped["modules"]["merkur_top"]["cells"][mc.terms[0].as_str()]["connections"];
         let (a, b) = (t["IN"].clone(), t["IN_B"].clone());
         t["IN"] = b;
         t["IN_B"] = a;
@@ -727,9 +695,12 @@ endmodule
             "inverted literals proven"
         );
 
-        let mut moded = cells.clone();
+        let mut moded = j.clone();
         let reg = &mc.reg.as_ref().unwrap().0;
-        switch_mode(&mut moded[reg.as_str()], true);
+        switch_mode(
+            &mut moded["modules"]["merkur_top"]["cells"][reg.as_str()],
+            true,
+        );
         assert!(
             prove(&dir, &moded, &changed).is_err(),
             "a T cover on a D register proven"
