@@ -214,9 +214,9 @@ impl Logic for SwitchCtl {
         if self.grace.q.val() != 0 {
             self.grace.d.next = self.grace.q.val() - 1;
         }
-        // The count down tests a register, not its counter: `busy` is
-        // `settle != 0` (on a CoolRunner-II a counter's bits would each
-        // repeat the comparison's product terms; docs/benchmarks.md).
+        // Counts down while `busy` (below), not while a 7-bit test of its
+        // own value holds: on a CoolRunner-II each of its bits would repeat
+        // that test's product terms (docs/benchmarks.md).
         if self.busy.q.val() {
             self.settle.d.next = self.settle.q.val() - 1;
         }
@@ -285,7 +285,7 @@ impl Logic for SwitchCtl {
         // Wrapped: the partner's ACKed TST, and a WU node's DATA header on
         // BSR after it.
         // `ack_time` stops where `ack_done` is set, so it never passes
-        // REINTEGRATE_CLOCKS (< 511).
+        // REINTEGRATE_CLOCKS (< 512, checked above).
         self.ack_inc.next =
             self.live.val() & !self.in_n.val() & self.i_tst_ack.val() & !self.ack_done.q.val();
         if self.live.val() & !self.in_n.val() & self.i_tst_ack.val() {
