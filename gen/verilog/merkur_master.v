@@ -1690,6 +1690,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     reg  swc__i_in_pkt;
     reg  swc__i_tst_in;
     reg  swc__i_tst_bsr;
+    reg  swc__i_fwd;
     wire  [1:0] swc__o_mode;
     wire  swc__o_change;
     wire  swc__o_relink;
@@ -1802,8 +1803,6 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     reg  h0_rwc_q;
     reg  sw_flush_d;
     reg  sw_flush_q;
-    reg  inpkt_was_d;
-    reg  inpkt_was_q;
     reg  armed_d;
     reg  armed_q;
     reg  [2:0] last_cyc_d;
@@ -1883,6 +1882,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         .i_tst_in(swc__i_tst_in),
         .i_tst_bsr(swc__i_tst_bsr),
         .i_cs_timeout(i_cs_timeout),
+        .i_fwd(swc__i_fwd),
         .o_mode(swc__o_mode),
         .o_change(swc__o_change),
         .o_relink(swc__o_relink),
@@ -2032,7 +2032,6 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         ferr_owed_d = ferr_owed_q;
         h0_rwc_d = h0_rwc_q;
         sw_flush_d = sw_flush_q;
-        inpkt_was_d = inpkt_was_q;
         fl_k_d = fl_k_q;
         nxt_d = nxt_q;
         wrapped = swc__o_mode != 2'h0;
@@ -2204,8 +2203,8 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         swc__i_rw = rw_q;
         swc__i_fs = failsafe_q;
         swc__i_tst_ack = rx_bsr__o_tst & rx_bsr__o_ack;
-        swc__i_frame_start = inpkt_was_q & ~rx_in__o_inpkt;
-        inpkt_was_d = rx_in__o_inpkt;
+        swc__i_fwd = 1'b1;
+        swc__i_frame_start = 1'b0;
         swc__i_in_pkt = rx_in__o_inpkt;
         swc__i_tst_in = rx_in__o_tst;
         swc__i_tst_bsr = rx_bsr__o_tst;
@@ -2275,8 +2274,6 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     always @(posedge clock) h0_rwc_q <= h0_rwc_d;
     initial sw_flush_q = 1'h0;
     always @(posedge clock) sw_flush_q <= sw_flush_d;
-    initial inpkt_was_q = 1'h0;
-    always @(posedge clock) inpkt_was_q <= inpkt_was_d;
     initial armed_q = 1'h0;
     always @(posedge clock) armed_q <= armed_d;
     initial last_cyc_q = 3'h0;
@@ -6792,7 +6789,7 @@ module merkur_master__node__sbox(i_mode,i_pi,i_si,i_output,i_bss,o_input,o_bsr,o
 
 endmodule // merkur_master__node__sbox
 // --------------------------------------------------------------------------
-// `swc`: SwitchPipe, [`SwitchCtl`] between two rows of flip-flops, as the nodes use it: the receivers' reports (loss of signal, channel failures, ACKed TST, frame boundaries, DATA headers on BSR) are registered on the way in and the decisions on the way out, so that a recovered bit, the decision it leads to and what the node does with it (switchbox, dark time, TST generator, failsafe, RECONFIG alarm) are three clocks, not one long path (issue 20). The mode, the change and its companions leave together, so the node sees one consistent decision, two clocks (one bit time) after the report that caused it. Ports as [`SwitchCtl`]; `i_armed`, `i_rw`, `i_fs` and `i_cs_timeout` (node registers and a static value) go in directly. (rtl/src/node/switch_ctl.rs)
+// `swc`: SwitchPipe, [`SwitchCtl`] between two rows of flip-flops, as the nodes use it: the receivers' reports (loss of signal, channel failures, ACKed TST, frame boundaries, DATA headers on BSR) are registered on the way in and the decisions on the way out, so that a recovered bit, the decision it leads to and what the node does with it (switchbox, dark time, TST generator, failsafe, RECONFIG alarm) are three clocks, not one long path (issue 20). The mode, the change and its companions leave together, so the node sees one consistent decision, two clocks (one bit time) after the report that caused it. Ports as [`SwitchCtl`]; `i_armed`, `i_rw`, `i_fs` and `i_cs_timeout` (node registers and a static value) go in directly.  A node that forwards INPUT to OUTPUT (`i_fwd`: a slave, a master, a backup that is not the clock base) has its frame boundary where its OUTPUT has sent a packet's last bit, [`DRAIN_CLOCKS`] after the packet ended on INPUT (`i_in_pkt` falling), and counts the packet as arriving until then: a WD end that unwraps, or a WU end that waits for the frame coming the long way round, does not cut that frame's last word (protocol §12). The clock base (`i_fwd` = 0) sends its own frames: its boundary is `i_frame_start`.  ```text i_in_pkt     ‾‾‾‾\_______________________ OUTPUT       =frame====\_________________   (the forwarder's last bits) frame bound. ______________________/‾\____   DRAIN_CLOCKS + 1 after i_in_pkt fell ``` (rtl/src/node/switch_ctl.rs)
 //
 // # switch_ctl — a node's switchbox decisions (protocol §10, §12)
 //
@@ -6840,9 +6837,9 @@ endmodule // merkur_master__node__sbox
 // | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
 // | `i_fs` | in | 1 | clock | the node is in failsafe |
 // | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
-// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
+// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there and OUTPUT has sent it, [`SwitchPipe`]); the special master's period tick |
 // | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
-// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT (a slave: or OUTPUT is still sending it, [`SwitchPipe`]) |
 // | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 // | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 // | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
@@ -6860,7 +6857,7 @@ endmodule // merkur_master__node__sbox
 // o_mode    ==N===X==WU====
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__node__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
+module merkur_master__node__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,i_fwd,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
 
     // Module arguments
     input wire  clock;
@@ -6880,12 +6877,16 @@ module merkur_master__node__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_ru
     input wire  i_tst_in;
     input wire  i_tst_bsr;
     input wire  [19:0] i_cs_timeout;
+    input wire  i_fwd;
     output reg  [1:0] o_mode;
     output reg  o_change;
     output reg  o_relink;
     output reg  o_tst_start;
     output reg  o_fs_set;
     output reg  o_grace_over;
+
+    // Constant declarations
+    localparam  drain_start = 5'b10100;
 
     // Registers and child block ports
     reg  ctl__i_hard_in;
@@ -6930,6 +6931,10 @@ module merkur_master__node__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_ru
     reg  tst_in_q;
     reg  tst_bsr_d;
     reg  tst_bsr_q;
+    reg  [4:0] drain_d;
+    reg  [4:0] drain_q;
+    reg  out_end_d;
+    reg  out_end_q;
     reg  [1:0] mode_d;
     reg  [1:0] mode_q;
     reg  change_d;
@@ -6984,6 +6989,8 @@ module merkur_master__node__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_ru
         in_pkt_d = in_pkt_q;
         tst_in_d = tst_in_q;
         tst_bsr_d = tst_bsr_q;
+        drain_d = drain_q;
+        out_end_d = out_end_q;
         mode_d = mode_q;
         change_d = change_q;
         relink_d = relink_q;
@@ -7009,9 +7016,20 @@ module merkur_master__node__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_ru
         ctl__i_los_in = los_in_q;
         ctl__i_los_bsr = los_bsr_q;
         ctl__i_tst_ack = tst_ack_q;
+        if (i_in_pkt) begin
+            drain_d = drain_start;
+        end
+        else if (drain_q != 5'h0) begin
+            drain_d = drain_q - 5'h1;
+        end
+        out_end_d = (drain_q == 5'h1) & ~i_in_pkt;
         ctl__i_frame_start = frame_start_q;
-        ctl__i_bsr_data = bsr_data_q;
         ctl__i_in_pkt = in_pkt_q;
+        if (i_fwd) begin
+            ctl__i_frame_start = out_end_q;
+            ctl__i_in_pkt = in_pkt_q | (drain_q != 5'h0);
+        end
+        ctl__i_bsr_data = bsr_data_q;
         ctl__i_tst_in = tst_in_q;
         ctl__i_tst_bsr = tst_bsr_q;
         mode_d = ctl__o_mode;
@@ -7053,6 +7071,10 @@ module merkur_master__node__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_ru
     always @(posedge clock) tst_in_q <= tst_in_d;
     initial tst_bsr_q = 1'h0;
     always @(posedge clock) tst_bsr_q <= tst_bsr_d;
+    initial drain_q = 5'h0;
+    always @(posedge clock) drain_q <= drain_d;
+    initial out_end_q = 1'h0;
+    always @(posedge clock) out_end_q <= out_end_d;
     initial mode_q = 2'h0;
     always @(posedge clock) mode_q <= mode_d;
     initial change_q = 1'h0;
@@ -7115,9 +7137,9 @@ endmodule // merkur_master__node__swc
 // | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
 // | `i_fs` | in | 1 | clock | the node is in failsafe |
 // | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
-// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
+// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there and OUTPUT has sent it, [`SwitchPipe`]); the special master's period tick |
 // | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
-// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT (a slave: or OUTPUT is still sending it, [`SwitchPipe`]) |
 // | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 // | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 // | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |

@@ -64,7 +64,9 @@
 // bits until its H1 shows it is DATA; every other packet is dropped there
 // (the SM's own SEC coming back, the remains of a TST that a node in mode
 // N cut, a fragment), so nothing but frames circulates on the secondary
-// ring, a closed loop through the pass-throughs; a SEC is sent at the
+// ring, a closed loop through the pass-throughs (while BSR is dark behind a
+// relayed frame the held bits go out on the node's own timing, so a dark
+// gap behind the frame does not cut its tail); a SEC is sent at the
 // cycle's start only when the last returned frame had RWC = 0 (protocol
 // §8).
 //
@@ -307,6 +309,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  swc__i_in_pkt;
     reg  swc__i_tst_in;
     reg  swc__i_tst_bsr;
+    reg  swc__i_fwd;
     wire  [1:0] swc__o_mode;
     wire  swc__o_change;
     wire  swc__o_relink;
@@ -333,6 +336,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  relay_q;
     reg  rlast_d;
     reg  rlast_q;
+    reg  [1:0] rdead_d;
+    reg  [1:0] rdead_q;
     wire  [15:0] mdb__o_wb_dat;
     wire  mdb__o_wb_ack;
     reg  mdb__i_fs;
@@ -571,8 +576,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  fwd_cut_q;
     reg  rep_cut_d;
     reg  rep_cut_q;
-    reg  inpkt_was_d;
-    reg  inpkt_was_q;
     reg  [11:0] crit__read_address;
     wire  crit__read_data;
     reg  [11:0] crit__write_address;
@@ -630,6 +633,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  rw;
     reg  [1:0] bss_pair;
     reg  unwrap_at;
+    reg  rsyn;
+    reg  rshift;
     reg  [3:0] w_rn;
     reg  rx_seq;
     reg  [3:0] rx_rsn;
@@ -824,6 +829,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_tst_in(swc__i_tst_in),
         .i_tst_bsr(swc__i_tst_bsr),
         .i_cs_timeout(i_cs_timeout),
+        .i_fwd(swc__i_fwd),
         .o_mode(swc__o_mode),
         .o_change(swc__o_change),
         .o_relink(swc__o_relink),
@@ -1044,6 +1050,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         rdata_d = rdata_q;
         relay_d = relay_q;
         rlast_d = rlast_q;
+        rdead_d = rdead_q;
         pend_rc_d = pend_rc_q;
         ret_rwp_d = ret_rwp_q;
         sw_flush_d = sw_flush_q;
@@ -1065,7 +1072,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         last_cyc3_d = last_cyc3_q;
         fwd_cut_d = fwd_cut_q;
         rep_cut_d = rep_cut_q;
-        inpkt_was_d = inpkt_was_q;
         in_last_d = in_last_q;
         in_code_d = in_code_q;
         fs_cleared_d = fs_cleared_q;
@@ -1456,6 +1462,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         swc__i_fs = failsafe_q;
         swc__i_tst_ack = rx_bsr__o_tst & rx_bsr__o_ack;
         swc__i_frame_start = unwrap_at;
+        swc__i_fwd = ~base;
         swc__i_in_pkt = rx_in__o_inpkt;
         swc__i_tst_in = rx_in__o_tst;
         swc__i_tst_bsr = rx_bsr__o_tst;
@@ -1663,22 +1670,36 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         o_hop = hop_q;
         o_cycles = cycles_q;
         o_running = mdb__o_running;
-        rep__i_valid = rx_bsr__o_bvalid;
+        rsyn = 1'b0;
+        if (rx_bsr__o_bvalid) begin
+            rdead_d = 2'h0;
+        end
+        else if (rdead_q == 2'h2) begin
+            rdead_d = 2'h1;
+            rsyn = base & relay_q & ((rdl_q != 76'h0) | (ext & (rdx_q != 10'h0)));
+        end
+        else begin
+            rdead_d = rdead_q + 2'h1;
+        end
+        rshift = rx_bsr__o_bvalid | rsyn;
+        rep__i_valid = rshift;
         rep__i_code = rdl_q[75];
         if (ext) begin
             rep__i_code = rdx_q[9];
         end
         rep__i_phase = rx_bsr__o_phase;
-        if (rx_bsr__o_bvalid) begin
+        if (rshift) begin
             rdl_d = rdl_q << 1;
             rdx_d = rdx_q << 1;
             if (rdl_q[75]) begin
                 rdx_d = (rdx_q << 1) | 10'h1;
             end
-            if (rx_bsr__o_level != rlast_q) begin
+            if (rx_bsr__o_bvalid & (rx_bsr__o_level != rlast_q)) begin
                 rdl_d = (rdl_q << 1) | 76'h1;
             end
-            rlast_d = rx_bsr__o_level;
+            if (rx_bsr__o_bvalid) begin
+                rlast_d = rx_bsr__o_level;
+            end
             if (rcd_run_q) begin
                 rcd_d = rcd_q - 7'h1;
                 if (rcd_q == 7'h1) begin
@@ -1770,7 +1791,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
             rep_cut_d = 1'b1;
         end
         pass_code = (rx_bsr__o_level != rlast_q) | rep_cut_q;
-        inpkt_was_d = rx_in__o_inpkt;
         cyc_gap3 = rx_in__o_data[(12)+:(3)] - last_cyc3_q - 3'h1;
         cyc_take = last_cyc3_q + i_prio + 3'h1;
         if (half_q & (et_q != 20'hfffff)) begin
@@ -1839,7 +1859,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         end
         if (~base) begin
             swc__i_rw = rw_hdr_q;
-            swc__i_frame_start = inpkt_was_q & ~rx_in__o_inpkt;
         end
         if (~base) begin
             aact__write_enable = 1'b0;
@@ -1855,6 +1874,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
             end
         end
         if (~base) begin
+            rep__i_valid = rx_bsr__o_bvalid;
             rep__i_code = pass_code;
             bss_pair = rep__o_line;
             if (wrapped) begin
@@ -1902,6 +1922,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) relay_q <= relay_d;
     initial rlast_q = 1'h0;
     always @(posedge clock) rlast_q <= rlast_d;
+    initial rdead_q = 2'h0;
+    always @(posedge clock) rdead_q <= rdead_d;
     initial st_used_q = 1'h0;
     always @(posedge clock) st_used_q <= st_used_d;
     initial st_used_slot_q = 12'h0;
@@ -2014,8 +2036,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) fwd_cut_q <= fwd_cut_d;
     initial rep_cut_q = 1'h0;
     always @(posedge clock) rep_cut_q <= rep_cut_d;
-    initial inpkt_was_q = 1'h0;
-    always @(posedge clock) inpkt_was_q <= inpkt_was_d;
     initial dl0_q = 12'h0;
     always @(posedge clock) dl0_q <= dl0_d;
     initial dl1_q = 12'h0;
@@ -9033,7 +9053,7 @@ module merkur_special_master__stx__tx(clock,i_bit_en,i_code,o_take,o_line);
     always @(posedge clock) level_q <= level_d;
 endmodule // merkur_special_master__stx__tx
 // --------------------------------------------------------------------------
-// `swc`: SwitchPipe, [`SwitchCtl`] between two rows of flip-flops, as the nodes use it: the receivers' reports (loss of signal, channel failures, ACKed TST, frame boundaries, DATA headers on BSR) are registered on the way in and the decisions on the way out, so that a recovered bit, the decision it leads to and what the node does with it (switchbox, dark time, TST generator, failsafe, RECONFIG alarm) are three clocks, not one long path (issue 20). The mode, the change and its companions leave together, so the node sees one consistent decision, two clocks (one bit time) after the report that caused it. Ports as [`SwitchCtl`]; `i_armed`, `i_rw`, `i_fs` and `i_cs_timeout` (node registers and a static value) go in directly. (rtl/src/node/switch_ctl.rs)
+// `swc`: SwitchPipe, [`SwitchCtl`] between two rows of flip-flops, as the nodes use it: the receivers' reports (loss of signal, channel failures, ACKed TST, frame boundaries, DATA headers on BSR) are registered on the way in and the decisions on the way out, so that a recovered bit, the decision it leads to and what the node does with it (switchbox, dark time, TST generator, failsafe, RECONFIG alarm) are three clocks, not one long path (issue 20). The mode, the change and its companions leave together, so the node sees one consistent decision, two clocks (one bit time) after the report that caused it. Ports as [`SwitchCtl`]; `i_armed`, `i_rw`, `i_fs` and `i_cs_timeout` (node registers and a static value) go in directly.  A node that forwards INPUT to OUTPUT (`i_fwd`: a slave, a master, a backup that is not the clock base) has its frame boundary where its OUTPUT has sent a packet's last bit, [`DRAIN_CLOCKS`] after the packet ended on INPUT (`i_in_pkt` falling), and counts the packet as arriving until then: a WD end that unwraps, or a WU end that waits for the frame coming the long way round, does not cut that frame's last word (protocol §12). The clock base (`i_fwd` = 0) sends its own frames: its boundary is `i_frame_start`.  ```text i_in_pkt     ‾‾‾‾\_______________________ OUTPUT       =frame====\_________________   (the forwarder's last bits) frame bound. ______________________/‾\____   DRAIN_CLOCKS + 1 after i_in_pkt fell ``` (rtl/src/node/switch_ctl.rs)
 //
 // # switch_ctl — a node's switchbox decisions (protocol §10, §12)
 //
@@ -9081,9 +9101,9 @@ endmodule // merkur_special_master__stx__tx
 // | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
 // | `i_fs` | in | 1 | clock | the node is in failsafe |
 // | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
-// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
+// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there and OUTPUT has sent it, [`SwitchPipe`]); the special master's period tick |
 // | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
-// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT (a slave: or OUTPUT is still sending it, [`SwitchPipe`]) |
 // | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 // | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 // | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
@@ -9101,7 +9121,7 @@ endmodule // merkur_special_master__stx__tx
 // o_mode    ==N===X==WU====
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
+module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,i_fwd,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
 
     // Module arguments
     input wire  clock;
@@ -9121,12 +9141,16 @@ module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_
     input wire  i_tst_in;
     input wire  i_tst_bsr;
     input wire  [19:0] i_cs_timeout;
+    input wire  i_fwd;
     output reg  [1:0] o_mode;
     output reg  o_change;
     output reg  o_relink;
     output reg  o_tst_start;
     output reg  o_fs_set;
     output reg  o_grace_over;
+
+    // Constant declarations
+    localparam  drain_start = 5'b10100;
 
     // Registers and child block ports
     reg  ctl__i_hard_in;
@@ -9171,6 +9195,10 @@ module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_
     reg  tst_in_q;
     reg  tst_bsr_d;
     reg  tst_bsr_q;
+    reg  [4:0] drain_d;
+    reg  [4:0] drain_q;
+    reg  out_end_d;
+    reg  out_end_q;
     reg  [1:0] mode_d;
     reg  [1:0] mode_q;
     reg  change_d;
@@ -9225,6 +9253,8 @@ module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_
         in_pkt_d = in_pkt_q;
         tst_in_d = tst_in_q;
         tst_bsr_d = tst_bsr_q;
+        drain_d = drain_q;
+        out_end_d = out_end_q;
         mode_d = mode_q;
         change_d = change_q;
         relink_d = relink_q;
@@ -9250,9 +9280,20 @@ module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_
         ctl__i_los_in = los_in_q;
         ctl__i_los_bsr = los_bsr_q;
         ctl__i_tst_ack = tst_ack_q;
+        if (i_in_pkt) begin
+            drain_d = drain_start;
+        end
+        else if (drain_q != 5'h0) begin
+            drain_d = drain_q - 5'h1;
+        end
+        out_end_d = (drain_q == 5'h1) & ~i_in_pkt;
         ctl__i_frame_start = frame_start_q;
-        ctl__i_bsr_data = bsr_data_q;
         ctl__i_in_pkt = in_pkt_q;
+        if (i_fwd) begin
+            ctl__i_frame_start = out_end_q;
+            ctl__i_in_pkt = in_pkt_q | (drain_q != 5'h0);
+        end
+        ctl__i_bsr_data = bsr_data_q;
         ctl__i_tst_in = tst_in_q;
         ctl__i_tst_bsr = tst_bsr_q;
         mode_d = ctl__o_mode;
@@ -9294,6 +9335,10 @@ module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_
     always @(posedge clock) tst_in_q <= tst_in_d;
     initial tst_bsr_q = 1'h0;
     always @(posedge clock) tst_bsr_q <= tst_bsr_d;
+    initial drain_q = 5'h0;
+    always @(posedge clock) drain_q <= drain_d;
+    initial out_end_q = 1'h0;
+    always @(posedge clock) out_end_q <= out_end_d;
     initial mode_q = 2'h0;
     always @(posedge clock) mode_q <= mode_d;
     initial change_q = 1'h0;
@@ -9356,9 +9401,9 @@ endmodule // merkur_special_master__swc
 // | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
 // | `i_fs` | in | 1 | clock | the node is in failsafe |
 // | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
-// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
+// | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there and OUTPUT has sent it, [`SwitchPipe`]); the special master's period tick |
 // | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
-// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+// | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT (a slave: or OUTPUT is still sending it, [`SwitchPipe`]) |
 // | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 // | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 // | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
@@ -9907,7 +9952,9 @@ endmodule // merkur_special_master__tst__tx
 // bits until its H1 shows it is DATA; every other packet is dropped there
 // (the SM's own SEC coming back, the remains of a TST that a node in mode
 // N cut, a fragment), so nothing but frames circulates on the secondary
-// ring, a closed loop through the pass-throughs; a SEC is sent at the
+// ring, a closed loop through the pass-throughs (while BSR is dark behind a
+// relayed frame the held bits go out on the node's own timing, so a dark
+// gap behind the frame does not cut its tail); a SEC is sent at the
 // cycle's start only when the last returned frame had RWC = 0 (protocol
 // §8).
 //

@@ -88,41 +88,42 @@ fn wrap_reintegrate_and_failsafe_extended() {
 /// One slave through wrap, link test, reintegration, a second fault,
 /// failsafe and CLR, step by step (about 170 lines: one story, each step's
 /// stimulus beside its check).
-fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
+/// One slave's run through a plan of (PI, SI) segments, one per cycle
+/// period, with SI's stream `si_shift` bit times behind PI's: the modes it
+/// went through (with the bit time of each change), when it entered
+/// failsafe, and the packets its PO and SO carried.
+struct Run {
+    modes: Vec<(u64, usize)>,
+    fs_at: Option<usize>,
+    rpo: PacketReader,
+    rso: PacketReader,
+}
+
+fn run(format: WordFormat, rtx: bool, plan: &[(Seg, Seg)], si_shift: usize, rng: &mut Rng) -> Run {
     let ext = format == WordFormat::ExtendedAlarm;
-    let seed = Rng::seed(0x5a7e);
-    let mut rng = Rng::new(seed);
-    use Seg::*;
-    // (PI, SI) per cycle period.
-    let mut plan: Vec<(Seg, Seg)> = vec![];
-    plan.extend(std::iter::repeat((Frame { rwc: false }, Idle)).take(5)); // 0..4 healthy
-    plan.extend(std::iter::repeat((Dark, Frame { rwc: false })).take(5)); // 5..9 PI broken: frames come back on SI
-    plan.extend(std::iter::repeat((Tst { ack: true }, Frame { rwc: false })).take(2)); // 10,11 repaired: partner's TST
-    plan.extend(std::iter::repeat((Frame { rwc: false }, Idle)).take(5)); // 12..16 unwrapped
-    plan.extend(std::iter::repeat((Frame { rwc: true }, Idle)).take(3)); // 17..19 ring wrapped elsewhere
-    plan.extend(std::iter::repeat((Dark, Frame { rwc: true })).take(3)); // 20..22 second fault
     let (mut pi_code, mut si_code) = (vec![], vec![]);
     (0..8).for_each(|_| {
         push_group(&mut pi_code, CODE_I);
         push_group(&mut si_code, CODE_I);
     });
+    si_code.extend(std::iter::repeat(1).take(si_shift));
     for (c, (pi, si)) in plan.iter().enumerate() {
-        segment(&mut pi_code, *pi, c as u8, ext, &mut rng);
-        segment(&mut si_code, *si, c as u8, ext, &mut rng);
+        segment(&mut pi_code, *pi, c as u8, ext, rng);
+        segment(&mut si_code, *si, c as u8, ext, rng);
     }
     let pi = sample_words(&line_samples(
         &nrzi_encode(&pi_code, &mut 0),
         400.0,
         1.3,
         0.4,
-        &mut rng,
+        rng,
     ));
     let si = sample_words(&line_samples(
         &nrzi_encode(&si_code, &mut 0),
         -300.0,
         0.6,
         0.4,
-        &mut rng,
+        rng,
     ));
     let n = pi.len().min(si.len());
 
@@ -160,7 +161,7 @@ fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
     );
     let mut rpo = PacketReader::new(&mpo);
     let mut rso = PacketReader::new(&mso);
-    let mut modes = vec![];
+    let mut modes: Vec<(u64, usize)> = vec![];
     let mut fs_at = None;
     for t in 0..n {
         s.set(ipi, pi[t]);
@@ -180,6 +181,111 @@ fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
         mso.tick(sclk);
         rso.sample(&mso);
     }
+    Run {
+        modes,
+        fs_at,
+        rpo,
+        rso,
+    }
+}
+
+/// The cycles whose frame came out whole (every slot a good word) on one
+/// of these outputs, in the order they came; a frame's cycle is its slot
+/// 0's data ([`segment`]).
+fn whole_frames(outs: &[&PacketReader]) -> Vec<u16> {
+    let mut v: Vec<u16> = outs
+        .iter()
+        .flat_map(|r| r.packets.iter())
+        .filter(|p| p.1.len() == SLOTS && p.1.iter().all(|w| matches!(w, Seen::Word(..))))
+        .filter_map(|p| match p.1[0] {
+            Seen::Word(d, ..) => Some(d),
+            _ => None,
+        })
+        .collect();
+    v.sort_unstable();
+    v
+}
+
+/// Unwrapping cuts no frame (protocol §12, "Reintegration"): a WD end
+/// unwraps at a frame boundary once its OUTPUT has sent the frame's last
+/// bit, so the frame it passed last goes round whole; a WU end waits for
+/// the frame that is arriving on INPUT (the one that went the long way
+/// round) in the same way, and loses only the one whose header showed it
+/// the link is back. Every frame on PI comes out whole on PO or SO, but
+/// that one.
+#[test]
+fn unwrapping_cuts_no_frame() {
+    for format in [WordFormat::Basic, WordFormat::ExtendedAlarm] {
+        let seed = Rng::seed(0x0c07);
+        let mut rng = Rng::new(seed);
+        let ctx = format!("{format:?}, seed {seed} (MERKUR_SEED)");
+        use Seg::*;
+        let (n, wu, wd) = (
+            Mode::N.code() as u64,
+            Mode::Wu.code() as u64,
+            Mode::Wd.code() as u64,
+        );
+        let healthy = Frame { rwc: false };
+        // WD end: SI goes dark in a gap between frames (SI runs 170 bit
+        // times behind PI), then carries the partner's ACKed TST for two
+        // periods: the node unwraps at the end of a frame it sends on SO.
+        let mut plan: Vec<(Seg, Seg)> = vec![];
+        plan.extend(std::iter::repeat((healthy, Idle)).take(5));
+        plan.extend(std::iter::repeat((healthy, Dark)).take(3));
+        plan.extend(std::iter::repeat((healthy, Tst { ack: true })).take(2));
+        plan.extend(std::iter::repeat((healthy, Idle)).take(4));
+        let r = run(format, true, &plan, 170, &mut rng);
+        let seq: Vec<u64> = r.modes.iter().map(|&(m, _)| m).collect();
+        assert_eq!(seq, vec![n, wd, n], "{ctx}: WD end, modes {:?}", r.modes);
+        let all: Vec<u16> = (0..plan.len() as u16).collect();
+        assert_eq!(
+            whole_frames(&[&r.rpo, &r.rso]),
+            all,
+            "{ctx}: WD end (unwrapped at bit {}), frames whole on PO or SO",
+            r.modes[2].1
+        );
+        // WU end: PI goes dark, the frames come the long way round on SI
+        // (200 bit times behind PI, so that each still arrives when PI's
+        // next one starts), PI carries the partner's ACKed TST, then
+        // frames again: the node unwraps at the end of the frame arriving
+        // on SI (cycle 9), and loses PI's frame of cycle 10.
+        let mut plan: Vec<(Seg, Seg)> = vec![];
+        plan.extend(std::iter::repeat((healthy, Idle)).take(5));
+        plan.extend(std::iter::repeat((Dark, healthy)).take(3));
+        plan.extend(std::iter::repeat((Tst { ack: true }, healthy)).take(2));
+        plan.extend(std::iter::repeat((healthy, Idle)).take(4));
+        let r = run(format, true, &plan, 200, &mut rng);
+        let seq: Vec<u64> = r.modes.iter().map(|&(m, _)| m).collect();
+        assert_eq!(seq, vec![n, wu, n], "{ctx}: WU end, modes {:?}", r.modes);
+        let want: Vec<u16> = (0..plan.len() as u16).filter(|&c| c != 10).collect();
+        assert_eq!(
+            whole_frames(&[&r.rpo, &r.rso]),
+            want,
+            "{ctx}: WU end (unwrapped at bit {}), frames whole on PO or SO",
+            r.modes[2].1
+        );
+    }
+}
+
+fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
+    let ext = format == WordFormat::ExtendedAlarm;
+    let seed = Rng::seed(0x5a7e);
+    let mut rng = Rng::new(seed);
+    use Seg::*;
+    // (PI, SI) per cycle period.
+    let mut plan: Vec<(Seg, Seg)> = vec![];
+    plan.extend(std::iter::repeat((Frame { rwc: false }, Idle)).take(5)); // 0..4 healthy
+    plan.extend(std::iter::repeat((Dark, Frame { rwc: false })).take(5)); // 5..9 PI broken: frames come back on SI
+    plan.extend(std::iter::repeat((Tst { ack: true }, Frame { rwc: false })).take(2)); // 10,11 repaired: partner's TST
+    plan.extend(std::iter::repeat((Frame { rwc: false }, Idle)).take(5)); // 12..16 unwrapped
+    plan.extend(std::iter::repeat((Frame { rwc: true }, Idle)).take(3)); // 17..19 ring wrapped elsewhere
+    plan.extend(std::iter::repeat((Dark, Frame { rwc: true })).take(3)); // 20..22 second fault
+    let Run {
+        modes,
+        fs_at,
+        rpo,
+        rso,
+    } = run(format, rtx, &plan, 0, &mut rng);
     let ctx = format!("{format:?}, seed {seed} (MERKUR_SEED)");
     let bit = |cycle: usize| 40 + cycle * PERIOD;
     // Mode sequence: N, WU (when PI went dark), N (after the repair), WU

@@ -5,7 +5,10 @@
 //! healthy ring the secondary fibres form a closed loop through the
 //! pass-throughs; a packet the relay let through after a frame went round
 //! it for ever (found by the campaign: a repair on a 100-node ring, where
-//! such remains made the last node fail safe three laps later).
+//! such remains made the last node fail safe three laps later). A dark gap
+//! right behind a frame does not hold the frame's tail back in the relay
+//! (found by the campaign with seed 11: a reintegration's dark time behind
+//! the frame cost its last three words).
 
 use merkur_model::line::{nrzi_encode, push_group, word_code_bits, Word, CODE_I, CODE_J, CODE_K};
 use merkur_model::ring::{Frame, Header, HeaderRx, Slot};
@@ -82,6 +85,12 @@ fn the_secondary_relay_passes_frames_only() {
     sent.push(data_frame(&mut si, 4, &mut rng));
     header_only(&mut si, 0x8055, None);
     header_only(&mut si, 0x4004, Some(!0x4004));
+    // A frame with a dark gap 10 bit times behind it (an upstream node's
+    // switchbox change: 12 dark bit times, §10): it goes on whole, not
+    // held in the relay's delay line until the line comes back.
+    sent.push(data_frame(&mut si, 5, &mut rng));
+    si.truncate(si.len() - 30);
+    si.extend([0; 12]);
     idle(&mut si, 60);
     let si = sample_words(&line_samples(
         &nrzi_encode(&si, &mut 0),

@@ -156,7 +156,6 @@ pub struct Slave {
     rw: DFF<Bit>,
     h0_rwc: DFF<Bit>,
     sw_flush: DFF<Bit>,
-    inpkt_was: DFF<Bit>,
     armed: DFF<Bit>,
     last_cyc: DFF<Bits<3>>,
     ferr_owed: DFF<Bits<3>>,
@@ -266,7 +265,6 @@ impl Slave {
             rw: Default::default(),
             h0_rwc: Default::default(),
             sw_flush: Default::default(),
-            inpkt_was: Default::default(),
             armed: Default::default(),
             last_cyc: Default::default(),
             ferr_owed: Default::default(),
@@ -301,7 +299,7 @@ impl Logic for Slave {
         dff_setup!(
             self, clock, failsafe, rw, armed, quiet, quiet_max, pend_fs, pend_rc, pend_i1, pend_i2,
             act_data, perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc,
-            sw_flush, inpkt_was, fl_k, nxt
+            sw_flush, fl_k, nxt
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -589,9 +587,10 @@ impl Logic for Slave {
         self.swc.i_rw.next = self.rw.q.val();
         self.swc.i_fs.next = self.failsafe.q.val();
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
-        // A WD node unwraps between frames (the next one goes round whole).
-        self.swc.i_frame_start.next = self.inpkt_was.q.val() & !self.rx_in.o_inpkt.val();
-        self.inpkt_was.d.next = self.rx_in.o_inpkt.val();
+        // A WD node unwraps between frames, once OUTPUT has sent the one
+        // that ended on INPUT (the next one goes round whole).
+        self.swc.i_fwd.next = true;
+        self.swc.i_frame_start.next = false;
         self.swc.i_in_pkt.next = self.rx_in.o_inpkt.val();
         self.swc.i_tst_in.next = self.rx_in.o_tst.val();
         self.swc.i_tst_bsr.next = self.rx_bsr.o_tst.val();

@@ -48,7 +48,9 @@
 //! bits until its H1 shows it is DATA; every other packet is dropped there
 //! (the SM's own SEC coming back, the remains of a TST that a node in mode
 //! N cut, a fragment), so nothing but frames circulates on the secondary
-//! ring, a closed loop through the pass-throughs; a SEC is sent at the
+//! ring, a closed loop through the pass-throughs (while BSR is dark behind a
+//! relayed frame the held bits go out on the node's own timing, so a dark
+//! gap behind the frame does not cut its tail); a SEC is sent at the
 //! cycle's start only when the last returned frame had RWC = 0 (protocol
 //! §8).
 //!
@@ -282,6 +284,12 @@ pub struct SpecialMaster {
     rdata: DFF<Bit>,
     relay: DFF<Bit>,
     rlast: DFF<Bit>,
+    /// Clocks since the last bit on BSR, recovered or the relay's own.
+    rdead: DFF<Bits<2>>,
+    /// The relay sends a bit of its own (BSR dark).
+    rsyn: Signal<Local, Bit>,
+    /// The relay's delay line shifts: a recovered bit, or one of its own.
+    rshift: Signal<Local, Bit>,
     mdb: Mdb,
     store: RAM<Bits<26>, 12>,
     /// A store entry was sent: mark it not valid (in the next clock the
@@ -413,7 +421,6 @@ pub struct SpecialMaster {
     cyc_take: Signal<Local, Bits<3>>,
     fwd_cut: DFF<Bit>,
     rep_cut: DFF<Bit>,
-    inpkt_was: DFF<Bit>,
     pass_code: Signal<Local, Bit>,
     // Retransmission on demand (protocol §8): the CRIT bits (from the
     // host's configuration writes); the damaged critical slots of the
@@ -543,6 +550,9 @@ impl SpecialMaster {
             rdata: Default::default(),
             relay: Default::default(),
             rlast: Default::default(),
+            rdead: Default::default(),
+            rsyn: Default::default(),
+            rshift: Default::default(),
             mdb: Mdb::new(format),
             store: Default::default(),
             st_used: Default::default(),
@@ -633,7 +643,6 @@ impl SpecialMaster {
             cyc_take: Default::default(),
             fwd_cut: Default::default(),
             rep_cut: Default::default(),
-            inpkt_was: Default::default(),
             in_last: Default::default(),
             in_code: Default::default(),
             jk_x: Default::default(),
@@ -734,6 +743,7 @@ impl Logic for SpecialMaster {
             rdata,
             relay,
             rlast,
+            rdead,
             pend_rc,
             ret_rwp,
             sw_flush,
@@ -755,7 +765,6 @@ impl Logic for SpecialMaster {
             last_cyc3,
             fwd_cut,
             rep_cut,
-            inpkt_was,
             in_last,
             in_code,
             fs_cleared,
@@ -1291,7 +1300,11 @@ impl Logic for SpecialMaster {
         self.swc.i_rw.next = self.rw.val();
         self.swc.i_fs.next = self.failsafe.q.val();
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
+        // The clock base's frame boundary is its period tick (less the
+        // unwrap lead); a backup forwards, and its boundary is where its
+        // OUTPUT has sent the packet that ended on INPUT (SwitchPipe).
         self.swc.i_frame_start.next = self.unwrap_at.val();
+        self.swc.i_fwd.next = !self.base.val();
         self.swc.i_in_pkt.next = self.rx_in.o_inpkt.val();
         self.swc.i_tst_in.next = self.rx_in.o_tst.val();
         self.swc.i_tst_bsr.next = self.rx_bsr.o_tst.val();
@@ -1603,25 +1616,46 @@ impl Logic for SpecialMaster {
         // Secondary relay (protocol §8): a DATA frame on BSR (a wrapped
         // ring) goes on to BSS, RELAY_BITS later; the decision is taken at
         // its H1, before its J has left the delay line. A SEC start hands
-        // SO back to the SEC generator.
+        // SO back to the SEC generator. While BSR is dark (no bit in the
+        // third clock: a live line gives one every 2 clocks, 3 at most)
+        // the delay line of a relayed frame shifts on the node's own
+        // timing, a bit with no edge every other clock, until it holds no
+        // edge: a dark gap behind a frame (an upstream node's switchbox
+        // change) goes on as one, instead of holding the frame's last
+        // RELAY_BITS back until the line comes back, by when the next
+        // node has ended the packet.
+        self.rsyn.next = false;
+        if self.rx_bsr.o_bvalid.val() {
+            self.rdead.d.next = 0.into();
+        } else if self.rdead.q.val() == 2 {
+            self.rdead.d.next = 1.into();
+            self.rsyn.next = self.base.val()
+                & self.relay.q.val()
+                & ((self.rdl.q.val() != 0) | (self.ext.val() & (self.rdx.q.val() != 0)));
+        } else {
+            self.rdead.d.next = self.rdead.q.val() + 1;
+        }
+        self.rshift.next = self.rx_bsr.o_bvalid.val() | self.rsyn.val();
         self.rep.clock.next = self.clock.val();
-        self.rep.i_valid.next = self.rx_bsr.o_bvalid.val();
+        self.rep.i_valid.next = self.rshift.val();
         self.rep.i_code.next = self.rdl.q.val().get_bit(75);
         if self.ext.val() {
             self.rep.i_code.next = self.rdx.q.val().get_bit(9);
         }
         self.rep.i_phase.next = self.rx_bsr.o_phase.val();
-        if self.rx_bsr.o_bvalid.val() {
+        if self.rshift.val() {
             // The delay line holds code bits (level changes).
             self.rdl.d.next = self.rdl.q.val() << 1;
             self.rdx.d.next = self.rdx.q.val() << 1;
             if self.rdl.q.val().get_bit(75) {
                 self.rdx.d.next = (self.rdx.q.val() << 1) | 1;
             }
-            if self.rx_bsr.o_level.val() != self.rlast.q.val() {
+            if self.rx_bsr.o_bvalid.val() & (self.rx_bsr.o_level.val() != self.rlast.q.val()) {
                 self.rdl.d.next = (self.rdl.q.val() << 1) | 1;
             }
-            self.rlast.d.next = self.rx_bsr.o_level.val();
+            if self.rx_bsr.o_bvalid.val() {
+                self.rlast.d.next = self.rx_bsr.o_level.val();
+            }
             if self.rcd_run.q.val() {
                 self.rcd.d.next = self.rcd.q.val() - 1;
                 if self.rcd.q.val() == 1 {
@@ -1778,7 +1812,6 @@ impl Logic for SpecialMaster {
         }
         self.pass_code.next =
             (self.rx_bsr.o_level.val() != self.rlast.q.val()) | self.rep_cut.q.val();
-        self.inpkt_was.d.next = self.rx_in.o_inpkt.val();
         // What a header tells a master (crate::node::slave): the ring known
         // wrapped, and the frames missed since the last good one.
         self.cyc_gap3.next = self.rx_in.o_data.val().get_bits::<3>(12) - self.last_cyc3.q.val() - 1;
@@ -1921,7 +1954,6 @@ impl Logic for SpecialMaster {
         }
         if !self.base.val() {
             self.swc.i_rw.next = self.rw_hdr.q.val();
-            self.swc.i_frame_start.next = self.inpkt_was.q.val() & !self.rx_in.o_inpkt.val();
         }
         if !self.base.val() {
             // Actuator Alive, as in a master: a good word in an ACT slot
@@ -1943,6 +1975,7 @@ impl Logic for SpecialMaster {
             }
         }
         if !self.base.val() {
+            self.rep.i_valid.next = self.rx_bsr.o_bvalid.val();
             self.rep.i_code.next = self.pass_code.val();
             self.bss_pair.next = self.rep.o_line.val();
             if self.wrapped.val() {

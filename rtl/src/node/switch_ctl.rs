@@ -44,9 +44,9 @@
 //! | `i_rw` | in | 1 | clock | the node knows the ring is wrapped |
 //! | `i_fs` | in | 1 | clock | the node is in failsafe |
 //! | `i_tst_ack` | in | 1 | clock | a TST with ACK is being heard on BSR |
-//! | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there); the special master's period tick |
+//! | `i_frame_start` | in | 1 | clock | a frame boundary: between frames on INPUT (a slave: a packet ended there and OUTPUT has sent it, [`SwitchPipe`]); the special master's period tick |
 //! | `i_bsr_data` | in | 1 | clock | a good DATA H0 on BSR |
-//! | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT |
+//! | `i_in_pkt` | in | 1 | clock | a packet is arriving on INPUT (a slave: or OUTPUT is still sending it, [`SwitchPipe`]) |
 //! | `i_tst_in`, `i_tst_bsr` | in | 1 | clock | a TST was heard on INPUT, on BSR, in the last 130 bit times ([`crate::node::stream_ctl`] `o_tst`) |
 //! | `i_cs_timeout` | in | 20 | static | CS timeout, clocks |
 //! | `o_mode` | out | 2 | clock | switchbox mode (0 N, 1 WU, 2 WD), registered |
@@ -73,6 +73,16 @@ const _: () = assert!(REINTEGRATE_CLOCKS < 512);
 /// Clocks after a switchbox change during which the stream controllers are
 /// not acted on (50 bit times: the receivers lock to their new lines).
 pub const SETTLE_CLOCKS: u64 = 100;
+/// Clocks from the end of a packet on INPUT until a forwarding node's
+/// OUTPUT has sent its last bit and the frame boundary is reached (10 bit
+/// times). The packet's last bits are still in the forwarder, the retime
+/// buffer and the output register then: `unwrapping_cuts_no_frame`
+/// (sim/tests/slave_modes.rs) fails below 16 clocks. With the 12 dark bit
+/// times of the change after it, the boundary stays inside the 20-bit
+/// minimum gap plus the next frame's forwarding delay (protocol §8, §12).
+pub const DRAIN_CLOCKS: u64 = 20;
+// `drain` (5 bits) counts down from DRAIN_CLOCKS.
+const _: () = assert!(DRAIN_CLOCKS < 32);
 
 /// Switchbox decision logic.
 #[derive(LogicBlock)]
@@ -340,7 +350,22 @@ impl Logic for SwitchCtl {
 /// time) after the report that caused it. Ports as [`SwitchCtl`];
 /// `i_armed`, `i_rw`, `i_fs` and `i_cs_timeout` (node registers and a
 /// static value) go in directly.
-#[derive(LogicBlock, Default)]
+///
+/// A node that forwards INPUT to OUTPUT (`i_fwd`: a slave, a master, a
+/// backup that is not the clock base) has its frame boundary where its
+/// OUTPUT has sent a packet's last bit, [`DRAIN_CLOCKS`] after the packet
+/// ended on INPUT (`i_in_pkt` falling), and counts the packet as arriving
+/// until then: a WD end that unwraps, or a WU end that waits for the frame
+/// coming the long way round, does not cut that frame's last word
+/// (protocol §12). The clock base (`i_fwd` = 0) sends its own frames: its
+/// boundary is `i_frame_start`.
+///
+/// ```text
+/// i_in_pkt     ‾‾‾‾\_______________________
+/// OUTPUT       =frame====\_________________   (the forwarder's last bits)
+/// frame bound. ______________________/‾\____   DRAIN_CLOCKS + 1 after i_in_pkt fell
+/// ```
+#[derive(LogicBlock)]
 pub struct SwitchPipe {
     /// Core clock.
     pub clock: Signal<In, Clock>,
@@ -376,6 +401,9 @@ pub struct SwitchPipe {
     pub i_tst_bsr: Signal<In, Bit>,
     /// CS timeout, clocks.
     pub i_cs_timeout: Signal<In, Bits<20>>,
+    /// The node forwards INPUT to OUTPUT: its frame boundary is a packet's
+    /// end on OUTPUT (else `i_frame_start`).
+    pub i_fwd: Signal<In, Bit>,
     /// Switchbox mode.
     pub o_mode: Signal<Out, Bits<2>>,
     /// The mode changed at this clock's edge.
@@ -401,12 +429,70 @@ pub struct SwitchPipe {
     in_pkt: DFF<Bit>,
     tst_in: DFF<Bit>,
     tst_bsr: DFF<Bit>,
+    /// Clocks until OUTPUT has sent the packet that ended on INPUT.
+    drain: DFF<Bits<5>>,
+    /// OUTPUT has just sent a packet's last bit.
+    out_end: DFF<Bit>,
+    drain_start: Constant<Bits<5>>,
     mode: DFF<Bits<2>>,
     change: DFF<Bit>,
     relink: DFF<Bit>,
     tst_start: DFF<Bit>,
     fs_set: DFF<Bit>,
     grace_over: DFF<Bit>,
+}
+
+impl Default for SwitchPipe {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            i_armed: Default::default(),
+            i_hard_in: Default::default(),
+            i_hard_bsr: Default::default(),
+            i_run_in: Default::default(),
+            i_run_bsr: Default::default(),
+            i_los_in: Default::default(),
+            i_los_bsr: Default::default(),
+            i_rw: Default::default(),
+            i_fs: Default::default(),
+            i_tst_ack: Default::default(),
+            i_frame_start: Default::default(),
+            i_bsr_data: Default::default(),
+            i_in_pkt: Default::default(),
+            i_tst_in: Default::default(),
+            i_tst_bsr: Default::default(),
+            i_cs_timeout: Default::default(),
+            i_fwd: Default::default(),
+            o_mode: Default::default(),
+            o_change: Default::default(),
+            o_relink: Default::default(),
+            o_tst_start: Default::default(),
+            o_fs_set: Default::default(),
+            o_grace_over: Default::default(),
+            ctl: Default::default(),
+            hard_in: Default::default(),
+            hard_bsr: Default::default(),
+            run_in: Default::default(),
+            run_bsr: Default::default(),
+            los_in: Default::default(),
+            los_bsr: Default::default(),
+            tst_ack: Default::default(),
+            frame_start: Default::default(),
+            bsr_data: Default::default(),
+            in_pkt: Default::default(),
+            tst_in: Default::default(),
+            tst_bsr: Default::default(),
+            drain: Default::default(),
+            out_end: Default::default(),
+            drain_start: Constant::new(DRAIN_CLOCKS.to_bits()),
+            mode: Default::default(),
+            change: Default::default(),
+            relink: Default::default(),
+            tst_start: Default::default(),
+            fs_set: Default::default(),
+            grace_over: Default::default(),
+        }
+    }
 }
 
 impl Logic for SwitchPipe {
@@ -427,6 +513,8 @@ impl Logic for SwitchPipe {
             in_pkt,
             tst_in,
             tst_bsr,
+            drain,
+            out_end,
             mode,
             change,
             relink,
@@ -457,9 +545,21 @@ impl Logic for SwitchPipe {
         self.ctl.i_rw.next = self.i_rw.val();
         self.ctl.i_fs.next = self.i_fs.val();
         self.ctl.i_tst_ack.next = self.tst_ack.q.val();
+        // A forwarding node: OUTPUT sends a packet's last bit about
+        // DRAIN_CLOCKS after it ended on INPUT.
+        if self.i_in_pkt.val() {
+            self.drain.d.next = self.drain_start.val();
+        } else if self.drain.q.val() != 0 {
+            self.drain.d.next = self.drain.q.val() - 1;
+        }
+        self.out_end.d.next = (self.drain.q.val() == 1) & !self.i_in_pkt.val();
         self.ctl.i_frame_start.next = self.frame_start.q.val();
-        self.ctl.i_bsr_data.next = self.bsr_data.q.val();
         self.ctl.i_in_pkt.next = self.in_pkt.q.val();
+        if self.i_fwd.val() {
+            self.ctl.i_frame_start.next = self.out_end.q.val();
+            self.ctl.i_in_pkt.next = self.in_pkt.q.val() | (self.drain.q.val() != 0);
+        }
+        self.ctl.i_bsr_data.next = self.bsr_data.q.val();
         self.ctl.i_tst_in.next = self.tst_in.q.val();
         self.ctl.i_tst_bsr.next = self.tst_bsr.q.val();
         self.ctl.i_cs_timeout.next = self.i_cs_timeout.val();
