@@ -588,7 +588,8 @@ impl Logic for Slave {
         self.swc.i_fs.next = self.failsafe.q.val();
         self.swc.i_tst_ack.next = self.rx_bsr.o_tst.val() & self.rx_bsr.o_ack.val();
         // A WD node unwraps between frames, once OUTPUT has sent the one
-        // that ended on INPUT (the next one goes round whole).
+        // that ended on INPUT (SwitchPipe with `i_fwd`; `i_frame_start` is
+        // the clock base's period tick, which a slave has not).
         self.swc.i_fwd.next = true;
         self.swc.i_frame_start.next = false;
         self.swc.i_in_pkt.next = self.rx_in.o_inpkt.val();
