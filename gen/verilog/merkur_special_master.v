@@ -2912,6 +2912,10 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     reg  [1:0] wcount_q;
     reg  [11:0] slot_d;
     reg  [11:0] slot_q;
+    reg  slot_inc_d;
+    reg  slot_inc_q;
+    reg  slot_clr_d;
+    reg  slot_clr_q;
     reg  dead_d;
     reg  dead_q;
     reg  [2:0] action_d;
@@ -3054,6 +3058,8 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         gidx_d = gidx_q;
         wcount_d = wcount_q;
         slot_d = slot_q;
+        slot_inc_d = slot_inc_q;
+        slot_clr_d = slot_clr_q;
         dead_d = dead_q;
         action_d = action_q;
         rtx_d = rtx_q;
@@ -3436,6 +3442,14 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         cut = 1'b0;
         regen_d = 1'b0;
         g_pend_d = 1'b0;
+        slot_inc_d = 1'b0;
+        slot_clr_d = 1'b0;
+        if (slot_clr_q) begin
+            slot_d = 12'h0;
+        end
+        else if (slot_inc_q) begin
+            slot_d = slot_q + 12'h1;
+        end
         if (i_bvalid) begin
             prev_d = i_level;
             window_d = shifted;
@@ -3469,7 +3483,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
                 bitc_d = 3'h0;
                 gidx_d = 3'h0;
                 wcount_d = 2'h0;
-                slot_d = 12'h0;
+                slot_clr_d = 1'b1;
                 dead_d = 1'b0;
                 idles_d = 2'h0;
                 rtx_d = 1'b0;
@@ -3523,7 +3537,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             if (dg == 3'h4) begin
                 gidx_d = 3'h0;
                 if (wcount_q == 2'h2) begin
-                    slot_d = slot_q + 12'h1;
+                    slot_inc_d = 1'b1;
                     if ((slot_q == i_slots_m1) & ~rtx_q) begin
                         inpkt_d = 1'b0;
                         if (~dead_q) begin
@@ -3668,6 +3682,10 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     always @(posedge clock) wcount_q <= wcount_d;
     initial slot_q = 12'h0;
     always @(posedge clock) slot_q <= slot_d;
+    initial slot_inc_q = 1'h0;
+    always @(posedge clock) slot_inc_q <= slot_inc_d;
+    initial slot_clr_q = 1'h0;
+    always @(posedge clock) slot_clr_q <= slot_clr_d;
     initial dead_q = 1'h0;
     always @(posedge clock) dead_q <= dead_d;
     initial action_q = 3'h0;
@@ -6876,17 +6894,13 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     wire  dec__o_i;
     wire  dec__o_s;
     reg  [3:0] nib_top__address;
-    wire  [15:0] nib_top__data;
-    reg  [1:0] lo_top__address;
-    wire  [15:0] lo_top__data;
-    reg  [1:0] hi_top__address;
-    wire  [15:0] hi_top__data;
+    wire  [23:0] nib_top__data;
     reg  [2:0] gcount_d;
     reg  [2:0] gcount_q;
     reg  [1:0] idles_d;
     reg  [1:0] idles_q;
-    reg  [15:0] data_d;
-    reg  [15:0] data_q;
+    reg  [23:0] raw_d;
+    reg  [23:0] raw_q;
     reg  [3:0] reason_d;
     reg  [3:0] reason_q;
     reg  alarm0_d;
@@ -6907,6 +6921,10 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     reg  [1:0] wcount_q;
     reg  [11:0] slot_d;
     reg  [11:0] slot_q;
+    reg  slot_inc_d;
+    reg  slot_inc_q;
+    reg  slot_clr_d;
+    reg  slot_clr_q;
     reg  [1:0] ptype_d;
     reg  [1:0] ptype_q;
     reg  check_d;
@@ -6938,7 +6956,11 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
 
     // Local signals
     reg  [3:0] nib;
-    reg  [15:0] w_data;
+    reg  [15:0] data;
+    reg  [3:0] prev_nib;
+    reg  [15:0] d_lo;
+    reg  [15:0] d_hi;
+    reg  [15:0] d_mid;
     reg  w_pa;
     reg  w_pb;
     reg  w_all_data;
@@ -6960,19 +6982,11 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         .address(nib_top__address),
         .data(nib_top__data)
     );
-    merkur_special_master__rx_bsr__mon__word__lo_top lo_top(
-        .address(lo_top__address),
-        .data(lo_top__data)
-    );
-    merkur_special_master__rx_bsr__mon__word__hi_top hi_top(
-        .address(hi_top__address),
-        .data(hi_top__data)
-    );
 
     // Combinational logic
     always @(*) begin
         gcount_d = gcount_q;
-        data_d = data_q;
+        raw_d = raw_q;
         reason_d = reason_q;
         alarm0_d = alarm0_q;
         alive0_d = alive0_q;
@@ -6983,6 +6997,8 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         active_d = active_q;
         wcount_d = wcount_q;
         slot_d = slot_q;
+        slot_inc_d = slot_inc_q;
+        slot_clr_d = slot_clr_q;
         ptype_d = ptype_q;
         check_d = check_q;
         end_r_d = end_r_q;
@@ -7000,32 +7016,37 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         idles_d = idles_q;
         nib = dec__o_nibble;
         nib_top__address = dec__o_nibble;
-        lo_top__address = dec__o_nibble[(0)+:(2)];
-        hi_top__address = dec__o_nibble[(1)+:(2)];
-        w_data = (data_q >> 4) | nib_top__data;
-        if (gcount_q == 3'h0) begin
-            w_data = (data_q >> 2) | lo_top__data;
+        d_hi = raw_q[(7)+:(16)] & 16'hc000;
+        d_mid = raw_q[(6)+:(16)] & 16'h3ffc;
+        d_lo = raw_q[(4)+:(16)] & 16'h3;
+        prev_nib = raw_q[(4)+:(4)];
+        if (last_group == 3'h5) begin
+            d_lo = raw_q[(0)+:(16)] & 16'h3;
+            prev_nib = raw_q[(0)+:(4)];
         end
-        if (gcount_q == last_group) begin
-            w_data = (data_q >> 2) | hi_top__data;
-        end
-        if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
-            w_data = data_q;
-        end
+        data = d_hi | d_mid | d_lo;
         w_pa = par_a_q ^ nib[3] ^ nib[2];
         w_pb = par_b_q ^ nib[2] ^ nib[1] ^ nib[0];
         w_all_data = all_data_q & dec__o_data;
         w_all_s = all_s_q & dec__o_s;
         w_ok = w_all_data & w_pa & w_pb;
-        w_compl = compl_q & (nib == ~data_q[(0)+:(4)]);
+        w_compl = compl_q & (nib == ~prev_nib);
         if (gcount_q == 3'h0) begin
-            w_compl = nib[(0)+:(2)] == ~data_q[(0)+:(2)];
+            w_compl = nib[(0)+:(2)] == ~prev_nib[(0)+:(2)];
         end
         if (gcount_q == last_group) begin
-            w_compl = compl_q & (nib[(1)+:(2)] == ~data_q[(0)+:(2)]);
+            w_compl = compl_q & (nib[(1)+:(2)] == ~prev_nib[(1)+:(2)]);
         end
         if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
             w_compl = compl_q;
+        end
+        slot_inc_d = 1'b0;
+        slot_clr_d = 1'b0;
+        if (slot_clr_q) begin
+            slot_d = 12'h0;
+        end
+        else if (slot_inc_q) begin
+            slot_d = slot_q + 12'h1;
         end
         end_r_d = 1'b0;
         wvalid_r_d = 1'b0;
@@ -7035,7 +7056,7 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
             active_d = 1'b1;
             gcount_d = 3'h0;
             wcount_d = 2'h0;
-            slot_d = 12'h0;
+            slot_clr_d = 1'b1;
             adv_d = 1'b0;
             ptype_d = 2'h0;
             par_a_d = 1'b0;
@@ -7054,12 +7075,12 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
             if (i_idle) begin
                 idles_d = idles_q + 2'h1;
             end
-            data_d = w_data;
+            raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
                 alarm0_d = nib[3];
                 alive0_d = nib[2];
                 if (adv_q) begin
-                    slot_d = slot_q + 12'h1;
+                    slot_inc_d = 1'b1;
                     adv_d = 1'b0;
                 end
             end
@@ -7092,7 +7113,7 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
                 check_d = 1'b1;
                 if (wcount_q == 2'h0) begin
                     wcount_d = 2'h1;
-                    ptype_d = w_data[(14)+:(2)];
+                    ptype_d = nib[(1)+:(2)];
                 end
                 else if (wcount_q == 2'h1) begin
                     wcount_d = 2'h2;
@@ -7104,7 +7125,7 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         end
         if (check_q) begin
             if (kind_r_q == 2'h0) begin
-                if (~ok_r_q | alarm0_q | ((data_q[(14)+:(2)] == 2'h0) & (data_q[(0)+:(12)] != i_slots_m1))) begin
+                if (~ok_r_q | alarm0_q | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
                     hdr_bad_r_d = 1'b1;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
@@ -7118,7 +7139,7 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
                 end
                 else if ((ptype_q == 2'h3) & compl_r_q) begin
                     wcount_d = 2'h3;
-                    slot_d = 12'h0;
+                    slot_clr_d = 1'b1;
                     adv_d = 1'b0;
                 end
                 else if (ptype_q != 2'h0) begin
@@ -7135,7 +7156,7 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         o_wvalid = wvalid_r_q;
         o_kind = kind_r_q;
         o_slot = slot_q;
-        o_data = data_q;
+        o_data = data;
         o_alive = alive0_q;
         o_alarm = alarm0_q;
         o_reason = reason_r_q;
@@ -7153,8 +7174,8 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     always @(posedge clock) gcount_q <= gcount_d;
     initial idles_q = 2'h0;
     always @(posedge clock) idles_q <= idles_d;
-    initial data_q = 16'h0;
-    always @(posedge clock) data_q <= data_d;
+    initial raw_q = 24'h0;
+    always @(posedge clock) raw_q <= raw_d;
     initial reason_q = 4'h0;
     always @(posedge clock) reason_q <= reason_d;
     initial alarm0_q = 1'h0;
@@ -7175,6 +7196,10 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     always @(posedge clock) wcount_q <= wcount_d;
     initial slot_q = 12'h0;
     always @(posedge clock) slot_q <= slot_d;
+    initial slot_inc_q = 1'h0;
+    always @(posedge clock) slot_inc_q <= slot_inc_d;
+    initial slot_clr_q = 1'h0;
+    always @(posedge clock) slot_clr_q <= slot_clr_d;
     initial ptype_q = 2'h0;
     always @(posedge clock) ptype_q <= ptype_d;
     initial check_q = 1'h0;
@@ -7288,74 +7313,34 @@ module merkur_special_master__rx_bsr__mon__word__dec__rom(address,data);
 
 endmodule // merkur_special_master__rx_bsr__mon__word__dec__rom
 // --------------------------------------------------------------------------
-// `hi_top` of `merkur_special_master__rx_bsr__mon__word`: a table (rust-hdl ROM), read combinationally.
-// --------------------------------------------------------------------------
-module merkur_special_master__rx_bsr__mon__word__hi_top(address,data);
-
-    // Module arguments
-    input wire  [1:0] address;
-    output reg  [15:0] data;
-
-    // Update code (custom)
-    always @*
-    case (address)
-        2'b0: data = 16'h0;
-      2'b1: data = 16'h4000;
-      2'b10: data = 16'h8000;
-      2'b11: data = 16'hc000;
-      default: data = 16'h0;
-    endcase
-
-endmodule // merkur_special_master__rx_bsr__mon__word__hi_top
-// --------------------------------------------------------------------------
-// `lo_top` of `merkur_special_master__rx_bsr__mon__word`: a table (rust-hdl ROM), read combinationally.
-// --------------------------------------------------------------------------
-module merkur_special_master__rx_bsr__mon__word__lo_top(address,data);
-
-    // Module arguments
-    input wire  [1:0] address;
-    output reg  [15:0] data;
-
-    // Update code (custom)
-    always @*
-    case (address)
-        2'b0: data = 16'h0;
-      2'b1: data = 16'h4000;
-      2'b10: data = 16'h8000;
-      2'b11: data = 16'hc000;
-      default: data = 16'h0;
-    endcase
-
-endmodule // merkur_special_master__rx_bsr__mon__word__lo_top
-// --------------------------------------------------------------------------
 // `nib_top` of `merkur_special_master__rx_bsr__mon__word`: a table (rust-hdl ROM), read combinationally.
 // --------------------------------------------------------------------------
 module merkur_special_master__rx_bsr__mon__word__nib_top(address,data);
 
     // Module arguments
     input wire  [3:0] address;
-    output reg  [15:0] data;
+    output reg  [23:0] data;
 
     // Update code (custom)
     always @*
     case (address)
-        4'h0: data = 16'h0;
-      4'h1: data = 16'h1000;
-      4'h2: data = 16'h2000;
-      4'h3: data = 16'h3000;
-      4'h4: data = 16'h4000;
-      4'h5: data = 16'h5000;
-      4'h6: data = 16'h6000;
-      4'h7: data = 16'h7000;
-      4'h8: data = 16'h8000;
-      4'h9: data = 16'h9000;
-      4'ha: data = 16'ha000;
-      4'hb: data = 16'hb000;
-      4'hc: data = 16'hc000;
-      4'hd: data = 16'hd000;
-      4'he: data = 16'he000;
-      4'hf: data = 16'hf000;
-      default: data = 16'h0;
+        4'h0: data = 24'h0;
+      4'h1: data = 24'h100000;
+      4'h2: data = 24'h200000;
+      4'h3: data = 24'h300000;
+      4'h4: data = 24'h400000;
+      4'h5: data = 24'h500000;
+      4'h6: data = 24'h600000;
+      4'h7: data = 24'h700000;
+      4'h8: data = 24'h800000;
+      4'h9: data = 24'h900000;
+      4'ha: data = 24'ha00000;
+      4'hb: data = 24'hb00000;
+      4'hc: data = 24'hc00000;
+      4'hd: data = 24'hd00000;
+      4'he: data = 24'he00000;
+      4'hf: data = 24'hf00000;
+      default: data = 24'h0;
     endcase
 
 endmodule // merkur_special_master__rx_bsr__mon__word__nib_top
@@ -8070,17 +8055,13 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     wire  dec__o_i;
     wire  dec__o_s;
     reg  [3:0] nib_top__address;
-    wire  [15:0] nib_top__data;
-    reg  [1:0] lo_top__address;
-    wire  [15:0] lo_top__data;
-    reg  [1:0] hi_top__address;
-    wire  [15:0] hi_top__data;
+    wire  [23:0] nib_top__data;
     reg  [2:0] gcount_d;
     reg  [2:0] gcount_q;
     reg  [1:0] idles_d;
     reg  [1:0] idles_q;
-    reg  [15:0] data_d;
-    reg  [15:0] data_q;
+    reg  [23:0] raw_d;
+    reg  [23:0] raw_q;
     reg  [3:0] reason_d;
     reg  [3:0] reason_q;
     reg  alarm0_d;
@@ -8101,6 +8082,10 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     reg  [1:0] wcount_q;
     reg  [11:0] slot_d;
     reg  [11:0] slot_q;
+    reg  slot_inc_d;
+    reg  slot_inc_q;
+    reg  slot_clr_d;
+    reg  slot_clr_q;
     reg  [1:0] ptype_d;
     reg  [1:0] ptype_q;
     reg  check_d;
@@ -8132,7 +8117,11 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
 
     // Local signals
     reg  [3:0] nib;
-    reg  [15:0] w_data;
+    reg  [15:0] data;
+    reg  [3:0] prev_nib;
+    reg  [15:0] d_lo;
+    reg  [15:0] d_hi;
+    reg  [15:0] d_mid;
     reg  w_pa;
     reg  w_pb;
     reg  w_all_data;
@@ -8154,19 +8143,11 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         .address(nib_top__address),
         .data(nib_top__data)
     );
-    merkur_special_master__rx_in__mon__word__lo_top lo_top(
-        .address(lo_top__address),
-        .data(lo_top__data)
-    );
-    merkur_special_master__rx_in__mon__word__hi_top hi_top(
-        .address(hi_top__address),
-        .data(hi_top__data)
-    );
 
     // Combinational logic
     always @(*) begin
         gcount_d = gcount_q;
-        data_d = data_q;
+        raw_d = raw_q;
         reason_d = reason_q;
         alarm0_d = alarm0_q;
         alive0_d = alive0_q;
@@ -8177,6 +8158,8 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         active_d = active_q;
         wcount_d = wcount_q;
         slot_d = slot_q;
+        slot_inc_d = slot_inc_q;
+        slot_clr_d = slot_clr_q;
         ptype_d = ptype_q;
         check_d = check_q;
         end_r_d = end_r_q;
@@ -8194,32 +8177,37 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         idles_d = idles_q;
         nib = dec__o_nibble;
         nib_top__address = dec__o_nibble;
-        lo_top__address = dec__o_nibble[(0)+:(2)];
-        hi_top__address = dec__o_nibble[(1)+:(2)];
-        w_data = (data_q >> 4) | nib_top__data;
-        if (gcount_q == 3'h0) begin
-            w_data = (data_q >> 2) | lo_top__data;
+        d_hi = raw_q[(7)+:(16)] & 16'hc000;
+        d_mid = raw_q[(6)+:(16)] & 16'h3ffc;
+        d_lo = raw_q[(4)+:(16)] & 16'h3;
+        prev_nib = raw_q[(4)+:(4)];
+        if (last_group == 3'h5) begin
+            d_lo = raw_q[(0)+:(16)] & 16'h3;
+            prev_nib = raw_q[(0)+:(4)];
         end
-        if (gcount_q == last_group) begin
-            w_data = (data_q >> 2) | hi_top__data;
-        end
-        if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
-            w_data = data_q;
-        end
+        data = d_hi | d_mid | d_lo;
         w_pa = par_a_q ^ nib[3] ^ nib[2];
         w_pb = par_b_q ^ nib[2] ^ nib[1] ^ nib[0];
         w_all_data = all_data_q & dec__o_data;
         w_all_s = all_s_q & dec__o_s;
         w_ok = w_all_data & w_pa & w_pb;
-        w_compl = compl_q & (nib == ~data_q[(0)+:(4)]);
+        w_compl = compl_q & (nib == ~prev_nib);
         if (gcount_q == 3'h0) begin
-            w_compl = nib[(0)+:(2)] == ~data_q[(0)+:(2)];
+            w_compl = nib[(0)+:(2)] == ~prev_nib[(0)+:(2)];
         end
         if (gcount_q == last_group) begin
-            w_compl = compl_q & (nib[(1)+:(2)] == ~data_q[(0)+:(2)]);
+            w_compl = compl_q & (nib[(1)+:(2)] == ~prev_nib[(1)+:(2)]);
         end
         if ((gcount_q == 3'h1) & (last_group == 3'h5)) begin
             w_compl = compl_q;
+        end
+        slot_inc_d = 1'b0;
+        slot_clr_d = 1'b0;
+        if (slot_clr_q) begin
+            slot_d = 12'h0;
+        end
+        else if (slot_inc_q) begin
+            slot_d = slot_q + 12'h1;
         end
         end_r_d = 1'b0;
         wvalid_r_d = 1'b0;
@@ -8229,7 +8217,7 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
             active_d = 1'b1;
             gcount_d = 3'h0;
             wcount_d = 2'h0;
-            slot_d = 12'h0;
+            slot_clr_d = 1'b1;
             adv_d = 1'b0;
             ptype_d = 2'h0;
             par_a_d = 1'b0;
@@ -8248,12 +8236,12 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
             if (i_idle) begin
                 idles_d = idles_q + 2'h1;
             end
-            data_d = w_data;
+            raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
                 alarm0_d = nib[3];
                 alive0_d = nib[2];
                 if (adv_q) begin
-                    slot_d = slot_q + 12'h1;
+                    slot_inc_d = 1'b1;
                     adv_d = 1'b0;
                 end
             end
@@ -8286,7 +8274,7 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
                 check_d = 1'b1;
                 if (wcount_q == 2'h0) begin
                     wcount_d = 2'h1;
-                    ptype_d = w_data[(14)+:(2)];
+                    ptype_d = nib[(1)+:(2)];
                 end
                 else if (wcount_q == 2'h1) begin
                     wcount_d = 2'h2;
@@ -8298,7 +8286,7 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         end
         if (check_q) begin
             if (kind_r_q == 2'h0) begin
-                if (~ok_r_q | alarm0_q | ((data_q[(14)+:(2)] == 2'h0) & (data_q[(0)+:(12)] != i_slots_m1))) begin
+                if (~ok_r_q | alarm0_q | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
                     hdr_bad_r_d = 1'b1;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
@@ -8312,7 +8300,7 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
                 end
                 else if ((ptype_q == 2'h3) & compl_r_q) begin
                     wcount_d = 2'h3;
-                    slot_d = 12'h0;
+                    slot_clr_d = 1'b1;
                     adv_d = 1'b0;
                 end
                 else if (ptype_q != 2'h0) begin
@@ -8329,7 +8317,7 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         o_wvalid = wvalid_r_q;
         o_kind = kind_r_q;
         o_slot = slot_q;
-        o_data = data_q;
+        o_data = data;
         o_alive = alive0_q;
         o_alarm = alarm0_q;
         o_reason = reason_r_q;
@@ -8347,8 +8335,8 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     always @(posedge clock) gcount_q <= gcount_d;
     initial idles_q = 2'h0;
     always @(posedge clock) idles_q <= idles_d;
-    initial data_q = 16'h0;
-    always @(posedge clock) data_q <= data_d;
+    initial raw_q = 24'h0;
+    always @(posedge clock) raw_q <= raw_d;
     initial reason_q = 4'h0;
     always @(posedge clock) reason_q <= reason_d;
     initial alarm0_q = 1'h0;
@@ -8369,6 +8357,10 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     always @(posedge clock) wcount_q <= wcount_d;
     initial slot_q = 12'h0;
     always @(posedge clock) slot_q <= slot_d;
+    initial slot_inc_q = 1'h0;
+    always @(posedge clock) slot_inc_q <= slot_inc_d;
+    initial slot_clr_q = 1'h0;
+    always @(posedge clock) slot_clr_q <= slot_clr_d;
     initial ptype_q = 2'h0;
     always @(posedge clock) ptype_q <= ptype_d;
     initial check_q = 1'h0;
@@ -8482,74 +8474,34 @@ module merkur_special_master__rx_in__mon__word__dec__rom(address,data);
 
 endmodule // merkur_special_master__rx_in__mon__word__dec__rom
 // --------------------------------------------------------------------------
-// `hi_top` of `merkur_special_master__rx_in__mon__word`: a table (rust-hdl ROM), read combinationally.
-// --------------------------------------------------------------------------
-module merkur_special_master__rx_in__mon__word__hi_top(address,data);
-
-    // Module arguments
-    input wire  [1:0] address;
-    output reg  [15:0] data;
-
-    // Update code (custom)
-    always @*
-    case (address)
-        2'b0: data = 16'h0;
-      2'b1: data = 16'h4000;
-      2'b10: data = 16'h8000;
-      2'b11: data = 16'hc000;
-      default: data = 16'h0;
-    endcase
-
-endmodule // merkur_special_master__rx_in__mon__word__hi_top
-// --------------------------------------------------------------------------
-// `lo_top` of `merkur_special_master__rx_in__mon__word`: a table (rust-hdl ROM), read combinationally.
-// --------------------------------------------------------------------------
-module merkur_special_master__rx_in__mon__word__lo_top(address,data);
-
-    // Module arguments
-    input wire  [1:0] address;
-    output reg  [15:0] data;
-
-    // Update code (custom)
-    always @*
-    case (address)
-        2'b0: data = 16'h0;
-      2'b1: data = 16'h4000;
-      2'b10: data = 16'h8000;
-      2'b11: data = 16'hc000;
-      default: data = 16'h0;
-    endcase
-
-endmodule // merkur_special_master__rx_in__mon__word__lo_top
-// --------------------------------------------------------------------------
 // `nib_top` of `merkur_special_master__rx_in__mon__word`: a table (rust-hdl ROM), read combinationally.
 // --------------------------------------------------------------------------
 module merkur_special_master__rx_in__mon__word__nib_top(address,data);
 
     // Module arguments
     input wire  [3:0] address;
-    output reg  [15:0] data;
+    output reg  [23:0] data;
 
     // Update code (custom)
     always @*
     case (address)
-        4'h0: data = 16'h0;
-      4'h1: data = 16'h1000;
-      4'h2: data = 16'h2000;
-      4'h3: data = 16'h3000;
-      4'h4: data = 16'h4000;
-      4'h5: data = 16'h5000;
-      4'h6: data = 16'h6000;
-      4'h7: data = 16'h7000;
-      4'h8: data = 16'h8000;
-      4'h9: data = 16'h9000;
-      4'ha: data = 16'ha000;
-      4'hb: data = 16'hb000;
-      4'hc: data = 16'hc000;
-      4'hd: data = 16'hd000;
-      4'he: data = 16'he000;
-      4'hf: data = 16'hf000;
-      default: data = 16'h0;
+        4'h0: data = 24'h0;
+      4'h1: data = 24'h100000;
+      4'h2: data = 24'h200000;
+      4'h3: data = 24'h300000;
+      4'h4: data = 24'h400000;
+      4'h5: data = 24'h500000;
+      4'h6: data = 24'h600000;
+      4'h7: data = 24'h700000;
+      4'h8: data = 24'h800000;
+      4'h9: data = 24'h900000;
+      4'ha: data = 24'ha00000;
+      4'hb: data = 24'hb00000;
+      4'hc: data = 24'hc00000;
+      4'hd: data = 24'hd00000;
+      4'he: data = 24'he00000;
+      4'hf: data = 24'hf00000;
+      default: data = 24'h0;
     endcase
 
 endmodule // merkur_special_master__rx_in__mon__word__nib_top

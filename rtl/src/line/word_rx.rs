@@ -107,16 +107,20 @@ pub struct WordRx {
     /// Packet type of the current packet.
     pub o_ptype: Signal<Out, Bits<2>>,
     dec: Dec5b4b,
-    // The nibble moved to bits 15:12 (a wiring table: rust-hdl has no
+    // The nibble moved to bits 23:20 (a wiring table: rust-hdl has no
     // lint-clean zero-extending concatenation).
-    nib_top: ROM<Bits<16>, 4>,
-    lo_top: ROM<Bits<16>, 2>,
-    hi_top: ROM<Bits<16>, 2>,
+    nib_top: ROM<Bits<24>, 4>,
     last_group: Constant<Bits<3>>,
     // Word being assembled.
     gcount: DFF<Bits<3>>,
     idles: DFF<Bits<2>>,
-    data: DFF<Bits<16>>,
+    /// The word's nibbles as they arrived, the last at the top (bits
+    /// 23:20): every group shifts the register by one nibble, so each bit
+    /// takes the bit above it or holds (issue 21: no multiplexer in front
+    /// of a data bit, and the 4B/5B decoder feeds only the top nibble).
+    /// A basic word's N0 ends in bits 7:4, an extended word's in 3:0;
+    /// `o_data` is wired from the nibbles (the layout beside `data`).
+    raw: DFF<Bits<24>>,
     reason: DFF<Bits<4>>,
     alarm0: DFF<Bit>,
     alive0: DFF<Bit>,
@@ -128,6 +132,13 @@ pub struct WordRx {
     active: DFF<Bit>,
     wcount: DFF<Bits<2>>,
     slot: DFF<Bits<12>>,
+    /// The slot counter steps (`slot_inc`) or clears (`slot_clr`) in the
+    /// clock after the one that decides it, from these registers (issue
+    /// 21: so a counter bit's logic is its carry and one register, not
+    /// the whole condition again; on a CoolRunner-II a T input of two
+    /// product terms instead of a D input of 17).
+    slot_inc: DFF<Bit>,
+    slot_clr: DFF<Bit>,
     ptype: DFF<Bits<2>>,
     // Registered outputs.
     // A word was published in the clock before: check its header.
@@ -146,7 +157,16 @@ pub struct WordRx {
     hdr_bad_r: DFF<Bit>,
     // Combinational helpers.
     nib: Signal<Local, Bits<4>>,
-    w_data: Signal<Local, Bits<16>>,
+    // The word's data bits (protocol §4), wired from `raw`.
+    data: Signal<Local, Bits<16>>,
+    // The previous word's nibble this group replaces (for `o_compl`):
+    // the nibble at N0's place in `raw`.
+    prev_nib: Signal<Local, Bits<4>>,
+    // D15:D14 (the last group's middle bits), D13:D2 and D1:D0 (N0's
+    // low bits), each at its place in `data`.
+    d_lo: Signal<Local, Bits<16>>,
+    d_hi: Signal<Local, Bits<16>>,
+    d_mid: Signal<Local, Bits<16>>,
     w_pa: Signal<Local, Bit>,
     w_pb: Signal<Local, Bit>,
     w_all_data: Signal<Local, Bit>,
@@ -197,23 +217,13 @@ impl WordRx {
             dec: Default::default(),
             nib_top: ROM::new(
                 (0..16u64)
-                    .map(|n| (n.to_bits(), (n << 12).to_bits()))
-                    .collect::<BTreeMap<Bits<4>, Bits<16>>>(),
-            ),
-            lo_top: ROM::new(
-                (0..4u64)
-                    .map(|n| (n.to_bits(), (n << 14).to_bits()))
-                    .collect::<BTreeMap<Bits<2>, Bits<16>>>(),
-            ),
-            hi_top: ROM::new(
-                (0..4u64)
-                    .map(|n| (n.to_bits(), (n << 14).to_bits()))
-                    .collect::<BTreeMap<Bits<2>, Bits<16>>>(),
+                    .map(|n| (n.to_bits(), (n << 20).to_bits()))
+                    .collect::<BTreeMap<Bits<4>, Bits<24>>>(),
             ),
             last_group: Constant::new(if ext { 5u64 } else { 4u64 }.to_bits()),
             gcount: Default::default(),
             idles: Default::default(),
-            data: Default::default(),
+            raw: Default::default(),
             reason: Default::default(),
             alarm0: Default::default(),
             alive0: Default::default(),
@@ -224,6 +234,8 @@ impl WordRx {
             active: Default::default(),
             wcount: Default::default(),
             slot: Default::default(),
+            slot_inc: Default::default(),
+            slot_clr: Default::default(),
             ptype: Default::default(),
             check: Default::default(),
             end_r: Default::default(),
@@ -239,7 +251,11 @@ impl WordRx {
             own_r: Default::default(),
             hdr_bad_r: Default::default(),
             nib: Default::default(),
-            w_data: Default::default(),
+            data: Default::default(),
+            prev_nib: Default::default(),
+            d_lo: Default::default(),
+            d_hi: Default::default(),
+            d_mid: Default::default(),
             w_pa: Default::default(),
             w_pb: Default::default(),
             w_all_data: Default::default(),
@@ -256,28 +272,27 @@ impl Logic for WordRx {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, gcount, data, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
-            active, wcount, slot, ptype, check, end_r, wvalid_r, kind_r, adv, reason_r, ok_r,
-            compl, compl_r, void_r, marked_r, own_r, hdr_bad_r, idles
+            self, clock, gcount, raw, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
+            active, wcount, slot, slot_inc, slot_clr, ptype, check, end_r, wvalid_r, kind_r, adv,
+            reason_r, ok_r, compl, compl_r, void_r, marked_r, own_r, hdr_bad_r, idles
         );
         self.dec.i_code.next = self.i_group.val();
         self.nib.next = self.dec.o_nibble.val();
         self.nib_top.address.next = self.dec.o_nibble.val();
-        // The word including this group (protocol §4): N0 = {ALARM, ALIVE,
-        // D1, D0}, [ext: REASON], D[5:2], D[9:6], D[13:10], last = {PA, D15,
-        // D14, PB}. Data bits are shifted in from the top.
-        self.lo_top.address.next = self.dec.o_nibble.val().get_bits::<2>(0);
-        self.hi_top.address.next = self.dec.o_nibble.val().get_bits::<2>(1);
-        self.w_data.next = (self.data.q.val() >> 4) | self.nib_top.data.val();
-        if self.gcount.q.val() == 0 {
-            self.w_data.next = (self.data.q.val() >> 2) | self.lo_top.data.val();
+        // The word's data bits from its nibbles (protocol §4): N0 = {ALARM,
+        // ALIVE, D1, D0}, [ext: N1 = REASON], D[5:2], D[9:6], D[13:10],
+        // last = {PA, D15, D14, PB}. In `raw` D[13:2] are bits 19:8 in
+        // both formats; D1:D0 are bits 5:4 (basic) or 1:0 (extended);
+        // D15:D14 are bits 22:21.
+        self.d_hi.next = self.raw.q.val().get_bits::<16>(7) & 0xc000;
+        self.d_mid.next = self.raw.q.val().get_bits::<16>(6) & 0x3ffc;
+        self.d_lo.next = self.raw.q.val().get_bits::<16>(4) & 3;
+        self.prev_nib.next = self.raw.q.val().get_bits::<4>(4);
+        if self.last_group.val() == 5 {
+            self.d_lo.next = self.raw.q.val().get_bits::<16>(0) & 3;
+            self.prev_nib.next = self.raw.q.val().get_bits::<4>(0);
         }
-        if self.gcount.q.val() == self.last_group.val() {
-            self.w_data.next = (self.data.q.val() >> 2) | self.hi_top.data.val();
-        }
-        if (self.gcount.q.val() == 1) & (self.last_group.val() == 5) {
-            self.w_data.next = self.data.q.val();
-        }
+        self.data.next = self.d_hi.val() | self.d_mid.val() | self.d_lo.val();
         self.w_pa.next = self.par_a.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
         self.w_pb.next = self.par_b.q.val()
             ^ self.nib.val().get_bit(2)
@@ -286,24 +301,31 @@ impl Logic for WordRx {
         self.w_all_data.next = self.all_data.q.val() & self.dec.o_data.val();
         self.w_all_s.next = self.all_s.q.val() & self.dec.o_s.val();
         self.w_ok.next = self.w_all_data.val() & self.w_pa.val() & self.w_pb.val();
-        // The bits a group shifts out of the bottom of `data` are the
-        // previous word's at the places this group's bits take: comparing
-        // them group by group tells whether this word's data is the
-        // complement of the previous one's, without a copy of that word.
-        self.w_compl.next =
-            self.compl.q.val() & (self.nib.val() == !self.data.q.val().get_bits::<4>(0));
+        // The nibble a group pushes out of N0's place in `raw` is the
+        // previous word's at the place this group takes: comparing them
+        // group by group tells whether this word's data is the complement
+        // of the previous one's, without a copy of that word. Only the
+        // data bits count (not ALARM, ALIVE, REASON or the parities).
+        self.w_compl.next = self.compl.q.val() & (self.nib.val() == !self.prev_nib.val());
         if self.gcount.q.val() == 0 {
             self.w_compl.next =
-                self.nib.val().get_bits::<2>(0) == !self.data.q.val().get_bits::<2>(0);
+                self.nib.val().get_bits::<2>(0) == !self.prev_nib.val().get_bits::<2>(0);
         }
         if self.gcount.q.val() == self.last_group.val() {
             self.w_compl.next = self.compl.q.val()
-                & (self.nib.val().get_bits::<2>(1) == !self.data.q.val().get_bits::<2>(0));
+                & (self.nib.val().get_bits::<2>(1) == !self.prev_nib.val().get_bits::<2>(1));
         }
         if (self.gcount.q.val() == 1) & (self.last_group.val() == 5) {
             self.w_compl.next = self.compl.q.val();
         }
 
+        self.slot_inc.d.next = false;
+        self.slot_clr.d.next = false;
+        if self.slot_clr.q.val() {
+            self.slot.d.next = 0.into();
+        } else if self.slot_inc.q.val() {
+            self.slot.d.next = self.slot.q.val() + 1;
+        }
         self.end_r.d.next = false;
         self.wvalid_r.d.next = false;
         self.hdr_bad_r.d.next = false;
@@ -312,7 +334,7 @@ impl Logic for WordRx {
             self.active.d.next = true;
             self.gcount.d.next = 0.into();
             self.wcount.d.next = 0.into();
-            self.slot.d.next = 0.into();
+            self.slot_clr.d.next = true;
             self.adv.d.next = false;
             self.ptype.d.next = 0.into();
             self.par_a.d.next = false;
@@ -336,14 +358,15 @@ impl Logic for WordRx {
             if self.i_idle.val() {
                 self.idles.d.next = self.idles.q.val() + 1;
             }
-            self.data.d.next = self.w_data.val();
+            self.raw.d.next = (self.raw.q.val() >> 4) | self.nib_top.data.val();
             if self.gcount.q.val() == 0 {
                 self.alarm0.d.next = self.nib.val().get_bit(3);
                 self.alive0.d.next = self.nib.val().get_bit(2);
-                // The slot number moves on as the next slot word begins,
-                // so the one just published stays on `o_slot` until then.
+                // The slot number moves on as the next slot word begins
+                // (a clock later: `slot_inc`), so the one just published
+                // stays on `o_slot` until then.
                 if self.adv.q.val() {
-                    self.slot.d.next = self.slot.q.val() + 1;
+                    self.slot_inc.d.next = true;
                     self.adv.d.next = false;
                 }
             }
@@ -380,7 +403,7 @@ impl Logic for WordRx {
                 if self.wcount.q.val() == 0 {
                     // H0: its type; checked the next clock.
                     self.wcount.d.next = 1.into();
-                    self.ptype.d.next = self.w_data.val().get_bits::<2>(14);
+                    self.ptype.d.next = self.nib.val().get_bits::<2>(1);
                 } else if self.wcount.q.val() == 1 {
                     self.wcount.d.next = 2.into();
                 } else {
@@ -396,8 +419,8 @@ impl Logic for WordRx {
                 // H0: type and slot count.
                 if !self.ok_r.q.val()
                     | self.alarm0.q.val()
-                    | ((self.data.q.val().get_bits::<2>(14) == 0)
-                        & (self.data.q.val().get_bits::<12>(0) != self.i_slots_m1.val()))
+                    | ((self.data.val().get_bits::<2>(14) == 0)
+                        & (self.data.val().get_bits::<12>(0) != self.i_slots_m1.val()))
                 {
                     self.hdr_bad_r.d.next = true;
                     self.end_r.d.next = true;
@@ -413,7 +436,7 @@ impl Logic for WordRx {
                     self.active.d.next = false;
                 } else if (self.ptype.q.val() == 3) & self.compl_r.q.val() {
                     self.wcount.d.next = 3.into();
-                    self.slot.d.next = 0.into();
+                    self.slot_clr.d.next = true;
                     self.adv.d.next = false;
                 } else if self.ptype.q.val() != 0 {
                     self.end_r.d.next = true;
@@ -428,7 +451,7 @@ impl Logic for WordRx {
         self.o_wvalid.next = self.wvalid_r.q.val();
         self.o_kind.next = self.kind_r.q.val();
         self.o_slot.next = self.slot.q.val();
-        self.o_data.next = self.data.q.val();
+        self.o_data.next = self.data.val();
         self.o_alive.next = self.alive0.q.val();
         self.o_alarm.next = self.alarm0.q.val();
         self.o_reason.next = self.reason_r.q.val();

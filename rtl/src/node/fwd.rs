@@ -243,6 +243,11 @@ pub struct Fwd {
     gidx: DFF<Bits<3>>,
     wcount: DFF<Bits<2>>,
     slot: DFF<Bits<12>>,
+    /// The slot counter steps (`slot_inc`) or clears (`slot_clr`) a clock
+    /// after the stage that decides it, from these registers (issue 21,
+    /// as [`crate::line::word_rx`]'s).
+    slot_inc: DFF<Bit>,
+    slot_clr: DFF<Bit>,
     dead: DFF<Bit>,
     action: DFF<Bits<3>>,
     // Retransmission on demand (protocol §8): the packet is an RTX; the
@@ -408,6 +413,8 @@ impl Fwd {
             gidx: Default::default(),
             wcount: Default::default(),
             slot: Default::default(),
+            slot_inc: Default::default(),
+            slot_clr: Default::default(),
             dead: Default::default(),
             action: Default::default(),
             rtx: Default::default(),
@@ -512,6 +519,8 @@ impl Logic for Fwd {
             gidx,
             wcount,
             slot,
+            slot_inc,
+            slot_clr,
             dead,
             action,
             rtx,
@@ -1036,6 +1045,13 @@ impl Logic for Fwd {
         self.cut.next = false;
         self.regen.d.next = false;
         self.g_pend.d.next = false;
+        self.slot_inc.d.next = false;
+        self.slot_clr.d.next = false;
+        if self.slot_clr.q.val() {
+            self.slot.d.next = 0.into();
+        } else if self.slot_inc.q.val() {
+            self.slot.d.next = self.slot.q.val() + 1;
+        }
         // Stage A: the recovered bit.
         if self.i_bvalid.val() {
             self.prev.d.next = self.i_level.val();
@@ -1072,7 +1088,7 @@ impl Logic for Fwd {
                 self.bitc.d.next = 0.into();
                 self.gidx.d.next = 0.into();
                 self.wcount.d.next = 0.into();
-                self.slot.d.next = 0.into();
+                self.slot_clr.d.next = true;
                 self.dead.d.next = false;
                 self.idles.d.next = 0.into();
                 self.rtx.d.next = false;
@@ -1144,7 +1160,7 @@ impl Logic for Fwd {
                 // A word is complete.
                 self.gidx.d.next = 0.into();
                 if self.wcount.q.val() == 2 {
-                    self.slot.d.next = self.slot.q.val() + 1;
+                    self.slot_inc.d.next = true;
                     if (self.slot.q.val() == self.i_slots_m1.val()) & !self.rtx.q.val() {
                         self.inpkt.d.next = false;
                         if !self.dead.q.val() {
