@@ -209,6 +209,12 @@ pub fn run(p: &Proof, dir: &Path, tools: &Tools) -> Result<ProofResult, String> 
     let bin = work.join("bin");
     std::fs::create_dir_all(&bin)
         .map_err(|e| format!("error: cannot create {}: {e}", bin.display()))?;
+    // Absolute: the shim's folder goes on PATH, and SymbiYosys runs the
+    // solver from folders of its own (a relative `-o`, such as the
+    // default `merkur-prove`, left the solver not found).
+    let bin = bin
+        .canonicalize()
+        .map_err(|e| format!("error: cannot resolve {}: {e}", bin.display()))?;
     for (m, v) in &p.duts {
         write(&work.join(format!("{m}.v")), v)?;
     }
