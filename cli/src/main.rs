@@ -239,6 +239,12 @@ enum Cmd {
         /// placed freely; the counters are left out). Boards need it on.
         #[arg(long, default_value = "on", value_parser = ["on", "off"], value_name = "ON|OFF")]
         diag: String,
+        /// The sensor value's synchroniser (two flip-flops per bit): on, or off for a sensor
+        /// whose i_sensor comes from a register on the core clock (32 flip-flops fewer; a
+        /// value from another clock needs a handshake for its coherence anyway). The user
+        /// requests keep theirs.
+        #[arg(long, default_value = "on", value_parser = ["on", "off"], value_name = "ON|OFF")]
+        sensor_sync: String,
         /// Nodes built at a time (default: the machine's cores; each node's tools run one
         /// after the other in its own folder).
         #[arg(long, value_name = "N")]
@@ -594,6 +600,7 @@ fn main() -> ExitCode {
             speed,
             board,
             diag,
+            sensor_sync,
             jobs,
         } => {
             let o = synth::Opts {
@@ -607,6 +614,7 @@ fn main() -> ExitCode {
                 speed: *speed,
                 board: board.as_deref(),
                 diag: diag == "on",
+                sensor_sync: sensor_sync == "on",
                 jobs: *jobs,
             };
             match synth::run(scenario, &o) {

@@ -2664,6 +2664,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     reg  f_pb_q;
     reg  pre_home_d;
     reg  pre_home_q;
+    reg  at_home_d;
+    reg  at_home_q;
     reg  fs_r_d;
     reg  fs_r_q;
     reg  wr_r_d;
@@ -2779,6 +2781,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         f_pa_d = f_pa_q;
         f_pb_d = f_pb_q;
         pre_home_d = pre_home_q;
+        at_home_d = at_home_q;
         fs_r_d = fs_r_q;
         wr_r_d = wr_r_q;
         pre_own_d = pre_own_q;
@@ -2878,7 +2881,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         end
         fs_r_d = i_fs;
         wr_r_d = i_wrapped;
-        home_c = (wcount_q == 2'h2) & (slot_q == i_address) & ~rtx_q & ~dead_q & ~fs_r_q;
+        at_home_d = (wcount_q == 2'h2) & (slot_q == i_address);
+        home_c = at_home_q & ~rtx_q & ~dead_q & ~fs_r_q;
         rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_own_q & ~i_master & ~dead_q & ~fs_r_q;
         if (i_master) begin
             rtx_own_c = rtx_q & (wcount_q == 2'h2) & slot_q[0] & idx_ok_q & ((i_slot_cfg == 2'h1) | (i_slot_cfg == 2'h2)) & ~dead_q & ~fs_r_q;
@@ -3434,6 +3438,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     always @(posedge clock) f_pb_q <= f_pb_d;
     initial pre_home_q = 1'h0;
     always @(posedge clock) pre_home_q <= pre_home_d;
+    initial at_home_q = 1'h0;
+    always @(posedge clock) at_home_q <= at_home_d;
     initial fs_r_q = 1'h0;
     always @(posedge clock) fs_r_q <= fs_r_d;
     initial wr_r_q = 1'h0;

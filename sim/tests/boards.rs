@@ -102,6 +102,7 @@ fn every_top_level_port_is_constrained() {
         period: 330,
         rtx: Default::default(),
         diag: true,
+        sensor_sync: true,
         format: WordFormat::Basic,
     };
     for kind in [Kind::Sensor, Kind::Actuator] {

@@ -67,6 +67,7 @@ fn st(kind: Kind) -> NodeStatic {
         period: 330,
         rtx: Default::default(),
         diag: true,
+        sensor_sync: true,
         format: WordFormat::Basic,
     }
 }
@@ -308,6 +309,27 @@ fn every_synthesis_top_is_lint_clean() {
         if kind == Kind::Actuator {
             assert!(
                 lean.contains("assign o_act = act_data;") && lean.contains(".o_act_data(act_data)")
+            );
+        }
+        if kind == Kind::Sensor {
+            // The sensor value through its two-flip-flop synchroniser …
+            assert!(
+                lean.contains("sensor_m <= i_sensor;")
+                    && lean.contains("sensor <= sensor_m;")
+                    && lean.contains(".i_sensor_data(sensor)"),
+                "{lean}"
+            );
+            // … or, with `--sensor-sync off`, straight from the pins.
+            let bare = node_top(&NodeStatic {
+                diag: false,
+                sensor_sync: false,
+                ..st(kind)
+            })
+            .unwrap();
+            lint("bare-sensor", "merkur_top", &[("top.v", &bare)]);
+            assert!(
+                !bare.contains("sensor_m") && bare.contains(".i_sensor_data(i_sensor)"),
+                "{bare}"
             );
         }
     }

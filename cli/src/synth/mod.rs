@@ -291,6 +291,8 @@ pub struct Opts<'a> {
     pub board: Option<&'a str>,
     /// `--diag` (on: the diagnostic mux and the counters behind it).
     pub diag: bool,
+    /// `--sensor-sync` (on: the sensor value's synchroniser).
+    pub sensor_sync: bool,
     /// `--jobs`: nodes built at a time (`None`: the machine's cores).
     pub jobs: Option<usize>,
 }
@@ -952,6 +954,7 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
             period: cfg.period,
             rtx: synth_top::RtxStatic::of(&cfg),
             diag: o.diag,
+            sensor_sync: o.sensor_sync,
             format: if cfg.ext {
                 WordFormat::ExtendedAlarm
             } else {

@@ -281,6 +281,7 @@ pub struct Fwd {
     f_pa: DFF<Bit>,
     f_pb: DFF<Bit>,
     pre_home: DFF<Bit>,
+    at_home: DFF<Bit>,
     fs_r: DFF<Bit>,
     wr_r: DFF<Bit>,
     pre_own: DFF<Bit>,
@@ -439,6 +440,7 @@ impl Fwd {
             f_pa: Default::default(),
             f_pb: Default::default(),
             pre_home: Default::default(),
+            at_home: Default::default(),
             fs_r: Default::default(),
             wr_r: Default::default(),
             pre_own: Default::default(),
@@ -540,6 +542,7 @@ impl Logic for Fwd {
             f_pa,
             f_pb,
             pre_home,
+            at_home,
             fs_r,
             wr_r,
             pre_own,
@@ -653,11 +656,15 @@ impl Logic for Fwd {
         self.wr_r.d.next = self.i_wrapped.val();
         // Decided a clock ahead, from the word counters (issue 20: stage B
         // reads registers): whether the next word is the node's.
-        self.home_c.next = (self.wcount.q.val() == 2)
-            & (self.slot.q.val() == self.i_address.val())
-            & !self.rtx.q.val()
-            & !self.dead.q.val()
-            & !self.fs_r.q.val();
+        // The slot comparison is registered (`at_home`): the counters it
+        // reads settle two clocks after a word completes, ten or more
+        // before the next word's first group reads what it decides
+        // (issue 21: the HX1K's longest path, and a 12-literal product in
+        // every fresh-word bit on a CoolRunner-II).
+        self.at_home.d.next =
+            (self.wcount.q.val() == 2) & (self.slot.q.val() == self.i_address.val());
+        self.home_c.next =
+            self.at_home.q.val() & !self.rtx.q.val() & !self.dead.q.val() & !self.fs_r.q.val();
         // An RTX's data word whose index word named a slot the node writes:
         // its home slot; in a master, a slot its data block writes (LOCAL or
         // ACT with a value, `i_slot_cfg` read at the requested slot).

@@ -23,7 +23,7 @@
 //! | `o_failsafe` | out | 1 | all | failsafe |
 //! | `i_diag_sel` | in | 3 | all (with `diag`) | which value `o_diag` shows (below) |
 //! | `o_diag` | out | 16 | all (with `diag`) | 0 perr, 1 ferr, 2 aerr, 3 serr, 4 hop, 5 frames sent, 6 actuator register (values a kind lacks read 0) |
-//! | `i_sensor` | in | 16 | slave (without `diag`: sensor) | sensor value (synchronised here bit by bit: a value changing at a capture edge can arrive mixed, old and new bits; drive it from a register on `clk` or a handshake, docs/synthesis.md) |
+//! | `i_sensor` | in | 16 | slave (without `diag`: sensor) | sensor value (synchronised here bit by bit: a value changing at a capture edge can arrive mixed, old and new bits; drive it from a register on `clk` or a handshake, docs/synthesis.md). Without `sensor_sync` it is not synchronised: it must come from a register on `clk` |
 //! | `o_act` | out | 16 | actuator without `diag` | actuator output register |
 //! | `i_wb_cyc`, `i_wb_stb`, `i_wb_we`, `i_wb_adr[13:0]`, `i_wb_dat[15:0]` | in | | master, SM | Wishbone B4 host port on `clk` ([`crate::node::mdb`]) |
 //! | `o_wb_dat[15:0]`, `o_wb_ack` | out | | master, SM | Wishbone read data, acknowledge |
@@ -87,6 +87,13 @@ pub struct NodeStatic {
     /// a sensor has `i_sensor`, an actuator its register on `o_act`, and
     /// synthesis drops the counters that nothing reads (docs/synthesis.md).
     pub diag: bool,
+    /// The sensor value's synchroniser (two flip-flops per bit on `clk`).
+    /// Without it (`merkur synth --sensor-sync off`) `i_sensor` goes to
+    /// the node as it is and must come from a register on `clk` (issue
+    /// 21: 32 flip-flops that a small device cannot spare; a user whose
+    /// source is on another clock needs a handshake for the value's
+    /// coherence anyway, docs/synthesis.md). The requests keep theirs.
+    pub sensor_sync: bool,
     /// The word format of the ring (protocol §4, or §6 with
     /// `[frame] alarm_bits = true`).
     pub format: WordFormat,
@@ -338,7 +345,9 @@ fn slave_instance(
 ) -> &'static str {
     let act = st.kind == Kind::Actuator;
     let actb = u8::from(act);
-    let sensor = if ports.contains(&"i_sensor") {
+    let sensor = if ports.contains(&"i_sensor") && !st.sensor_sync {
+        "i_sensor"
+    } else if ports.contains(&"i_sensor") {
         v.push_str(
             "    reg [15:0] sensor_m = 16'd0;\n    reg [15:0] sensor = 16'd0;\n\
              \x20   always @(posedge clk) begin\n        sensor_m <= i_sensor;\n        sensor <= sensor_m;\n    end\n",
