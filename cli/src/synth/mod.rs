@@ -569,9 +569,10 @@ fn xc2c(
     });
     r.macrocells = Some(mc);
     r.pterms = Some(pt);
-    r.ffs = Some(sum_cells(&cells, |n| {
+    let ffs = sum_cells(&cells, |n| {
         n.starts_with("FD") || n.starts_with("FT") || n.starts_with("LD")
-    }));
+    });
+    r.ffs = Some(ffs);
     r.ios = Some(io);
     r.artifacts
         .extend(["top.v", "top.edif", "top.json", "stat.json", "yosys.log"].map(String::from));
@@ -586,8 +587,9 @@ fn xc2c(
     if over {
         r.status = "does not fit".into();
         r.reason = format!(
-            "it needs {mc} macrocells, {pt} product terms ({distinct} different ones; a \
-             function block's macrocells share a product term they all use) and {io} I/O; \
+            "it needs {mc} macrocells ({ffs} of them for flip-flops), {pt} product terms \
+             ({distinct} different ones; a function block's macrocells share a product term \
+             they all use) and {io} I/O; \
              the {} has {} \
              macrocells, {} product terms ({} function blocks × 56) and at most {} user I/O",
             c.device,
