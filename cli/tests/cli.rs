@@ -615,7 +615,11 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
     if target.starts_with("xc2c") {
         // Where the product terms go: four blocks, most first, each within
         // the node's total; the node's own blocks are named.
-        let total = number_after(&err, "macrocells, ");
+        let total = number_after(&err, "for flip-flops), ");
+        // How many of the macrocells hold a flip-flop: some, not more
+        // than all.
+        let ffs = number_after(&err, "macrocells (");
+        assert!(ffs > 0 && ffs <= n, "{err}");
         let blocks = err.split("Most product terms: ").nth(1).unwrap_or("");
         let terms: Vec<u64> = blocks
             .split(", ")
