@@ -119,7 +119,8 @@ pub struct WordRx {
     /// takes the bit above it or holds (issue 21: no multiplexer in front
     /// of a data bit, and the 4B/5B decoder feeds only the top nibble).
     /// A basic word's N0 ends in bits 7:4, an extended word's in 3:0;
-    /// `o_data` is wired from the nibbles (the layout beside `data`).
+    /// `o_data` is wired from the nibbles (where each data bit sits: the
+    /// comment at the `data` signal).
     raw: DFF<Bits<24>>,
     reason: DFF<Bits<4>>,
     alarm0: DFF<Bit>,
