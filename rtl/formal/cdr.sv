@@ -11,20 +11,22 @@
 // - los_not_early: o_los is high only after 64 clocks without an edge, so
 //   never on a line that toggles at least every 4 bit times (8 clocks), as
 //   every legal stream does (§2);
-// - los_falls: the clock after an edge, o_los is low again.
+// - los_falls: the clock after an edge, o_los is low again;
+// - code_is_decode: o_code beside a recovered bit is its NRZI decode, its
+//   level against the bit before's (the first against a low line).
 module cdr_props (
     input wire clock,
     input wire [3:0] i_samples
 );
     localparam QUIET = 64;
 
-    wire o_valid, o_bit, o_los;
+    wire o_valid, o_bit, o_code, o_los;
     wire [1:0] o_phase;
     wire [5:0] quiet_q;
     wire last_q;
     cdr dut (
         .clock(clock), .i_samples(i_samples), .o_valid(o_valid),
-        .o_bit(o_bit), .o_los(o_los), .o_phase(o_phase),
+        .o_bit(o_bit), .o_code(o_code), .o_los(o_los), .o_phase(o_phase),
         .quiet_q(quiet_q), .last_q(last_q)
     );
 
@@ -50,6 +52,17 @@ module cdr_props (
         cover_los: cover (o_los);
         cover_idle_line: cover (quiet == 7 && !o_los);
     end
+    // Shadow: the level of the last recovered bit before this clock's.
+    reg last_bit = 1'b0;
+    always @(posedge clock) if (o_valid) last_bit <= o_bit;
+    always @(*) begin
+        if (o_valid) code_is_decode: assert (o_code == (o_bit ^ last_bit));
+        // Induction invariant: between bits the level is the last bit's.
+        if (!o_valid) inv_level: assert (o_bit == last_bit);
+        cover_code_1: cover (o_valid && o_code);
+        cover_code_0: cover (o_valid && !o_code);
+    end
+
     reg was_los = 1'b0;
     always @(posedge clock) was_los <= o_los;
     always @(*) cover_recovered: cover (was_los && quiet == 0 && !o_los);

@@ -131,7 +131,7 @@ fn codec() -> Proof {
 fn cdr() -> Proof {
     Proof {
         name: "cdr",
-        what: "loss of signal: raised after 32 bit times without an edge, never earlier",
+        what: "loss of signal: raised after 32 bit times without an edge, never earlier; each bit's code is its NRZI decode",
         duts: vec![dut("cdr", block_verilog(crate::line::cdr::Cdr::default()))],
         expose: vec![("cdr", "quiet_q"), ("cdr", "last_q")],
         props: include_str!("../formal/cdr.sv"),

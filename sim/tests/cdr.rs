@@ -4,7 +4,8 @@
 //! slips a bit over 10^6 bits; ±2.2 samples of jitter does make it fail (so
 //! the first test can fail); every edge interval one line-bit error can
 //! leave inside a packet is read whole (8 bit times), a longer one mutes;
-//! loss of signal within 32 bit times of a dark line and never on a live one.
+//! loss of signal within 32 bit times of a dark line and never on a live one;
+//! `o_code` beside each bit is the code the line was NRZI-encoded from.
 
 use merkur_model::line::{nrzi_encode, push_group, CODE_K, CODE_S, DATA_CODES};
 use merkur_rtl::{
@@ -13,41 +14,54 @@ use merkur_rtl::{
 };
 use merkur_sim::{line_samples, sample_words, verilator::Model, Rng, SAMPLES_PER_BIT};
 
-/// Line levels of `bits` NRZI bits of random data groups.
-fn line_levels(rng: &mut Rng, bits: usize) -> Vec<u8> {
+/// `bits` code bits of random data groups.
+fn data_code(rng: &mut Rng, bits: usize) -> Vec<u8> {
     let mut code = vec![];
     while code.len() < bits {
         push_group(&mut code, DATA_CODES[rng.below(16) as usize]);
     }
     code.truncate(bits);
-    let mut level = 0;
-    nrzi_encode(&code, &mut level)
+    code
+}
+
+/// Line levels of `bits` NRZI bits of random data groups.
+fn line_levels(rng: &mut Rng, bits: usize) -> Vec<u8> {
+    nrzi_encode(&data_code(rng, bits), &mut 0)
 }
 
 struct Run {
     bits: Vec<u8>,
+    /// `o_code` beside each bit.
+    codes: Vec<u8>,
     los_seen: bool,
 }
 
 fn run(m: &mut Model, samples: &[u8]) -> Run {
-    let (clk, s, v, b, los) = (
+    let (clk, s, v, b, c, los) = (
         m.port("clock"),
         m.port("i_samples"),
         m.port("o_valid"),
         m.port("o_bit"),
+        m.port("o_code"),
         m.port("o_los"),
     );
     let mut bits = vec![];
+    let mut codes = vec![];
     let mut los_seen = false;
     for word in sample_words(samples) {
         m.set(s, word);
         m.tick(clk);
         if m.get(v) == 1 {
             bits.push(m.get(b) as u8);
+            codes.push(m.get(c) as u8);
         }
         los_seen |= m.get(los) == 1;
     }
-    Run { bits, los_seen }
+    Run {
+        bits,
+        codes,
+        los_seen,
+    }
 }
 
 /// Finds where `got` (after skipping the first 16 bits) starts in `sent`.
@@ -69,7 +83,8 @@ fn first_error(
     jitter: f64,
 ) -> Option<String> {
     let mut rng = Rng::new(seed ^ (delta_ppm as i64 as u64));
-    let levels = line_levels(&mut rng, nbits);
+    let code = data_code(&mut rng, nbits);
+    let levels = nrzi_encode(&code, &mut 0);
     let phase = rng.below(800) as f64 / 100.0;
     let samples = line_samples(&levels, delta_ppm, phase, jitter, &mut rng);
     let r = run(m, &samples);
@@ -87,12 +102,18 @@ fn first_error(
     if n + off + skip + 8 < nbits {
         return Some(format!("{ctx}: recovered {} of {nbits} bits", r.bits.len()));
     }
-    (0..n).find(|&i| got[i] != sent[i]).map(|i| {
-        format!(
+    if let Some(i) = (0..n).find(|&i| got[i] != sent[i]) {
+        return Some(format!(
             "{ctx}: bit {} recovered wrong (slip or error) after {i} good bits",
             off + i
-        )
-    })
+        ));
+    }
+    // The NRZI decode beside each bit: the code the line was made from
+    // (the bit before a compared one was recovered right too).
+    let codes = &r.codes[skip..];
+    (1..n)
+        .find(|&i| codes[i] != code[off + i])
+        .map(|i| format!("{ctx}: bit {}'s o_code is {}", off + i, codes[i]))
 }
 
 #[test]

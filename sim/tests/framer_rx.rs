@@ -85,10 +85,10 @@ fn frames_are_found_and_grouped_like_the_model() {
     }
 
     let mut m = Model::build(&block_verilog(FramerRx::new())).unwrap();
-    let (clk, v, lvl, end, start, gv, grp) = (
+    let (clk, v, code_in, end, start, gv, grp) = (
         m.port("clock"),
         m.port("i_valid"),
-        m.port("i_level"),
+        m.port("i_code"),
         m.port("i_end"),
         m.port("o_start"),
         m.port("o_gvalid"),
@@ -107,7 +107,9 @@ fn frames_are_found_and_grouped_like_the_model() {
             idle_clocks += 1;
         }
         m.set(v, valid as u64);
-        m.set(lvl, if valid { line[i] as u64 } else { 0 });
+        // The code bits as the clock recovery gives them (the model's
+        // NRZI decode of the line).
+        m.set(code_in, if valid { decoded[i] as u64 } else { 0 });
         if valid {
             i += 1;
         }

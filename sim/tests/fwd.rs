@@ -107,7 +107,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
     let (fclk, fv, fl, fph, fhb, fsd, fao, fline) = (
         p(&f, "clock"),
         p(&f, "i_bvalid"),
-        p(&f, "i_level"),
+        p(&f, "i_code"),
         p(&f, "i_phase"),
         p(&f, "i_hdr_bad"),
         p(&f, "i_sensor_data"),
@@ -118,7 +118,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         p(&mi, "clock"),
         p(&mi, "i_samples"),
         p(&mi, "o_bvalid"),
-        p(&mi, "o_level"),
+        p(&mi, "o_code"),
         p(&mi, "o_phase"),
         p(&mi, "o_hdr_bad"),
     );

@@ -31,7 +31,7 @@ fn run(cdr: &mut Model, rt: &mut Model, samples: &[u8]) -> Out {
         cdr.port("clock"),
         cdr.port("i_samples"),
         cdr.port("o_valid"),
-        cdr.port("o_bit"),
+        cdr.port("o_code"),
         cdr.port("o_phase"),
     );
     let (rclk, rv, rl, rp, rline, rslip) = (
@@ -46,16 +46,11 @@ fn run(cdr: &mut Model, rt: &mut Model, samples: &[u8]) -> Out {
         halves: vec![],
         slips: 0,
     };
-    let mut last = 0;
     for word in sample_words(samples) {
         cdr.set(cs, word);
         cdr.tick(cclk);
         rt.set(rv, cdr.get(cv));
-        // The code bit: did the recovered level change?
-        rt.set(rl, cdr.get(cb) ^ last);
-        if cdr.get(cv) == 1 {
-            last = cdr.get(cb);
-        }
+        rt.set(rl, cdr.get(cb));
         rt.set(rp, cdr.get(cp));
         rt.tick(rclk);
         let pair = rt.get(rline);

@@ -15,7 +15,9 @@
 //! clock), which leaves a sample of margin. Tested
 //! (`sim/tests/cdr.rs`): 10^6 bits at ±2000 ppm relative offset with
 //! every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
-//! fail. At most one bit is recovered per clock.
+//! fail. At most one bit is recovered per clock, with its level (`o_bit`)
+//! and its code (`o_code`, NRZI-decoded: the level changed), so the
+//! framer, the forwarder and the repeaters read one decode, not one each.
 //!
 //! A dead line: after [`MUTE_SAMPLES`] (8 bit times) without a transition no
 //! more bits are taken, so a break passes on a cut-short packet, not a run
@@ -33,10 +35,11 @@
 //! | `i_samples` | in | 4 | clock | line samples, bit 0 first in time |
 //! | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
 //! | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
+//! | `o_code` | out | 1 | clock | the bit decoded: 1 when its level differs from the previous recovered bit's (NRZI 1) |
 //! | `o_los` | out | 1 | clock | loss of signal (no edge for 32 bit times) |
 //! | `o_phase` | out | 2 | clock | which sample of its clock the bit was taken from (0 first) |
 //!
-//! Latency: `o_valid`/`o_bit`/`o_phase` are registered: a bit appears one
+//! Latency: `o_valid`/`o_bit`/`o_code`/`o_phase` are registered: a bit appears one
 //! clock after the clock whose samples contained its centre (4 samples after
 //! its edge), so 0.5–1 bit time after the edge.
 //!
@@ -76,6 +79,12 @@ pub struct Cdr {
     pub o_valid: Signal<Out, Bit>,
     /// Recovered line level.
     pub o_bit: Signal<Out, Bit>,
+    /// The recovered bit's code (its level differs from the previous
+    /// bit's): the NRZI decode in the register beside the level, so that
+    /// no reader repeats it in front of its own registers (issue 21: on a
+    /// CoolRunner-II an XOR in front of a register doubles its product
+    /// terms).
+    pub o_code: Signal<Out, Bit>,
     /// Loss of signal.
     pub o_los: Signal<Out, Bit>,
     /// Which sample of its clock the bit was taken from (0 first): the
@@ -89,6 +98,7 @@ pub struct Cdr {
     quiet: DFF<Bits<6>>,
     rx_valid: DFF<Bit>,
     rx_bit: DFF<Bit>,
+    rx_code: DFF<Bit>,
     los_flag: DFF<Bit>,
     prior: Signal<Local, Bits<4>>,
     edges: Signal<Local, Bits<4>>,
@@ -104,6 +114,7 @@ impl Default for Cdr {
             i_samples: Default::default(),
             o_valid: Default::default(),
             o_bit: Default::default(),
+            o_code: Default::default(),
             o_los: Default::default(),
             o_phase: Default::default(),
             // LOS_SAMPLES / SAMPLES_PER_CLOCK clocks, counted from 0.
@@ -115,6 +126,7 @@ impl Default for Cdr {
             quiet: Default::default(),
             rx_valid: Default::default(),
             rx_bit: Default::default(),
+            rx_code: Default::default(),
             los_flag: Default::default(),
             prior: Default::default(),
             edges: Default::default(),
@@ -128,7 +140,7 @@ impl Default for Cdr {
 impl Logic for Cdr {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, last, phase, count, quiet, rx_valid, rx_bit, los_flag);
+        dff_setup!(self, clock, last, phase, count, quiet, rx_valid, rx_bit, rx_code, los_flag);
         // Each sample's predecessor, and where the level changed.
         self.prior.next = self.i_samples.val() << 1;
         if self.last.q.val() {
@@ -180,6 +192,8 @@ impl Logic for Cdr {
         if !self.count.q.val().get_bit(2) & self.clean.val() & self.live.val() {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.i_samples.val().get_bit(self.take_at.val().index());
+            self.rx_code.d.next =
+                self.i_samples.val().get_bit(self.take_at.val().index()) ^ self.rx_bit.q.val();
             self.phase.d.next = self.take_at.val();
         }
         // Loss of signal: LOS_SAMPLES samples without an edge.
@@ -193,6 +207,7 @@ impl Logic for Cdr {
         }
         self.o_valid.next = self.rx_valid.q.val();
         self.o_bit.next = self.rx_bit.q.val();
+        self.o_code.next = self.rx_code.q.val();
         self.o_los.next = self.los_flag.q.val();
         self.o_phase.next = self.phase.q.val();
     }

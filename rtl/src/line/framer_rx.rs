@@ -1,6 +1,7 @@
-//! # framer_rx — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
+//! # framer_rx — start-delimiter (CS) detector, group aligner (protocol §2, §3)
 //!
-//! Purpose: turns recovered line levels into code groups. While hunting it
+//! Purpose: turns recovered code bits (NRZI-decoded by [`crate::line::cdr`])
+//! into code groups. While hunting it
 //! compares the last 10 code bits with J K at every bit position; on a match
 //! it pulses `o_start` and from then on emits one 5-bit group every 5 code
 //! bits, until the word layer says the packet has ended (`i_end`: after the
@@ -13,8 +14,8 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock |
-//! | `i_valid` | in | 1 | clock | `i_level` holds a recovered bit (from [`crate::line::cdr`]) |
-//! | `i_level` | in | 1 | clock | recovered line level |
+//! | `i_valid` | in | 1 | clock | `i_code` holds a recovered bit (from [`crate::line::cdr`]) |
+//! | `i_code` | in | 1 | clock | its code bit (1: the line level changed) |
 //! | `i_end` | in | 1 | clock | leave the packet, hunt for J K again |
 //! | `o_start` | out | 1 | clock | J K found; the next group is the packet's first |
 //! | `o_gvalid` | out | 1 | clock | `o_group` holds a group of the packet |
@@ -39,15 +40,15 @@ use rust_hdl::prelude::*;
 /// J K as 10 code bits, J first (bit 9 first on the line).
 pub const JK_BITS: u64 = 0b11000_10001;
 
-/// NRZI decoder, J K hunter and group aligner.
+/// J K hunter and group aligner.
 #[derive(LogicBlock)]
 pub struct FramerRx {
     /// Core clock.
     pub clock: Signal<In, Clock>,
     /// A recovered bit is valid.
     pub i_valid: Signal<In, Bit>,
-    /// Recovered line level.
-    pub i_level: Signal<In, Bit>,
+    /// Its code bit (NRZI-decoded).
+    pub i_code: Signal<In, Bit>,
     /// End of packet (from the word layer).
     pub i_end: Signal<In, Bit>,
     /// J K found.
@@ -60,7 +61,6 @@ pub struct FramerRx {
     pub o_idle: Signal<Out, Bit>,
     /// Inside a packet.
     pub o_inpkt: Signal<Out, Bit>,
-    prev: DFF<Bit>,
     window: DFF<Bits<10>>,
     inpkt: DFF<Bit>,
     count: DFF<Bits<3>>,
@@ -78,14 +78,13 @@ impl FramerRx {
         Self {
             clock: Default::default(),
             i_valid: Default::default(),
-            i_level: Default::default(),
+            i_code: Default::default(),
             i_end: Default::default(),
             o_start: Default::default(),
             o_gvalid: Default::default(),
             o_group: Default::default(),
             o_idle: Default::default(),
             o_inpkt: Default::default(),
-            prev: Default::default(),
             window: Default::default(),
             inpkt: Default::default(),
             count: Default::default(),
@@ -108,15 +107,14 @@ impl Default for FramerRx {
 impl Logic for FramerRx {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, prev, window, inpkt, count, start, gvalid, group, idle);
+        dff_setup!(self, clock, window, inpkt, count, start, gvalid, group, idle);
         self.start.d.next = false;
         self.gvalid.d.next = false;
         self.shifted.next = self.window.q.val() << 1;
-        if self.i_level.val() ^ self.prev.q.val() {
+        if self.i_code.val() {
             self.shifted.next = (self.window.q.val() << 1) | 1;
         }
         if self.i_valid.val() {
-            self.prev.d.next = self.i_level.val();
             self.window.d.next = self.shifted.val();
             if self.inpkt.q.val() {
                 if self.count.q.val() == 4 {

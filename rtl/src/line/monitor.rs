@@ -15,7 +15,7 @@
 //! | `i_slots_m1`, `i_address` | in | 12 | static | as [`WordRx`] |
 //! | `i_flush` | in | 1 | clock | the input was switched to another line: the packet ends, a held word is dropped |
 //! | `o_los` | out | 1 | clock | loss of signal |
-//! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+//! | `o_bvalid`, `o_code`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR: `o_code` 1 where the line level changed) |
 //! | `o_start` | out | 1 | clock | J K found |
 //! | `o_inpkt` | out | 1 | clock | inside a packet |
 //! | `o_wvalid` … `o_ptype` | out | | clock | as [`WordRx`] |
@@ -69,8 +69,8 @@ pub struct Monitor {
     pub o_los: Signal<Out, Bit>,
     /// Recovered bit valid (from the CDR).
     pub o_bvalid: Signal<Out, Bit>,
-    /// Recovered line level.
-    pub o_level: Signal<Out, Bit>,
+    /// Its code bit (1: the line level changed).
+    pub o_code: Signal<Out, Bit>,
     /// Sample phase of the recovered bit.
     pub o_phase: Signal<Out, Bits<2>>,
     /// Packet start.
@@ -108,7 +108,6 @@ pub struct Monitor {
     cdr: Cdr,
     framer: FramerRx,
     word: WordRx,
-    last_lvl: DFF<Bit>,
     quiet: DFF<Bits<3>>,
     // A held word waits for its confirming edge.
     emit: DFF<Bit>,
@@ -132,7 +131,7 @@ impl Monitor {
             i_flush: Default::default(),
             o_los: Default::default(),
             o_bvalid: Default::default(),
-            o_level: Default::default(),
+            o_code: Default::default(),
             o_phase: Default::default(),
             o_start: Default::default(),
             o_inpkt: Default::default(),
@@ -153,7 +152,6 @@ impl Monitor {
             cdr: Default::default(),
             framer: FramerRx::new(),
             word: WordRx::new(format),
-            last_lvl: Default::default(),
             quiet: Default::default(),
             emit: Default::default(),
             p_valid: Default::default(),
@@ -166,13 +164,13 @@ impl Monitor {
 impl Logic for Monitor {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, last_lvl, quiet, emit, p_valid);
+        dff_setup!(self, clock, quiet, emit, p_valid);
         self.cdr.clock.next = self.clock.val();
         self.framer.clock.next = self.clock.val();
         self.word.clock.next = self.clock.val();
         self.cdr.i_samples.next = self.i_samples.val();
         self.framer.i_valid.next = self.cdr.o_valid.val();
-        self.framer.i_level.next = self.cdr.o_bit.val();
+        self.framer.i_code.next = self.cdr.o_code.val();
         // A packet ends after its last word, at the third idle group (word_rx),
         // or when the line goes quiet (the clock recovery muted: a dead or
         // switched line; what comes next is another stream).
@@ -188,16 +186,14 @@ impl Logic for Monitor {
         self.word.i_address.next = self.i_address.val();
         self.o_los.next = self.cdr.o_los.val();
         self.o_bvalid.next = self.cdr.o_valid.val();
-        self.o_level.next = self.cdr.o_bit.val();
+        self.o_code.next = self.cdr.o_code.val();
         self.o_phase.next = self.cdr.o_phase.val();
         self.o_start.next = self.framer.o_start.val();
         self.o_inpkt.next = self.framer.o_inpkt.val();
         self.o_hdr_bad.next = self.word.o_hdr_bad.val();
         // Confirmation: a code 1 (the level changes) after the word.
-        self.conf_edge.next =
-            self.cdr.o_valid.val() & (self.cdr.o_bit.val() != self.last_lvl.q.val());
+        self.conf_edge.next = self.cdr.o_valid.val() & self.cdr.o_code.val();
         if self.cdr.o_valid.val() {
-            self.last_lvl.d.next = self.cdr.o_bit.val();
             self.quiet.d.next = 0.into();
         } else if self.quiet.q.val() != 7 {
             self.quiet.d.next = self.quiet.q.val() + 1;

@@ -65,7 +65,7 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_bvalid`, `i_level`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits (from [`crate::node::port_rx`]) |
+//! | `i_bvalid`, `i_code`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits, NRZI-decoded (from [`crate::node::port_rx`]) |
 //! | `i_hdr_bad` | in | 1 | clock | header rejected, or not a DATA packet: pass the rest unchanged |
 //! | `i_mute` | in | 1 | clock | send idles for the code bits arriving from now on (a TST's rest) |
 //! | `i_slots_m1`, `i_address` | in | 12 | static | slot count − 1, home slot |
@@ -91,9 +91,11 @@
 //! Pipeline (issue 20: every stage a few levels of logic at 2 × the line
 //! rate): stage A decodes a group in the clock its last bit arrives (and
 //! the action of a word's first group); stage B, the next clock, decides
-//! the rewrite from registers (the word flags and the fresh word with its
-//! parities are prepared a clock ahead, `pre_*`, `f_*`); stage C, the
-//! clock after, encodes it into the delay line and sums the delta parity.
+//! the rewrite from registers (the word flags and the fresh word are
+//! prepared a clock ahead, `pre_*`, `f_*`; a fresh word's parities, like a
+//! rewritten word's, come from the incoming word's and the changes made);
+//! stage C, the clock after, encodes it into the delay line and sums the
+//! delta parity.
 //!
 //! Latency: 6 bit times (one group and one bit, so that stage C's rewrite
 //! is in place before the group's first bit leaves) from INPUT bit to the
@@ -132,8 +134,8 @@ pub struct Fwd {
     pub clock: Signal<In, Clock>,
     /// Recovered bit valid.
     pub i_bvalid: Signal<In, Bit>,
-    /// Recovered line level.
-    pub i_level: Signal<In, Bit>,
+    /// Its code bit (1: the line level changed).
+    pub i_code: Signal<In, Bit>,
     /// Sample phase of the recovered bit.
     pub i_phase: Signal<In, Bits<2>>,
     /// Header rejected.
@@ -216,7 +218,6 @@ pub struct Fwd {
     ext: Constant<Bit>,
     // Retransmission on demand is built in (see [`Fwd::with_rtx`]).
     rtx_on: Constant<Bit>,
-    prev: DFF<Bit>,
     window: DFF<Bits<10>>,
     delay: DFF<Bits<6>>,
     // Stage B → C: the group as it leaves (`c_nib`, written when
@@ -262,13 +263,15 @@ pub struct Fwd {
     framed: DFF<Bit>,
     rtx_wrote: DFF<Bit>,
     idx_own: DFF<Bit>,
-    // The incoming word so far (for the mark): parities, all data, all S.
+    // The incoming word so far (for the mark, and a fresh word's
+    // parities): parities, all data, all S.
     in_pa: DFF<Bit>,
     in_pb: DFF<Bit>,
     in_data: DFF<Bit>,
     in_s: DFF<Bit>,
     // H0 carries CLR (its ALIVE bit).
     clr_h0: DFF<Bit>,
+    // The changes made to the word so far (delta parity).
     d_a: DFF<Bit>,
     d_b: DFF<Bit>,
     carry: DFF<Bit>,
@@ -278,8 +281,6 @@ pub struct Fwd {
     f_reason: DFF<Bits<4>>,
     // The fresh word's N1 (extended variant): {SEQ, REASON[2:0]} or 0.
     f_rn: DFF<Bits<4>>,
-    f_pa: DFF<Bit>,
-    f_pb: DFF<Bit>,
     pre_home: DFF<Bit>,
     at_home: DFF<Bit>,
     fs_r: DFF<Bit>,
@@ -350,7 +351,7 @@ impl Fwd {
         Self {
             clock: Default::default(),
             i_bvalid: Default::default(),
-            i_level: Default::default(),
+            i_code: Default::default(),
             i_phase: Default::default(),
             i_hdr_bad: Default::default(),
             i_mute: Default::default(),
@@ -391,7 +392,6 @@ impl Fwd {
             dead_after: Constant::new(DEAD_CLOCKS.to_bits()),
             ext: Constant::new(format == WordFormat::ExtendedAlarm),
             rtx_on: Constant::new(rtx),
-            prev: Default::default(),
             window: Default::default(),
             delay: Default::default(),
             c_pend: Default::default(),
@@ -437,8 +437,6 @@ impl Fwd {
             f_alarm: Default::default(),
             f_reason: Default::default(),
             f_rn: Default::default(),
-            f_pa: Default::default(),
-            f_pb: Default::default(),
             pre_home: Default::default(),
             at_home: Default::default(),
             fs_r: Default::default(),
@@ -498,7 +496,6 @@ impl Logic for Fwd {
         dff_setup!(
             self,
             clock,
-            prev,
             window,
             delay,
             c_pend,
@@ -539,8 +536,6 @@ impl Logic for Fwd {
             f_alarm,
             f_reason,
             f_rn,
-            f_pa,
-            f_pb,
             pre_home,
             at_home,
             fs_r,
@@ -558,8 +553,8 @@ impl Logic for Fwd {
             in_s,
             clr_h0
         );
-        // NRZI decode and the group that completes with this bit.
-        self.code.next = self.i_level.val() ^ self.prev.q.val();
+        // The group that completes with this bit.
+        self.code.next = self.i_code.val();
         self.shifted.next = self.window.q.val() << 1;
         if self.code.val() {
             self.shifted.next = (self.window.q.val() << 1) | 1;
@@ -765,9 +760,9 @@ impl Logic for Fwd {
             }
         }
         self.act_now.next = self.g_act.q.val();
-        // The fresh word (own slot) and its parities (protocol §4): the f_*
-        // registers follow it between words and hold it from the word's
-        // first group to its last (stage B reads registers, issue 20).
+        // The fresh word (own slot, protocol §4): the f_* registers follow
+        // it between words and hold it from the word's first group to its
+        // last (stage B reads registers, issue 20).
         self.fresh_alive.next = self.toggle.q.val();
         self.fresh_data.next = self.i_sensor_data.val();
         if self.i_actuator.val() {
@@ -820,34 +815,6 @@ impl Logic for Fwd {
             self.f_alarm.d.next = self.send_c.val();
             self.f_reason.d.next = self.i_alarm_reason.val();
             self.f_rn.d.next = self.fresh_rn.val();
-            self.f_pa.d.next = !(self.send_c.val()
-                ^ self.fresh_alive.val()
-                ^ self.fresh_rn.val().get_bit(3)
-                ^ self.fresh_rn.val().get_bit(2)
-                ^ self.fresh_data.val().get_bit(5)
-                ^ self.fresh_data.val().get_bit(4)
-                ^ self.fresh_data.val().get_bit(9)
-                ^ self.fresh_data.val().get_bit(8)
-                ^ self.fresh_data.val().get_bit(13)
-                ^ self.fresh_data.val().get_bit(12)
-                ^ self.fresh_data.val().get_bit(15));
-            self.f_pb.d.next = !(self.fresh_alive.val()
-                ^ self.fresh_rn.val().get_bit(2)
-                ^ self.fresh_rn.val().get_bit(1)
-                ^ self.fresh_rn.val().get_bit(0)
-                ^ self.fresh_data.val().get_bit(1)
-                ^ self.fresh_data.val().get_bit(0)
-                ^ self.fresh_data.val().get_bit(4)
-                ^ self.fresh_data.val().get_bit(3)
-                ^ self.fresh_data.val().get_bit(2)
-                ^ self.fresh_data.val().get_bit(8)
-                ^ self.fresh_data.val().get_bit(7)
-                ^ self.fresh_data.val().get_bit(6)
-                ^ self.fresh_data.val().get_bit(12)
-                ^ self.fresh_data.val().get_bit(11)
-                ^ self.fresh_data.val().get_bit(10)
-                ^ self.fresh_data.val().get_bit(15)
-                ^ self.fresh_data.val().get_bit(14));
         }
 
         self.pa_fix.next = false;
@@ -888,11 +855,20 @@ impl Logic for Fwd {
                 self.nib_out.next = self.f_data.q.val().get_bits::<4>(10);
             }
             if self.dg.val() == 4 {
+                // The parities (protocol §4: odd), over the groups
+                // before as they left: as they came (`in_pa`, `in_pb`)
+                // changed by what the node wrote (`d_a`, `d_b`), as a
+                // rewritten word's delta parity (issue 21: no parity tree
+                // over the fresh word in front of a register).
                 self.nib_out.next = (self.f_data.q.val().get_bits::<4>(12) >> 1) & 6;
-                if self.f_pa.q.val() {
+                if !(self.in_pa.q.val() ^ self.d_a.q.val() ^ self.f_data.q.val().get_bit(15)) {
                     self.nib_out.next = self.nib_out.val() | 8;
                 }
-                if self.f_pb.q.val() {
+                if !(self.in_pb.q.val()
+                    ^ self.d_b.q.val()
+                    ^ self.f_data.q.val().get_bit(15)
+                    ^ self.f_data.q.val().get_bit(14))
+                {
                     self.nib_out.next = self.nib_out.val() | 1;
                 }
             }
@@ -1061,7 +1037,6 @@ impl Logic for Fwd {
         }
         // Stage A: the recovered bit.
         if self.i_bvalid.val() {
-            self.prev.d.next = self.i_level.val();
             self.window.d.next = self.shifted.val();
             self.delay.d.next = self.delay.q.val() << 1;
             if self.in_code.val() {

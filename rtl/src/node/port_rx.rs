@@ -12,7 +12,7 @@
 //! | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 //! | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
 //! | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtl`] |
-//! | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+//! | `o_bvalid`, `o_code`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR: `o_code` 1 where the line level changed) |
 //!
 //! Latency: as [`Monitor`]; stream-controller outputs one clock later.
 //!
@@ -76,8 +76,8 @@ pub struct PortRx {
     pub o_los: Signal<Out, Bit>,
     /// Recovered bit valid (from the CDR).
     pub o_bvalid: Signal<Out, Bit>,
-    /// Recovered line level.
-    pub o_level: Signal<Out, Bit>,
+    /// Its code bit (1: the line level changed).
+    pub o_code: Signal<Out, Bit>,
     /// Sample phase of the recovered bit.
     pub o_phase: Signal<Out, Bits<2>>,
     /// Channel failure.
@@ -121,7 +121,7 @@ impl PortRx {
             o_ptype: Default::default(),
             o_los: Default::default(),
             o_bvalid: Default::default(),
-            o_level: Default::default(),
+            o_code: Default::default(),
             o_phase: Default::default(),
             o_cf: Default::default(),
             o_hard: Default::default(),
@@ -171,7 +171,7 @@ impl Logic for PortRx {
         self.o_ptype.next = self.mon.o_ptype.val();
         self.o_los.next = self.mon.o_los.val();
         self.o_bvalid.next = self.mon.o_bvalid.val();
-        self.o_level.next = self.mon.o_level.val();
+        self.o_code.next = self.mon.o_code.val();
         self.o_phase.next = self.mon.o_phase.val();
         self.o_cf.next = self.ctrl.o_cf.val();
         self.o_hard.next = self.ctrl.o_hard.val();

@@ -149,7 +149,6 @@ pub struct Slave {
     fwd: Fwd,
     tst: TstTx,
     rep: Retime,
-    rep_last: DFF<Bit>,
     rep_cut: DFF<Bit>,
     fwd_cut: DFF<Bit>,
     failsafe: DFF<Bit>,
@@ -258,7 +257,6 @@ impl Slave {
             rtx_on: Constant::new(rtx),
             rx_seq: Default::default(),
             rep: Default::default(),
-            rep_last: Default::default(),
             rep_cut: Default::default(),
             fwd_cut: Default::default(),
             failsafe: Default::default(),
@@ -298,8 +296,8 @@ impl Logic for Slave {
     fn update(&mut self) {
         dff_setup!(
             self, clock, failsafe, rw, armed, quiet, quiet_max, pend_fs, pend_rc, pend_i1, pend_i2,
-            act_data, perr, ferr, rep_last, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc,
-            sw_flush, fl_k, nxt
+            act_data, perr, ferr, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush, fl_k,
+            nxt
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -324,7 +322,7 @@ impl Logic for Slave {
 
         // Forwarder INPUT -> OUTPUT.
         self.fwd.i_bvalid.next = self.rx_in.o_bvalid.val();
-        self.fwd.i_level.next = self.rx_in.o_level.val();
+        self.fwd.i_code.next = self.rx_in.o_code.val();
         self.fwd.i_phase.next = self.rx_in.o_phase.val();
         // A rejected header, or a SEC/TST packet on INPUT (a wrapped node's
         // INPUT is a secondary fibre): passed on unchanged, not processed.
@@ -634,12 +632,9 @@ impl Logic for Slave {
         {
             self.rep_cut.d.next = true;
         }
-        self.rep.i_code.next = self.rx_bsr.o_level.val() ^ self.rep_last.q.val();
+        self.rep.i_code.next = self.rx_bsr.o_code.val();
         if self.rep_cut.q.val() {
             self.rep.i_code.next = true;
-        }
-        if self.rx_bsr.o_bvalid.val() {
-            self.rep_last.d.next = self.rx_bsr.o_level.val();
         }
         self.rep.i_phase.next = self.rx_bsr.o_phase.val();
         self.tst.i_ack.next = self.rx_bsr.o_tst.val();

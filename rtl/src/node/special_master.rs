@@ -283,7 +283,6 @@ pub struct SpecialMaster {
     rcd_run: DFF<Bit>,
     rdata: DFF<Bit>,
     relay: DFF<Bit>,
-    rlast: DFF<Bit>,
     /// Clocks since the last bit on BSR, recovered or the relay's own.
     rdead: DFF<Bits<2>>,
     /// The relay sends a bit of its own (BSR dark).
@@ -387,8 +386,7 @@ pub struct SpecialMaster {
     base: Signal<Local, Bit>,
     /// Bit times since the last packet started on INPUT (election timer).
     et: DFF<Bits<20>>,
-    /// INPUT's last line level and its last 30 code bits (newest in bit 0).
-    in_last: DFF<Bit>,
+    /// INPUT's last 39 code bits (newest in bit 0).
     in_code: DFF<Bits<39>>,
     /// The delimiter-like ten code bits against J K: their difference,
     /// it without its lowest 1, and whether it is one line-bit error at
@@ -549,7 +547,6 @@ impl SpecialMaster {
             rcd_run: Default::default(),
             rdata: Default::default(),
             relay: Default::default(),
-            rlast: Default::default(),
             rdead: Default::default(),
             rsyn: Default::default(),
             rshift: Default::default(),
@@ -643,7 +640,6 @@ impl SpecialMaster {
             cyc_take: Default::default(),
             fwd_cut: Default::default(),
             rep_cut: Default::default(),
-            in_last: Default::default(),
             in_code: Default::default(),
             jk_x: Default::default(),
             jk_z: Default::default(),
@@ -742,7 +738,6 @@ impl Logic for SpecialMaster {
             rcd_run,
             rdata,
             relay,
-            rlast,
             rdead,
             pend_rc,
             ret_rwp,
@@ -765,7 +760,6 @@ impl Logic for SpecialMaster {
             last_cyc3,
             fwd_cut,
             rep_cut,
-            in_last,
             in_code,
             fs_cleared,
             since_jk,
@@ -1650,11 +1644,8 @@ impl Logic for SpecialMaster {
             if self.rdl.q.val().get_bit(75) {
                 self.rdx.d.next = (self.rdx.q.val() << 1) | 1;
             }
-            if self.rx_bsr.o_bvalid.val() & (self.rx_bsr.o_level.val() != self.rlast.q.val()) {
+            if self.rx_bsr.o_bvalid.val() & self.rx_bsr.o_code.val() {
                 self.rdl.d.next = (self.rdl.q.val() << 1) | 1;
-            }
-            if self.rx_bsr.o_bvalid.val() {
-                self.rlast.d.next = self.rx_bsr.o_level.val();
             }
             if self.rcd_run.q.val() {
                 self.rcd.d.next = self.rcd.q.val() - 1;
@@ -1748,7 +1739,7 @@ impl Logic for SpecialMaster {
         // The forwarder, as in a master (crate::node::slave).
         self.fwd.clock.next = self.clock.val();
         self.fwd.i_bvalid.next = self.rx_in.o_bvalid.val();
-        self.fwd.i_level.next = self.rx_in.o_level.val();
+        self.fwd.i_code.next = self.rx_in.o_code.val();
         self.fwd.i_phase.next = self.rx_in.o_phase.val();
         self.fwd.i_hdr_bad.next = self.rx_in.o_hdr_bad.val()
             | (self.rx_in.o_wvalid.val()
@@ -1810,8 +1801,7 @@ impl Logic for SpecialMaster {
         {
             self.rep_cut.d.next = true;
         }
-        self.pass_code.next =
-            (self.rx_bsr.o_level.val() != self.rlast.q.val()) | self.rep_cut.q.val();
+        self.pass_code.next = self.rx_bsr.o_code.val() | self.rep_cut.q.val();
         // What a header tells a master (crate::node::slave): the ring known
         // wrapped, and the frames missed since the last good one.
         self.cyc_gap3.next = self.rx_in.o_data.val().get_bits::<3>(12) - self.last_cyc3.q.val() - 1;
@@ -1839,9 +1829,8 @@ impl Logic for SpecialMaster {
             self.et.d.next = self.et.q.val() + 1;
         }
         if self.rx_in.o_bvalid.val() {
-            self.in_last.d.next = self.rx_in.o_level.val();
             self.in_code.d.next = self.in_code.q.val() << 1;
-            if self.rx_in.o_level.val() != self.in_last.q.val() {
+            if self.rx_in.o_code.val() {
                 self.in_code.d.next = (self.in_code.q.val() << 1) | 1;
             }
         }
