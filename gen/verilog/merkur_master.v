@@ -1717,7 +1717,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     wire  [1:0] rx_in__o_ptype;
     wire  rx_in__o_los;
     wire  rx_in__o_bvalid;
-    wire  rx_in__o_level;
+    wire  rx_in__o_code;
     wire  [1:0] rx_in__o_phase;
     wire  rx_in__o_cf;
     wire  rx_in__o_hard;
@@ -1744,7 +1744,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     wire  [1:0] rx_bsr__o_ptype;
     wire  rx_bsr__o_los;
     wire  rx_bsr__o_bvalid;
-    wire  rx_bsr__o_level;
+    wire  rx_bsr__o_code;
     wire  [1:0] rx_bsr__o_phase;
     wire  rx_bsr__o_cf;
     wire  rx_bsr__o_hard;
@@ -1752,7 +1752,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     wire  rx_bsr__o_tst;
     wire  rx_bsr__o_ack;
     reg  fwd__i_bvalid;
-    reg  fwd__i_level;
+    reg  fwd__i_code;
     reg  [1:0] fwd__i_phase;
     reg  fwd__i_hdr_bad;
     reg  fwd__i_mute;
@@ -1789,8 +1789,6 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     reg  [1:0] rep__i_phase;
     wire  [1:0] rep__o_line;
     wire  rep__o_slip;
-    reg  rep_last_d;
-    reg  rep_last_q;
     reg  rep_cut_d;
     reg  rep_cut_q;
     reg  fwd_cut_d;
@@ -1914,7 +1912,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         .o_ptype(rx_in__o_ptype),
         .o_los(rx_in__o_los),
         .o_bvalid(rx_in__o_bvalid),
-        .o_level(rx_in__o_level),
+        .o_code(rx_in__o_code),
         .o_phase(rx_in__o_phase),
         .o_cf(rx_in__o_cf),
         .o_hard(rx_in__o_hard),
@@ -1946,7 +1944,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         .o_ptype(rx_bsr__o_ptype),
         .o_los(rx_bsr__o_los),
         .o_bvalid(rx_bsr__o_bvalid),
-        .o_level(rx_bsr__o_level),
+        .o_code(rx_bsr__o_code),
         .o_phase(rx_bsr__o_phase),
         .o_cf(rx_bsr__o_cf),
         .o_hard(rx_bsr__o_hard),
@@ -1957,7 +1955,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     merkur_master__node__fwd fwd(
         .clock(clock),
         .i_bvalid(fwd__i_bvalid),
-        .i_level(fwd__i_level),
+        .i_code(fwd__i_code),
         .i_phase(fwd__i_phase),
         .i_hdr_bad(fwd__i_hdr_bad),
         .i_mute(fwd__i_mute),
@@ -2025,7 +2023,6 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         act_data_d = act_data_q;
         perr_d = perr_q;
         ferr_d = ferr_q;
-        rep_last_d = rep_last_q;
         rep_cut_d = rep_cut_q;
         fwd_cut_d = fwd_cut_q;
         last_cyc_d = last_cyc_q;
@@ -2041,7 +2038,7 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         rx_in__i_tst_fail = ~wrapped & swc__o_grace_over;
         rx_bsr__i_tst_fail = ~wrapped & swc__o_grace_over;
         fwd__i_bvalid = rx_in__o_bvalid;
-        fwd__i_level = rx_in__o_level;
+        fwd__i_code = rx_in__o_code;
         fwd__i_phase = rx_in__o_phase;
         fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0) & ((rx_in__o_ptype != 2'h3) | ~rtx_on));
         fwd__i_armed = armed_q;
@@ -2226,12 +2223,9 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
         if (rx_bsr__o_wvalid & (rx_bsr__o_kind == 2'h0) & rx_bsr__o_ok & (rx_bsr__o_ptype == 2'h2)) begin
             rep_cut_d = 1'b1;
         end
-        rep__i_code = rx_bsr__o_level ^ rep_last_q;
+        rep__i_code = rx_bsr__o_code;
         if (rep_cut_q) begin
             rep__i_code = 1'b1;
-        end
-        if (rx_bsr__o_bvalid) begin
-            rep_last_d = rx_bsr__o_level;
         end
         rep__i_phase = rx_bsr__o_phase;
         tst__i_ack = rx_bsr__o_tst;
@@ -2260,8 +2254,6 @@ module merkur_master__node(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actu
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial rep_last_q = 1'h0;
-    always @(posedge clock) rep_last_q <= rep_last_d;
     initial rep_cut_q = 1'h0;
     always @(posedge clock) rep_cut_q <= rep_cut_d;
     initial fwd_cut_q = 1'h0;
@@ -2472,7 +2464,7 @@ endmodule // merkur_master__node__dark
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
-// | `i_bvalid`, `i_level`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits (from [`crate::node::port_rx`]) |
+// | `i_bvalid`, `i_code`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits, NRZI-decoded (from [`crate::node::port_rx`]) |
 // | `i_hdr_bad` | in | 1 | clock | header rejected, or not a DATA packet: pass the rest unchanged |
 // | `i_mute` | in | 1 | clock | send idles for the code bits arriving from now on (a TST's rest) |
 // | `i_slots_m1`, `i_address` | in | 12 | static | slot count − 1, home slot |
@@ -2498,9 +2490,11 @@ endmodule // merkur_master__node__dark
 // Pipeline (issue 20: every stage a few levels of logic at 2 × the line
 // rate): stage A decodes a group in the clock its last bit arrives (and
 // the action of a word's first group); stage B, the next clock, decides
-// the rewrite from registers (the word flags and the fresh word with its
-// parities are prepared a clock ahead, `pre_*`, `f_*`); stage C, the
-// clock after, encodes it into the delay line and sums the delta parity.
+// the rewrite from registers (the word flags and the fresh word are
+// prepared a clock ahead, `pre_*`, `f_*`; a fresh word's parities, like a
+// rewritten word's, come from the incoming word's and the changes made);
+// stage C, the clock after, encodes it into the delay line and sums the
+// delta parity.
 //
 // Latency: 6 bit times (one group and one bit, so that stage C's rewrite
 // is in place before the group's first bit leaves) from INPUT bit to the
@@ -2516,12 +2510,12 @@ endmodule // merkur_master__node__dark
 //
 // (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
-module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_rtx_idx,o_rtx_ok,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
+module merkur_master__node__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_rtx_idx,o_rtx_ok,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
     // Module arguments
     input wire  clock;
     input wire  i_bvalid;
-    input wire  i_level;
+    input wire  i_code;
     input wire  [1:0] i_phase;
     input wire  i_hdr_bad;
     input wire  i_mute;
@@ -2566,8 +2560,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     localparam  rtx_on = 1'b1;
 
     // Registers and child block ports
-    reg  prev_d;
-    reg  prev_q;
     reg  [9:0] window_d;
     reg  [9:0] window_q;
     reg  [5:0] delay_d;
@@ -2658,10 +2650,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     reg  [3:0] f_reason_q;
     reg  [3:0] f_rn_d;
     reg  [3:0] f_rn_q;
-    reg  f_pa_d;
-    reg  f_pa_q;
-    reg  f_pb_d;
-    reg  f_pb_q;
     reg  pre_home_d;
     reg  pre_home_q;
     reg  at_home_d;
@@ -2737,7 +2725,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
 
     // Combinational logic
     always @(*) begin
-        prev_d = prev_q;
         window_d = window_q;
         delay_d = delay_q;
         c_pend_d = c_pend_q;
@@ -2778,8 +2765,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         f_alarm_d = f_alarm_q;
         f_reason_d = f_reason_q;
         f_rn_d = f_rn_q;
-        f_pa_d = f_pa_q;
-        f_pb_d = f_pb_q;
         pre_home_d = pre_home_q;
         at_home_d = at_home_q;
         fs_r_d = fs_r_q;
@@ -2796,7 +2781,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
         in_data_d = in_data_q;
         in_s_d = in_s_q;
         clr_h0_d = clr_h0_q;
-        code = i_level ^ prev_q;
+        code = i_code;
         shifted = window_q << 1;
         if (code) begin
             shifted = (window_q << 1) | 10'h1;
@@ -2984,8 +2969,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             f_alarm_d = send_c;
             f_reason_d = i_alarm_reason;
             f_rn_d = fresh_rn;
-            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_rn[3] ^ fresh_rn[2] ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
-            f_pb_d = ~(fresh_alive ^ fresh_rn[2] ^ fresh_rn[1] ^ fresh_rn[0] ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
         end
         pa_fix = 1'b0;
         pb_fix = 1'b0;
@@ -3025,10 +3008,10 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             end
             if (dg == 3'h4) begin
                 nib_out = (f_data_q[(12)+:(4)] >> 1) & 4'h6;
-                if (f_pa_q) begin
+                if (~(in_pa_q ^ d_a_q ^ f_data_q[15])) begin
                     nib_out = nib_out | 4'h8;
                 end
-                if (f_pb_q) begin
+                if (~(in_pb_q ^ d_b_q ^ f_data_q[15] ^ f_data_q[14])) begin
                     nib_out = nib_out | 4'h1;
                 end
             end
@@ -3155,7 +3138,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
             slot_d = slot_q + 12'h1;
         end
         if (i_bvalid) begin
-            prev_d = i_level;
             window_d = shifted;
             delay_d = delay_q << 1;
             if (in_code) begin
@@ -3340,8 +3322,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial prev_q = 1'h0;
-    always @(posedge clock) prev_q <= prev_d;
     initial window_q = 10'h0;
     always @(posedge clock) window_q <= window_d;
     initial delay_q = 6'h0;
@@ -3432,10 +3412,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,
     always @(posedge clock) f_reason_q <= f_reason_d;
     initial f_rn_q = 4'h0;
     always @(posedge clock) f_rn_q <= f_rn_d;
-    initial f_pa_q = 1'h0;
-    always @(posedge clock) f_pa_q <= f_pa_d;
-    initial f_pb_q = 1'h0;
-    always @(posedge clock) f_pb_q <= f_pb_d;
     initial pre_home_q = 1'h0;
     always @(posedge clock) pre_home_q <= pre_home_d;
     initial at_home_q = 1'h0;
@@ -4099,7 +4075,7 @@ endmodule // merkur_master__node__rep
 // | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 // | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
 // | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtl`] |
-// | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+// | `o_bvalid`, `o_code`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR: `o_code` 1 where the line level changed) |
 //
 // Latency: as [`Monitor`]; stream-controller outputs one clock later.
 //
@@ -4109,7 +4085,7 @@ endmodule // merkur_master__node__rep
 // o_cf      _____________________________________/‾‾‾‾‾‾‾‾‾‾‾‾‾
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_level,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
+module merkur_master__node__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_code,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
 
     // Module arguments
     input wire  clock;
@@ -4135,7 +4111,7 @@ module merkur_master__node__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fa
     output reg  [1:0] o_ptype;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_cf;
     output reg  o_hard;
@@ -4146,7 +4122,7 @@ module merkur_master__node__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fa
     // Registers and child block ports
     wire  mon__o_los;
     wire  mon__o_bvalid;
-    wire  mon__o_level;
+    wire  mon__o_code;
     wire  [1:0] mon__o_phase;
     wire  mon__o_start;
     wire  mon__o_inpkt;
@@ -4188,7 +4164,7 @@ module merkur_master__node__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fa
         .i_flush(i_flush),
         .o_los(mon__o_los),
         .o_bvalid(mon__o_bvalid),
-        .o_level(mon__o_level),
+        .o_code(mon__o_code),
         .o_phase(mon__o_phase),
         .o_start(mon__o_start),
         .o_inpkt(mon__o_inpkt),
@@ -4255,7 +4231,7 @@ module merkur_master__node__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fa
         o_ptype = mon__o_ptype;
         o_los = mon__o_los;
         o_bvalid = mon__o_bvalid;
-        o_level = mon__o_level;
+        o_code = mon__o_code;
         o_phase = mon__o_phase;
         o_cf = ctrl__o_cf;
         o_hard = ctrl__o_hard;
@@ -4428,7 +4404,7 @@ endmodule // merkur_master__node__rx_bsr__ctrl
 // | `i_slots_m1`, `i_address` | in | 12 | static | as [`WordRx`] |
 // | `i_flush` | in | 1 | clock | the input was switched to another line: the packet ends, a held word is dropped |
 // | `o_los` | out | 1 | clock | loss of signal |
-// | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+// | `o_bvalid`, `o_code`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR: `o_code` 1 where the line level changed) |
 // | `o_start` | out | 1 | clock | J K found |
 // | `o_inpkt` | out | 1 | clock | inside a packet |
 // | `o_wvalid` … `o_ptype` | out | | clock | as [`WordRx`] |
@@ -4459,7 +4435,7 @@ endmodule // merkur_master__node__rx_bsr__ctrl
 // o_wvalid            ^    ^     ^              ^   (each ~2.5 bit times after its word)
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_level,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_code,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
 
     // Module arguments
     input wire  clock;
@@ -4469,7 +4445,7 @@ module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_f
     input wire  i_flush;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_start;
     output reg  o_inpkt;
@@ -4494,10 +4470,11 @@ module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_f
     // Registers and child block ports
     wire  cdr__o_valid;
     wire  cdr__o_bit;
+    wire  cdr__o_code;
     wire  cdr__o_los;
     wire  [1:0] cdr__o_phase;
     reg  framer__i_valid;
-    reg  framer__i_level;
+    reg  framer__i_code;
     reg  framer__i_end;
     wire  framer__o_start;
     wire  framer__o_gvalid;
@@ -4523,8 +4500,6 @@ module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_f
     wire  word__o_own;
     wire  word__o_hdr_bad;
     wire  [1:0] word__o_ptype;
-    reg  last_lvl_d;
-    reg  last_lvl_q;
     reg  [2:0] quiet_d;
     reg  [2:0] quiet_q;
     reg  emit_d;
@@ -4541,13 +4516,14 @@ module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_f
         .i_samples(i_samples),
         .o_valid(cdr__o_valid),
         .o_bit(cdr__o_bit),
+        .o_code(cdr__o_code),
         .o_los(cdr__o_los),
         .o_phase(cdr__o_phase)
     );
     merkur_master__node__rx_bsr__mon__framer framer(
         .clock(clock),
         .i_valid(framer__i_valid),
-        .i_level(framer__i_level),
+        .i_code(framer__i_code),
         .i_end(framer__i_end),
         .o_start(framer__o_start),
         .o_gvalid(framer__o_gvalid),
@@ -4582,12 +4558,11 @@ module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_f
 
     // Combinational logic
     always @(*) begin
-        last_lvl_d = last_lvl_q;
         quiet_d = quiet_q;
         emit_d = emit_q;
         p_valid_d = p_valid_q;
         framer__i_valid = cdr__o_valid;
-        framer__i_level = cdr__o_bit;
+        framer__i_code = cdr__o_code;
         framer__i_end = word__o_end | cdr__o_los | (quiet_q == drop_after) | i_flush;
         word__i_start = framer__o_start;
         word__i_gvalid = framer__o_gvalid;
@@ -4595,14 +4570,13 @@ module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_f
         word__i_idle = framer__o_idle;
         o_los = cdr__o_los;
         o_bvalid = cdr__o_valid;
-        o_level = cdr__o_bit;
+        o_code = cdr__o_code;
         o_phase = cdr__o_phase;
         o_start = framer__o_start;
         o_inpkt = framer__o_inpkt;
         o_hdr_bad = word__o_hdr_bad;
-        conf_edge = cdr__o_valid & (cdr__o_bit != last_lvl_q);
+        conf_edge = cdr__o_valid & cdr__o_code;
         if (cdr__o_valid) begin
-            last_lvl_d = cdr__o_bit;
             quiet_d = 3'h0;
         end
         else if (quiet_q != 3'h7) begin
@@ -4636,8 +4610,6 @@ module merkur_master__node__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_f
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial last_lvl_q = 1'h0;
-    always @(posedge clock) last_lvl_q <= last_lvl_d;
     initial quiet_q = 3'h0;
     always @(posedge clock) quiet_q <= quiet_d;
     initial emit_q = 1'h0;
@@ -4665,7 +4637,9 @@ endmodule // merkur_master__node__rx_bsr__mon
 // clock), which leaves a sample of margin. Tested
 // (`sim/tests/cdr.rs`): 10^6 bits at ±2000 ppm relative offset with
 // every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
-// fail. At most one bit is recovered per clock.
+// fail. At most one bit is recovered per clock, with its level (`o_bit`)
+// and its code (`o_code`, NRZI-decoded: the level changed), so the
+// framer, the forwarder and the repeaters read one decode, not one each.
 //
 // A dead line: after [`MUTE_SAMPLES`] (8 bit times) without a transition no
 // more bits are taken, so a break passes on a cut-short packet, not a run
@@ -4683,10 +4657,11 @@ endmodule // merkur_master__node__rx_bsr__mon
 // | `i_samples` | in | 4 | clock | line samples, bit 0 first in time |
 // | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
 // | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
+// | `o_code` | out | 1 | clock | the bit decoded: 1 when its level differs from the previous recovered bit's (NRZI 1) |
 // | `o_los` | out | 1 | clock | loss of signal (no edge for 32 bit times) |
 // | `o_phase` | out | 2 | clock | which sample of its clock the bit was taken from (0 first) |
 //
-// Latency: `o_valid`/`o_bit`/`o_phase` are registered: a bit appears one
+// Latency: `o_valid`/`o_bit`/`o_code`/`o_phase` are registered: a bit appears one
 // clock after the clock whose samples contained its centre (4 samples after
 // its edge), so 0.5–1 bit time after the edge.
 //
@@ -4698,13 +4673,14 @@ endmodule // merkur_master__node__rx_bsr__mon
 // o_bit             0                 1                 1
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,o_phase);
+module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,o_phase);
 
     // Module arguments
     input wire  clock;
     input wire  [3:0] i_samples;
     output reg  o_valid;
     output reg  o_bit;
+    output reg  o_code;
     output reg  o_los;
     output reg  [1:0] o_phase;
 
@@ -4725,6 +4701,8 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los
     reg  rx_valid_q;
     reg  rx_bit_d;
     reg  rx_bit_q;
+    reg  rx_code_d;
+    reg  rx_code_q;
     reg  los_flag_d;
     reg  los_flag_q;
 
@@ -4743,6 +4721,7 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los
         quiet_d = quiet_q;
         rx_valid_d = rx_valid_q;
         rx_bit_d = rx_bit_q;
+        rx_code_d = rx_code_q;
         los_flag_d = los_flag_q;
         prior = i_samples << 1;
         if (last_q) begin
@@ -4779,6 +4758,7 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
             rx_bit_d = i_samples[take_at];
+            rx_code_d = i_samples[take_at] ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin
@@ -4793,6 +4773,7 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los
         end
         o_valid = rx_valid_q;
         o_bit = rx_bit_q;
+        o_code = rx_code_q;
         o_los = los_flag_q;
         o_phase = phase_q;
     end
@@ -4810,15 +4791,18 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los
     always @(posedge clock) rx_valid_q <= rx_valid_d;
     initial rx_bit_q = 1'h0;
     always @(posedge clock) rx_bit_q <= rx_bit_d;
+    initial rx_code_q = 1'h0;
+    always @(posedge clock) rx_code_q <= rx_code_d;
     initial los_flag_q = 1'h0;
     always @(posedge clock) los_flag_q <= los_flag_d;
 endmodule // merkur_master__node__rx_bsr__mon__cdr
 // --------------------------------------------------------------------------
-// `framer`: FramerRx, NRZI decoder, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
+// `framer`: FramerRx, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
 //
-// # framer_rx — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
+// # framer_rx — start-delimiter (CS) detector, group aligner (protocol §2, §3)
 //
-// Purpose: turns recovered line levels into code groups. While hunting it
+// Purpose: turns recovered code bits (NRZI-decoded by [`crate::line::cdr`])
+// into code groups. While hunting it
 // compares the last 10 code bits with J K at every bit position; on a match
 // it pulses `o_start` and from then on emits one 5-bit group every 5 code
 // bits, until the word layer says the packet has ended (`i_end`: after the
@@ -4831,8 +4815,8 @@ endmodule // merkur_master__node__rx_bsr__mon__cdr
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock |
-// | `i_valid` | in | 1 | clock | `i_level` holds a recovered bit (from [`crate::line::cdr`]) |
-// | `i_level` | in | 1 | clock | recovered line level |
+// | `i_valid` | in | 1 | clock | `i_code` holds a recovered bit (from [`crate::line::cdr`]) |
+// | `i_code` | in | 1 | clock | its code bit (1: the line level changed) |
 // | `i_end` | in | 1 | clock | leave the packet, hunt for J K again |
 // | `o_start` | out | 1 | clock | J K found; the next group is the packet's first |
 // | `o_gvalid` | out | 1 | clock | `o_group` holds a group of the packet |
@@ -4852,12 +4836,12 @@ endmodule // merkur_master__node__rx_bsr__mon__cdr
 // o_inpkt    ______________________/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\___________
 // ```
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
+module merkur_master__node__rx_bsr__mon__framer(clock,i_valid,i_code,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
 
     // Module arguments
     input wire  clock;
     input wire  i_valid;
-    input wire  i_level;
+    input wire  i_code;
     input wire  i_end;
     output reg  o_start;
     output reg  o_gvalid;
@@ -4869,8 +4853,6 @@ module merkur_master__node__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_st
     localparam  jk = 10'b1100010001;
 
     // Registers and child block ports
-    reg  prev_d;
-    reg  prev_q;
     reg  [9:0] window_d;
     reg  [9:0] window_q;
     reg  inpkt_d;
@@ -4891,7 +4873,6 @@ module merkur_master__node__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_st
 
     // Combinational logic
     always @(*) begin
-        prev_d = prev_q;
         window_d = window_q;
         inpkt_d = inpkt_q;
         count_d = count_q;
@@ -4902,11 +4883,10 @@ module merkur_master__node__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_st
         start_d = 1'b0;
         gvalid_d = 1'b0;
         shifted = window_q << 1;
-        if (i_level ^ prev_q) begin
+        if (i_code) begin
             shifted = (window_q << 1) | 10'h1;
         end
         if (i_valid) begin
-            prev_d = i_level;
             window_d = shifted;
             if (inpkt_q) begin
                 if (count_q == 3'h4) begin
@@ -4936,8 +4916,6 @@ module merkur_master__node__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_st
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial prev_q = 1'h0;
-    always @(posedge clock) prev_q <= prev_d;
     initial window_q = 10'h0;
     always @(posedge clock) window_q <= window_d;
     initial inpkt_q = 1'h0;
@@ -5524,7 +5502,7 @@ endmodule // merkur_master__node__rx_bsr__mon__word__nib_top
 // `rx_in`: PortRx, Supervised receive port. (rtl/src/node/port_rx.rs)
 // Documented at module `merkur_master__node__rx_bsr` above.
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_level,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
+module merkur_master__node__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_code,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
 
     // Module arguments
     input wire  clock;
@@ -5550,7 +5528,7 @@ module merkur_master__node__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fai
     output reg  [1:0] o_ptype;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_cf;
     output reg  o_hard;
@@ -5561,7 +5539,7 @@ module merkur_master__node__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fai
     // Registers and child block ports
     wire  mon__o_los;
     wire  mon__o_bvalid;
-    wire  mon__o_level;
+    wire  mon__o_code;
     wire  [1:0] mon__o_phase;
     wire  mon__o_start;
     wire  mon__o_inpkt;
@@ -5603,7 +5581,7 @@ module merkur_master__node__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fai
         .i_flush(i_flush),
         .o_los(mon__o_los),
         .o_bvalid(mon__o_bvalid),
-        .o_level(mon__o_level),
+        .o_code(mon__o_code),
         .o_phase(mon__o_phase),
         .o_start(mon__o_start),
         .o_inpkt(mon__o_inpkt),
@@ -5670,7 +5648,7 @@ module merkur_master__node__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fai
         o_ptype = mon__o_ptype;
         o_los = mon__o_los;
         o_bvalid = mon__o_bvalid;
-        o_level = mon__o_level;
+        o_code = mon__o_code;
         o_phase = mon__o_phase;
         o_cf = ctrl__o_cf;
         o_hard = ctrl__o_hard;
@@ -5780,7 +5758,7 @@ endmodule // merkur_master__node__rx_in__ctrl
 // `mon`: Monitor, Fibre monitor / receive chain. (rtl/src/line/monitor.rs)
 // Documented at module `merkur_master__node__rx_bsr__mon` above.
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_level,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_code,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
 
     // Module arguments
     input wire  clock;
@@ -5790,7 +5768,7 @@ module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_fl
     input wire  i_flush;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_start;
     output reg  o_inpkt;
@@ -5815,10 +5793,11 @@ module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_fl
     // Registers and child block ports
     wire  cdr__o_valid;
     wire  cdr__o_bit;
+    wire  cdr__o_code;
     wire  cdr__o_los;
     wire  [1:0] cdr__o_phase;
     reg  framer__i_valid;
-    reg  framer__i_level;
+    reg  framer__i_code;
     reg  framer__i_end;
     wire  framer__o_start;
     wire  framer__o_gvalid;
@@ -5844,8 +5823,6 @@ module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_fl
     wire  word__o_own;
     wire  word__o_hdr_bad;
     wire  [1:0] word__o_ptype;
-    reg  last_lvl_d;
-    reg  last_lvl_q;
     reg  [2:0] quiet_d;
     reg  [2:0] quiet_q;
     reg  emit_d;
@@ -5862,13 +5839,14 @@ module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_fl
         .i_samples(i_samples),
         .o_valid(cdr__o_valid),
         .o_bit(cdr__o_bit),
+        .o_code(cdr__o_code),
         .o_los(cdr__o_los),
         .o_phase(cdr__o_phase)
     );
     merkur_master__node__rx_in__mon__framer framer(
         .clock(clock),
         .i_valid(framer__i_valid),
-        .i_level(framer__i_level),
+        .i_code(framer__i_code),
         .i_end(framer__i_end),
         .o_start(framer__o_start),
         .o_gvalid(framer__o_gvalid),
@@ -5903,12 +5881,11 @@ module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_fl
 
     // Combinational logic
     always @(*) begin
-        last_lvl_d = last_lvl_q;
         quiet_d = quiet_q;
         emit_d = emit_q;
         p_valid_d = p_valid_q;
         framer__i_valid = cdr__o_valid;
-        framer__i_level = cdr__o_bit;
+        framer__i_code = cdr__o_code;
         framer__i_end = word__o_end | cdr__o_los | (quiet_q == drop_after) | i_flush;
         word__i_start = framer__o_start;
         word__i_gvalid = framer__o_gvalid;
@@ -5916,14 +5893,13 @@ module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_fl
         word__i_idle = framer__o_idle;
         o_los = cdr__o_los;
         o_bvalid = cdr__o_valid;
-        o_level = cdr__o_bit;
+        o_code = cdr__o_code;
         o_phase = cdr__o_phase;
         o_start = framer__o_start;
         o_inpkt = framer__o_inpkt;
         o_hdr_bad = word__o_hdr_bad;
-        conf_edge = cdr__o_valid & (cdr__o_bit != last_lvl_q);
+        conf_edge = cdr__o_valid & cdr__o_code;
         if (cdr__o_valid) begin
-            last_lvl_d = cdr__o_bit;
             quiet_d = 3'h0;
         end
         else if (quiet_q != 3'h7) begin
@@ -5957,8 +5933,6 @@ module merkur_master__node__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_fl
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial last_lvl_q = 1'h0;
-    always @(posedge clock) last_lvl_q <= last_lvl_d;
     initial quiet_q = 3'h0;
     always @(posedge clock) quiet_q <= quiet_d;
     initial emit_q = 1'h0;
@@ -5970,13 +5944,14 @@ endmodule // merkur_master__node__rx_in__mon
 // `cdr`: Cdr, Oversampling clock and data recovery. (rtl/src/line/cdr.rs)
 // Documented at module `merkur_master__node__rx_bsr__mon__cdr` above.
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,o_phase);
+module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,o_phase);
 
     // Module arguments
     input wire  clock;
     input wire  [3:0] i_samples;
     output reg  o_valid;
     output reg  o_bit;
+    output reg  o_code;
     output reg  o_los;
     output reg  [1:0] o_phase;
 
@@ -5997,6 +5972,8 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,
     reg  rx_valid_q;
     reg  rx_bit_d;
     reg  rx_bit_q;
+    reg  rx_code_d;
+    reg  rx_code_q;
     reg  los_flag_d;
     reg  los_flag_q;
 
@@ -6015,6 +5992,7 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,
         quiet_d = quiet_q;
         rx_valid_d = rx_valid_q;
         rx_bit_d = rx_bit_q;
+        rx_code_d = rx_code_q;
         los_flag_d = los_flag_q;
         prior = i_samples << 1;
         if (last_q) begin
@@ -6051,6 +6029,7 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
             rx_bit_d = i_samples[take_at];
+            rx_code_d = i_samples[take_at] ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin
@@ -6065,6 +6044,7 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,
         end
         o_valid = rx_valid_q;
         o_bit = rx_bit_q;
+        o_code = rx_code_q;
         o_los = los_flag_q;
         o_phase = phase_q;
     end
@@ -6082,19 +6062,21 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,
     always @(posedge clock) rx_valid_q <= rx_valid_d;
     initial rx_bit_q = 1'h0;
     always @(posedge clock) rx_bit_q <= rx_bit_d;
+    initial rx_code_q = 1'h0;
+    always @(posedge clock) rx_code_q <= rx_code_d;
     initial los_flag_q = 1'h0;
     always @(posedge clock) los_flag_q <= los_flag_d;
 endmodule // merkur_master__node__rx_in__mon__cdr
 // --------------------------------------------------------------------------
-// `framer`: FramerRx, NRZI decoder, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
+// `framer`: FramerRx, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
 // Documented at module `merkur_master__node__rx_bsr__mon__framer` above.
 // --------------------------------------------------------------------------
-module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
+module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_code,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
 
     // Module arguments
     input wire  clock;
     input wire  i_valid;
-    input wire  i_level;
+    input wire  i_code;
     input wire  i_end;
     output reg  o_start;
     output reg  o_gvalid;
@@ -6106,8 +6088,6 @@ module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_sta
     localparam  jk = 10'b1100010001;
 
     // Registers and child block ports
-    reg  prev_d;
-    reg  prev_q;
     reg  [9:0] window_d;
     reg  [9:0] window_q;
     reg  inpkt_d;
@@ -6128,7 +6108,6 @@ module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_sta
 
     // Combinational logic
     always @(*) begin
-        prev_d = prev_q;
         window_d = window_q;
         inpkt_d = inpkt_q;
         count_d = count_q;
@@ -6139,11 +6118,10 @@ module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_sta
         start_d = 1'b0;
         gvalid_d = 1'b0;
         shifted = window_q << 1;
-        if (i_level ^ prev_q) begin
+        if (i_code) begin
             shifted = (window_q << 1) | 10'h1;
         end
         if (i_valid) begin
-            prev_d = i_level;
             window_d = shifted;
             if (inpkt_q) begin
                 if (count_q == 3'h4) begin
@@ -6173,8 +6151,6 @@ module merkur_master__node__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_sta
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial prev_q = 1'h0;
-    always @(posedge clock) prev_q <= prev_d;
     initial window_q = 10'h0;
     always @(posedge clock) window_q <= window_d;
     initial inpkt_q = 1'h0;

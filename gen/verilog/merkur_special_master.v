@@ -210,7 +210,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     wire  [1:0] rx_in__o_ptype;
     wire  rx_in__o_los;
     wire  rx_in__o_bvalid;
-    wire  rx_in__o_level;
+    wire  rx_in__o_code;
     wire  [1:0] rx_in__o_phase;
     wire  rx_in__o_cf;
     wire  rx_in__o_hard;
@@ -237,7 +237,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     wire  [1:0] rx_bsr__o_ptype;
     wire  rx_bsr__o_los;
     wire  rx_bsr__o_bvalid;
-    wire  rx_bsr__o_level;
+    wire  rx_bsr__o_code;
     wire  [1:0] rx_bsr__o_phase;
     wire  rx_bsr__o_cf;
     wire  rx_bsr__o_hard;
@@ -334,8 +334,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  rdata_q;
     reg  relay_d;
     reg  relay_q;
-    reg  rlast_d;
-    reg  rlast_q;
     reg  [1:0] rdead_d;
     reg  [1:0] rdead_q;
     wire  [15:0] mdb__o_wb_dat;
@@ -476,7 +474,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  await_rb_d;
     reg  await_rb_q;
     reg  fwd__i_bvalid;
-    reg  fwd__i_level;
+    reg  fwd__i_code;
     reg  [1:0] fwd__i_phase;
     reg  fwd__i_hdr_bad;
     reg  fwd__i_mute;
@@ -526,8 +524,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  join_r_q;
     reg  [19:0] et_d;
     reg  [19:0] et_q;
-    reg  in_last_d;
-    reg  in_last_q;
     reg  [38:0] in_code_d;
     reg  [38:0] in_code_q;
     reg  [19:0] since_jk_d;
@@ -700,7 +696,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .o_ptype(rx_in__o_ptype),
         .o_los(rx_in__o_los),
         .o_bvalid(rx_in__o_bvalid),
-        .o_level(rx_in__o_level),
+        .o_code(rx_in__o_code),
         .o_phase(rx_in__o_phase),
         .o_cf(rx_in__o_cf),
         .o_hard(rx_in__o_hard),
@@ -732,7 +728,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .o_ptype(rx_bsr__o_ptype),
         .o_los(rx_bsr__o_los),
         .o_bvalid(rx_bsr__o_bvalid),
-        .o_level(rx_bsr__o_level),
+        .o_code(rx_bsr__o_code),
         .o_phase(rx_bsr__o_phase),
         .o_cf(rx_bsr__o_cf),
         .o_hard(rx_bsr__o_hard),
@@ -917,7 +913,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     merkur_special_master__fwd fwd(
         .clock(clock),
         .i_bvalid(fwd__i_bvalid),
-        .i_level(fwd__i_level),
+        .i_code(fwd__i_code),
         .i_phase(fwd__i_phase),
         .i_hdr_bad(fwd__i_hdr_bad),
         .i_mute(fwd__i_mute),
@@ -1049,7 +1045,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         rcd_run_d = rcd_run_q;
         rdata_d = rdata_q;
         relay_d = relay_q;
-        rlast_d = rlast_q;
         rdead_d = rdead_q;
         pend_rc_d = pend_rc_q;
         ret_rwp_d = ret_rwp_q;
@@ -1072,7 +1067,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         last_cyc3_d = last_cyc3_q;
         fwd_cut_d = fwd_cut_q;
         rep_cut_d = rep_cut_q;
-        in_last_d = in_last_q;
         in_code_d = in_code_q;
         fs_cleared_d = fs_cleared_q;
         since_jk_d = since_jk_q;
@@ -1694,11 +1688,8 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
             if (rdl_q[75]) begin
                 rdx_d = (rdx_q << 1) | 10'h1;
             end
-            if (rx_bsr__o_bvalid & (rx_bsr__o_level != rlast_q)) begin
+            if (rx_bsr__o_bvalid & rx_bsr__o_code) begin
                 rdl_d = (rdl_q << 1) | 76'h1;
-            end
-            if (rx_bsr__o_bvalid) begin
-                rlast_d = rx_bsr__o_level;
             end
             if (rcd_run_q) begin
                 rcd_d = rcd_q - 7'h1;
@@ -1751,7 +1742,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         o_po = dark__o_po;
         o_so = dark__o_so;
         fwd__i_bvalid = rx_in__o_bvalid;
-        fwd__i_level = rx_in__o_level;
+        fwd__i_code = rx_in__o_code;
         fwd__i_phase = rx_in__o_phase;
         fwd__i_hdr_bad = rx_in__o_hdr_bad | (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & rx_in__o_ok & (rx_in__o_ptype != 2'h0) & (rx_in__o_ptype != 2'h3));
         fwd__i_armed = armed_q;
@@ -1790,16 +1781,15 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         if (rx_bsr__o_wvalid & (rx_bsr__o_kind == 2'h0) & rx_bsr__o_ok & (rx_bsr__o_ptype == 2'h2)) begin
             rep_cut_d = 1'b1;
         end
-        pass_code = (rx_bsr__o_level != rlast_q) | rep_cut_q;
+        pass_code = rx_bsr__o_code | rep_cut_q;
         cyc_gap3 = rx_in__o_data[(12)+:(3)] - last_cyc3_q - 3'h1;
         cyc_take = last_cyc3_q + i_prio + 3'h1;
         if (half_q & (et_q != 20'hfffff)) begin
             et_d = et_q + 20'h1;
         end
         if (rx_in__o_bvalid) begin
-            in_last_d = rx_in__o_level;
             in_code_d = in_code_q << 1;
-            if (rx_in__o_level != in_last_q) begin
+            if (rx_in__o_code) begin
                 in_code_d = (in_code_q << 1) | 39'h1;
             end
         end
@@ -1920,8 +1910,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) rdata_q <= rdata_d;
     initial relay_q = 1'h0;
     always @(posedge clock) relay_q <= relay_d;
-    initial rlast_q = 1'h0;
-    always @(posedge clock) rlast_q <= rlast_d;
     initial rdead_q = 2'h0;
     always @(posedge clock) rdead_q <= rdead_d;
     initial st_used_q = 1'h0;
@@ -2014,8 +2002,6 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     always @(posedge clock) join_r_q <= join_r_d;
     initial et_q = 20'h0;
     always @(posedge clock) et_q <= et_d;
-    initial in_last_q = 1'h0;
-    always @(posedge clock) in_last_q <= in_last_d;
     initial in_code_q = 39'h0;
     always @(posedge clock) in_code_q <= in_code_d;
     initial since_jk_q = 20'h0;
@@ -2772,7 +2758,7 @@ endmodule // merkur_special_master__ftx__tx
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
-// | `i_bvalid`, `i_level`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits (from [`crate::node::port_rx`]) |
+// | `i_bvalid`, `i_code`, `i_phase` | in | 1, 1, 2 | clock | recovered INPUT bits, NRZI-decoded (from [`crate::node::port_rx`]) |
 // | `i_hdr_bad` | in | 1 | clock | header rejected, or not a DATA packet: pass the rest unchanged |
 // | `i_mute` | in | 1 | clock | send idles for the code bits arriving from now on (a TST's rest) |
 // | `i_slots_m1`, `i_address` | in | 12 | static | slot count − 1, home slot |
@@ -2798,9 +2784,11 @@ endmodule // merkur_special_master__ftx__tx
 // Pipeline (issue 20: every stage a few levels of logic at 2 × the line
 // rate): stage A decodes a group in the clock its last bit arrives (and
 // the action of a word's first group); stage B, the next clock, decides
-// the rewrite from registers (the word flags and the fresh word with its
-// parities are prepared a clock ahead, `pre_*`, `f_*`); stage C, the
-// clock after, encodes it into the delay line and sums the delta parity.
+// the rewrite from registers (the word flags and the fresh word are
+// prepared a clock ahead, `pre_*`, `f_*`; a fresh word's parities, like a
+// rewritten word's, come from the incoming word's and the changes made);
+// stage C, the clock after, encodes it into the delay line and sums the
+// delta parity.
 //
 // Latency: 6 bit times (one group and one bit, so that stage C's rewrite
 // is in place before the group's first bit leaves) from INPUT bit to the
@@ -2816,12 +2804,12 @@ endmodule // merkur_special_master__ftx__tx
 //
 // (Extended variant: six groups, the last one N5'.)
 // --------------------------------------------------------------------------
-module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_rtx_idx,o_rtx_ok,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
+module merkur_special_master__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_m1,i_address,i_actuator,i_sensor_data,i_act_out,i_fs,i_wrapped,i_alarm_req,i_alarm_reason,i_alarm_seq,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_armed,i_wvalid,i_wkind,i_wodd,i_wok,i_walarm,i_wdata,i_ptype,o_slot,o_rtx_own,o_rtx_idx,o_rtx_ok,o_regen,o_alarm_sent,o_sent_reason,o_prev_alarm,o_pkt_done,o_toggle,o_line);
 
     // Module arguments
     input wire  clock;
     input wire  i_bvalid;
-    input wire  i_level;
+    input wire  i_code;
     input wire  [1:0] i_phase;
     input wire  i_hdr_bad;
     input wire  i_mute;
@@ -2866,8 +2854,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     localparam  rtx_on = 1'b1;
 
     // Registers and child block ports
-    reg  prev_d;
-    reg  prev_q;
     reg  [9:0] window_d;
     reg  [9:0] window_q;
     reg  [5:0] delay_d;
@@ -2958,10 +2944,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     reg  [3:0] f_reason_q;
     reg  [3:0] f_rn_d;
     reg  [3:0] f_rn_q;
-    reg  f_pa_d;
-    reg  f_pa_q;
-    reg  f_pb_d;
-    reg  f_pb_q;
     reg  pre_home_d;
     reg  pre_home_q;
     reg  at_home_d;
@@ -3037,7 +3019,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
 
     // Combinational logic
     always @(*) begin
-        prev_d = prev_q;
         window_d = window_q;
         delay_d = delay_q;
         c_pend_d = c_pend_q;
@@ -3078,8 +3059,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         f_alarm_d = f_alarm_q;
         f_reason_d = f_reason_q;
         f_rn_d = f_rn_q;
-        f_pa_d = f_pa_q;
-        f_pb_d = f_pb_q;
         pre_home_d = pre_home_q;
         at_home_d = at_home_q;
         fs_r_d = fs_r_q;
@@ -3096,7 +3075,7 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
         in_data_d = in_data_q;
         in_s_d = in_s_q;
         clr_h0_d = clr_h0_q;
-        code = i_level ^ prev_q;
+        code = i_code;
         shifted = window_q << 1;
         if (code) begin
             shifted = (window_q << 1) | 10'h1;
@@ -3284,8 +3263,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             f_alarm_d = send_c;
             f_reason_d = i_alarm_reason;
             f_rn_d = fresh_rn;
-            f_pa_d = ~(send_c ^ fresh_alive ^ fresh_rn[3] ^ fresh_rn[2] ^ fresh_data[5] ^ fresh_data[4] ^ fresh_data[9] ^ fresh_data[8] ^ fresh_data[13] ^ fresh_data[12] ^ fresh_data[15]);
-            f_pb_d = ~(fresh_alive ^ fresh_rn[2] ^ fresh_rn[1] ^ fresh_rn[0] ^ fresh_data[1] ^ fresh_data[0] ^ fresh_data[4] ^ fresh_data[3] ^ fresh_data[2] ^ fresh_data[8] ^ fresh_data[7] ^ fresh_data[6] ^ fresh_data[12] ^ fresh_data[11] ^ fresh_data[10] ^ fresh_data[15] ^ fresh_data[14]);
         end
         pa_fix = 1'b0;
         pb_fix = 1'b0;
@@ -3325,10 +3302,10 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             end
             if (dg == 3'h4) begin
                 nib_out = (f_data_q[(12)+:(4)] >> 1) & 4'h6;
-                if (f_pa_q) begin
+                if (~(in_pa_q ^ d_a_q ^ f_data_q[15])) begin
                     nib_out = nib_out | 4'h8;
                 end
-                if (f_pb_q) begin
+                if (~(in_pb_q ^ d_b_q ^ f_data_q[15] ^ f_data_q[14])) begin
                     nib_out = nib_out | 4'h1;
                 end
             end
@@ -3455,7 +3432,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
             slot_d = slot_q + 12'h1;
         end
         if (i_bvalid) begin
-            prev_d = i_level;
             window_d = shifted;
             delay_d = delay_q << 1;
             if (in_code) begin
@@ -3640,8 +3616,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial prev_q = 1'h0;
-    always @(posedge clock) prev_q <= prev_d;
     initial window_q = 10'h0;
     always @(posedge clock) window_q <= window_d;
     initial delay_q = 6'h0;
@@ -3732,10 +3706,6 @@ module merkur_special_master__fwd(clock,i_bvalid,i_level,i_phase,i_hdr_bad,i_mut
     always @(posedge clock) f_reason_q <= f_reason_d;
     initial f_rn_q = 4'h0;
     always @(posedge clock) f_rn_q <= f_rn_d;
-    initial f_pa_q = 1'h0;
-    always @(posedge clock) f_pa_q <= f_pa_d;
-    initial f_pb_q = 1'h0;
-    always @(posedge clock) f_pb_q <= f_pb_d;
     initial pre_home_q = 1'h0;
     always @(posedge clock) pre_home_q <= pre_home_d;
     initial at_home_q = 1'h0;
@@ -5949,7 +5919,7 @@ endmodule // merkur_special_master__rep
 // | `i_flush` | in | 1 | clock | as [`Monitor`]; the stream controller's run of bad words restarts |
 // | `o_start`, `o_inpkt`, `o_wvalid`, `o_kind`, `o_slot`, `o_data`, `o_alive`, `o_alarm`, `o_ok`, `o_void`, `o_marked`, `o_own`, `o_hdr_bad`, `o_ptype` | out | | clock | as [`Monitor`] |
 // | `o_los`, `o_cf`, `o_hard`, `o_run`, `o_tst`, `o_ack` | out | 1 | clock | loss of signal; as [`StreamCtl`] |
-// | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+// | `o_bvalid`, `o_code`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR: `o_code` 1 where the line level changed) |
 //
 // Latency: as [`Monitor`]; stream-controller outputs one clock later.
 //
@@ -5959,7 +5929,7 @@ endmodule // merkur_special_master__rep
 // o_cf      _____________________________________/‾‾‾‾‾‾‾‾‾‾‾‾‾
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_level,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
+module merkur_special_master__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_code,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
 
     // Module arguments
     input wire  clock;
@@ -5985,7 +5955,7 @@ module merkur_special_master__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_
     output reg  [1:0] o_ptype;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_cf;
     output reg  o_hard;
@@ -5996,7 +5966,7 @@ module merkur_special_master__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_
     // Registers and child block ports
     wire  mon__o_los;
     wire  mon__o_bvalid;
-    wire  mon__o_level;
+    wire  mon__o_code;
     wire  [1:0] mon__o_phase;
     wire  mon__o_start;
     wire  mon__o_inpkt;
@@ -6038,7 +6008,7 @@ module merkur_special_master__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_
         .i_flush(i_flush),
         .o_los(mon__o_los),
         .o_bvalid(mon__o_bvalid),
-        .o_level(mon__o_level),
+        .o_code(mon__o_code),
         .o_phase(mon__o_phase),
         .o_start(mon__o_start),
         .o_inpkt(mon__o_inpkt),
@@ -6105,7 +6075,7 @@ module merkur_special_master__rx_bsr(clock,i_samples,i_slots_m1,i_address,i_tst_
         o_ptype = mon__o_ptype;
         o_los = mon__o_los;
         o_bvalid = mon__o_bvalid;
-        o_level = mon__o_level;
+        o_code = mon__o_code;
         o_phase = mon__o_phase;
         o_cf = ctrl__o_cf;
         o_hard = ctrl__o_hard;
@@ -6278,7 +6248,7 @@ endmodule // merkur_special_master__rx_bsr__ctrl
 // | `i_slots_m1`, `i_address` | in | 12 | static | as [`WordRx`] |
 // | `i_flush` | in | 1 | clock | the input was switched to another line: the packet ends, a held word is dropped |
 // | `o_los` | out | 1 | clock | loss of signal |
-// | `o_bvalid`, `o_level`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR) |
+// | `o_bvalid`, `o_code`, `o_phase` | out | 1, 1, 2 | clock | recovered bit stream (from the CDR: `o_code` 1 where the line level changed) |
 // | `o_start` | out | 1 | clock | J K found |
 // | `o_inpkt` | out | 1 | clock | inside a packet |
 // | `o_wvalid` … `o_ptype` | out | | clock | as [`WordRx`] |
@@ -6309,7 +6279,7 @@ endmodule // merkur_special_master__rx_bsr__ctrl
 // o_wvalid            ^    ^     ^              ^   (each ~2.5 bit times after its word)
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_level,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_code,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
 
     // Module arguments
     input wire  clock;
@@ -6319,7 +6289,7 @@ module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i
     input wire  i_flush;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_start;
     output reg  o_inpkt;
@@ -6344,10 +6314,11 @@ module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i
     // Registers and child block ports
     wire  cdr__o_valid;
     wire  cdr__o_bit;
+    wire  cdr__o_code;
     wire  cdr__o_los;
     wire  [1:0] cdr__o_phase;
     reg  framer__i_valid;
-    reg  framer__i_level;
+    reg  framer__i_code;
     reg  framer__i_end;
     wire  framer__o_start;
     wire  framer__o_gvalid;
@@ -6373,8 +6344,6 @@ module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i
     wire  word__o_own;
     wire  word__o_hdr_bad;
     wire  [1:0] word__o_ptype;
-    reg  last_lvl_d;
-    reg  last_lvl_q;
     reg  [2:0] quiet_d;
     reg  [2:0] quiet_q;
     reg  emit_d;
@@ -6391,13 +6360,14 @@ module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i
         .i_samples(i_samples),
         .o_valid(cdr__o_valid),
         .o_bit(cdr__o_bit),
+        .o_code(cdr__o_code),
         .o_los(cdr__o_los),
         .o_phase(cdr__o_phase)
     );
     merkur_special_master__rx_bsr__mon__framer framer(
         .clock(clock),
         .i_valid(framer__i_valid),
-        .i_level(framer__i_level),
+        .i_code(framer__i_code),
         .i_end(framer__i_end),
         .o_start(framer__o_start),
         .o_gvalid(framer__o_gvalid),
@@ -6432,12 +6402,11 @@ module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i
 
     // Combinational logic
     always @(*) begin
-        last_lvl_d = last_lvl_q;
         quiet_d = quiet_q;
         emit_d = emit_q;
         p_valid_d = p_valid_q;
         framer__i_valid = cdr__o_valid;
-        framer__i_level = cdr__o_bit;
+        framer__i_code = cdr__o_code;
         framer__i_end = word__o_end | cdr__o_los | (quiet_q == drop_after) | i_flush;
         word__i_start = framer__o_start;
         word__i_gvalid = framer__o_gvalid;
@@ -6445,14 +6414,13 @@ module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i
         word__i_idle = framer__o_idle;
         o_los = cdr__o_los;
         o_bvalid = cdr__o_valid;
-        o_level = cdr__o_bit;
+        o_code = cdr__o_code;
         o_phase = cdr__o_phase;
         o_start = framer__o_start;
         o_inpkt = framer__o_inpkt;
         o_hdr_bad = word__o_hdr_bad;
-        conf_edge = cdr__o_valid & (cdr__o_bit != last_lvl_q);
+        conf_edge = cdr__o_valid & cdr__o_code;
         if (cdr__o_valid) begin
-            last_lvl_d = cdr__o_bit;
             quiet_d = 3'h0;
         end
         else if (quiet_q != 3'h7) begin
@@ -6486,8 +6454,6 @@ module merkur_special_master__rx_bsr__mon(clock,i_samples,i_slots_m1,i_address,i
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial last_lvl_q = 1'h0;
-    always @(posedge clock) last_lvl_q <= last_lvl_d;
     initial quiet_q = 3'h0;
     always @(posedge clock) quiet_q <= quiet_d;
     initial emit_q = 1'h0;
@@ -6515,7 +6481,9 @@ endmodule // merkur_special_master__rx_bsr__mon
 // clock), which leaves a sample of margin. Tested
 // (`sim/tests/cdr.rs`): 10^6 bits at ±2000 ppm relative offset with
 // every bit boundary moved by up to ±1.4 samples; ±2.2 samples is shown to
-// fail. At most one bit is recovered per clock.
+// fail. At most one bit is recovered per clock, with its level (`o_bit`)
+// and its code (`o_code`, NRZI-decoded: the level changed), so the
+// framer, the forwarder and the repeaters read one decode, not one each.
 //
 // A dead line: after [`MUTE_SAMPLES`] (8 bit times) without a transition no
 // more bits are taken, so a break passes on a cut-short packet, not a run
@@ -6533,10 +6501,11 @@ endmodule // merkur_special_master__rx_bsr__mon
 // | `i_samples` | in | 4 | clock | line samples, bit 0 first in time |
 // | `o_valid` | out | 1 | clock | `o_bit` holds a recovered bit |
 // | `o_bit` | out | 1 | clock | recovered line level (NRZI, not yet decoded) |
+// | `o_code` | out | 1 | clock | the bit decoded: 1 when its level differs from the previous recovered bit's (NRZI 1) |
 // | `o_los` | out | 1 | clock | loss of signal (no edge for 32 bit times) |
 // | `o_phase` | out | 2 | clock | which sample of its clock the bit was taken from (0 first) |
 //
-// Latency: `o_valid`/`o_bit`/`o_phase` are registered: a bit appears one
+// Latency: `o_valid`/`o_bit`/`o_code`/`o_phase` are registered: a bit appears one
 // clock after the clock whose samples contained its centre (4 samples after
 // its edge), so 0.5–1 bit time after the edge.
 //
@@ -6548,13 +6517,14 @@ endmodule // merkur_special_master__rx_bsr__mon
 // o_bit             0                 1                 1
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,o_phase);
+module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,o_phase);
 
     // Module arguments
     input wire  clock;
     input wire  [3:0] i_samples;
     output reg  o_valid;
     output reg  o_bit;
+    output reg  o_code;
     output reg  o_los;
     output reg  [1:0] o_phase;
 
@@ -6575,6 +6545,8 @@ module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_l
     reg  rx_valid_q;
     reg  rx_bit_d;
     reg  rx_bit_q;
+    reg  rx_code_d;
+    reg  rx_code_q;
     reg  los_flag_d;
     reg  los_flag_q;
 
@@ -6593,6 +6565,7 @@ module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_l
         quiet_d = quiet_q;
         rx_valid_d = rx_valid_q;
         rx_bit_d = rx_bit_q;
+        rx_code_d = rx_code_q;
         los_flag_d = los_flag_q;
         prior = i_samples << 1;
         if (last_q) begin
@@ -6629,6 +6602,7 @@ module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_l
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
             rx_bit_d = i_samples[take_at];
+            rx_code_d = i_samples[take_at] ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin
@@ -6643,6 +6617,7 @@ module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_l
         end
         o_valid = rx_valid_q;
         o_bit = rx_bit_q;
+        o_code = rx_code_q;
         o_los = los_flag_q;
         o_phase = phase_q;
     end
@@ -6660,15 +6635,18 @@ module merkur_special_master__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_l
     always @(posedge clock) rx_valid_q <= rx_valid_d;
     initial rx_bit_q = 1'h0;
     always @(posedge clock) rx_bit_q <= rx_bit_d;
+    initial rx_code_q = 1'h0;
+    always @(posedge clock) rx_code_q <= rx_code_d;
     initial los_flag_q = 1'h0;
     always @(posedge clock) los_flag_q <= los_flag_d;
 endmodule // merkur_special_master__rx_bsr__mon__cdr
 // --------------------------------------------------------------------------
-// `framer`: FramerRx, NRZI decoder, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
+// `framer`: FramerRx, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
 //
-// # framer_rx — NRZI decoder, start-delimiter (CS) detector, group aligner (protocol §2, §3)
+// # framer_rx — start-delimiter (CS) detector, group aligner (protocol §2, §3)
 //
-// Purpose: turns recovered line levels into code groups. While hunting it
+// Purpose: turns recovered code bits (NRZI-decoded by [`crate::line::cdr`])
+// into code groups. While hunting it
 // compares the last 10 code bits with J K at every bit position; on a match
 // it pulses `o_start` and from then on emits one 5-bit group every 5 code
 // bits, until the word layer says the packet has ended (`i_end`: after the
@@ -6681,8 +6659,8 @@ endmodule // merkur_special_master__rx_bsr__mon__cdr
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock |
-// | `i_valid` | in | 1 | clock | `i_level` holds a recovered bit (from [`crate::line::cdr`]) |
-// | `i_level` | in | 1 | clock | recovered line level |
+// | `i_valid` | in | 1 | clock | `i_code` holds a recovered bit (from [`crate::line::cdr`]) |
+// | `i_code` | in | 1 | clock | its code bit (1: the line level changed) |
 // | `i_end` | in | 1 | clock | leave the packet, hunt for J K again |
 // | `o_start` | out | 1 | clock | J K found; the next group is the packet's first |
 // | `o_gvalid` | out | 1 | clock | `o_group` holds a group of the packet |
@@ -6702,12 +6680,12 @@ endmodule // merkur_special_master__rx_bsr__mon__cdr
 // o_inpkt    ______________________/‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾‾\___________
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
+module merkur_special_master__rx_bsr__mon__framer(clock,i_valid,i_code,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
 
     // Module arguments
     input wire  clock;
     input wire  i_valid;
-    input wire  i_level;
+    input wire  i_code;
     input wire  i_end;
     output reg  o_start;
     output reg  o_gvalid;
@@ -6719,8 +6697,6 @@ module merkur_special_master__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_
     localparam  jk = 10'b1100010001;
 
     // Registers and child block ports
-    reg  prev_d;
-    reg  prev_q;
     reg  [9:0] window_d;
     reg  [9:0] window_q;
     reg  inpkt_d;
@@ -6741,7 +6717,6 @@ module merkur_special_master__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_
 
     // Combinational logic
     always @(*) begin
-        prev_d = prev_q;
         window_d = window_q;
         inpkt_d = inpkt_q;
         count_d = count_q;
@@ -6752,11 +6727,10 @@ module merkur_special_master__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_
         start_d = 1'b0;
         gvalid_d = 1'b0;
         shifted = window_q << 1;
-        if (i_level ^ prev_q) begin
+        if (i_code) begin
             shifted = (window_q << 1) | 10'h1;
         end
         if (i_valid) begin
-            prev_d = i_level;
             window_d = shifted;
             if (inpkt_q) begin
                 if (count_q == 3'h4) begin
@@ -6786,8 +6760,6 @@ module merkur_special_master__rx_bsr__mon__framer(clock,i_valid,i_level,i_end,o_
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial prev_q = 1'h0;
-    always @(posedge clock) prev_q <= prev_d;
     initial window_q = 10'h0;
     always @(posedge clock) window_q <= window_d;
     initial inpkt_q = 1'h0;
@@ -7354,7 +7326,7 @@ endmodule // merkur_special_master__rx_bsr__mon__word__nib_top
 // `rx_in`: PortRx, Supervised receive port. (rtl/src/node/port_rx.rs)
 // Documented at module `merkur_special_master__rx_bsr` above.
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_level,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
+module merkur_special_master__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_fail,i_flush,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_void,o_marked,o_own,o_hdr_bad,o_ptype,o_los,o_bvalid,o_code,o_phase,o_cf,o_hard,o_run,o_tst,o_ack);
 
     // Module arguments
     input wire  clock;
@@ -7380,7 +7352,7 @@ module merkur_special_master__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_f
     output reg  [1:0] o_ptype;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_cf;
     output reg  o_hard;
@@ -7391,7 +7363,7 @@ module merkur_special_master__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_f
     // Registers and child block ports
     wire  mon__o_los;
     wire  mon__o_bvalid;
-    wire  mon__o_level;
+    wire  mon__o_code;
     wire  [1:0] mon__o_phase;
     wire  mon__o_start;
     wire  mon__o_inpkt;
@@ -7433,7 +7405,7 @@ module merkur_special_master__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_f
         .i_flush(i_flush),
         .o_los(mon__o_los),
         .o_bvalid(mon__o_bvalid),
-        .o_level(mon__o_level),
+        .o_code(mon__o_code),
         .o_phase(mon__o_phase),
         .o_start(mon__o_start),
         .o_inpkt(mon__o_inpkt),
@@ -7500,7 +7472,7 @@ module merkur_special_master__rx_in(clock,i_samples,i_slots_m1,i_address,i_tst_f
         o_ptype = mon__o_ptype;
         o_los = mon__o_los;
         o_bvalid = mon__o_bvalid;
-        o_level = mon__o_level;
+        o_code = mon__o_code;
         o_phase = mon__o_phase;
         o_cf = ctrl__o_cf;
         o_hard = ctrl__o_hard;
@@ -7610,7 +7582,7 @@ endmodule // merkur_special_master__rx_in__ctrl
 // `mon`: Monitor, Fibre monitor / receive chain. (rtl/src/line/monitor.rs)
 // Documented at module `merkur_special_master__rx_bsr__mon` above.
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_level,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
+module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_flush,o_los,o_bvalid,o_code,o_phase,o_start,o_inpkt,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_compl,o_void,o_marked,o_own,o_hdr_bad,o_ptype);
 
     // Module arguments
     input wire  clock;
@@ -7620,7 +7592,7 @@ module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_
     input wire  i_flush;
     output reg  o_los;
     output reg  o_bvalid;
-    output reg  o_level;
+    output reg  o_code;
     output reg  [1:0] o_phase;
     output reg  o_start;
     output reg  o_inpkt;
@@ -7645,10 +7617,11 @@ module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_
     // Registers and child block ports
     wire  cdr__o_valid;
     wire  cdr__o_bit;
+    wire  cdr__o_code;
     wire  cdr__o_los;
     wire  [1:0] cdr__o_phase;
     reg  framer__i_valid;
-    reg  framer__i_level;
+    reg  framer__i_code;
     reg  framer__i_end;
     wire  framer__o_start;
     wire  framer__o_gvalid;
@@ -7674,8 +7647,6 @@ module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_
     wire  word__o_own;
     wire  word__o_hdr_bad;
     wire  [1:0] word__o_ptype;
-    reg  last_lvl_d;
-    reg  last_lvl_q;
     reg  [2:0] quiet_d;
     reg  [2:0] quiet_q;
     reg  emit_d;
@@ -7692,13 +7663,14 @@ module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_
         .i_samples(i_samples),
         .o_valid(cdr__o_valid),
         .o_bit(cdr__o_bit),
+        .o_code(cdr__o_code),
         .o_los(cdr__o_los),
         .o_phase(cdr__o_phase)
     );
     merkur_special_master__rx_in__mon__framer framer(
         .clock(clock),
         .i_valid(framer__i_valid),
-        .i_level(framer__i_level),
+        .i_code(framer__i_code),
         .i_end(framer__i_end),
         .o_start(framer__o_start),
         .o_gvalid(framer__o_gvalid),
@@ -7733,12 +7705,11 @@ module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_
 
     // Combinational logic
     always @(*) begin
-        last_lvl_d = last_lvl_q;
         quiet_d = quiet_q;
         emit_d = emit_q;
         p_valid_d = p_valid_q;
         framer__i_valid = cdr__o_valid;
-        framer__i_level = cdr__o_bit;
+        framer__i_code = cdr__o_code;
         framer__i_end = word__o_end | cdr__o_los | (quiet_q == drop_after) | i_flush;
         word__i_start = framer__o_start;
         word__i_gvalid = framer__o_gvalid;
@@ -7746,14 +7717,13 @@ module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_
         word__i_idle = framer__o_idle;
         o_los = cdr__o_los;
         o_bvalid = cdr__o_valid;
-        o_level = cdr__o_bit;
+        o_code = cdr__o_code;
         o_phase = cdr__o_phase;
         o_start = framer__o_start;
         o_inpkt = framer__o_inpkt;
         o_hdr_bad = word__o_hdr_bad;
-        conf_edge = cdr__o_valid & (cdr__o_bit != last_lvl_q);
+        conf_edge = cdr__o_valid & cdr__o_code;
         if (cdr__o_valid) begin
-            last_lvl_d = cdr__o_bit;
             quiet_d = 3'h0;
         end
         else if (quiet_q != 3'h7) begin
@@ -7787,8 +7757,6 @@ module merkur_special_master__rx_in__mon(clock,i_samples,i_slots_m1,i_address,i_
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial last_lvl_q = 1'h0;
-    always @(posedge clock) last_lvl_q <= last_lvl_d;
     initial quiet_q = 3'h0;
     always @(posedge clock) quiet_q <= quiet_d;
     initial emit_q = 1'h0;
@@ -7800,13 +7768,14 @@ endmodule // merkur_special_master__rx_in__mon
 // `cdr`: Cdr, Oversampling clock and data recovery. (rtl/src/line/cdr.rs)
 // Documented at module `merkur_special_master__rx_bsr__mon__cdr` above.
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_los,o_phase);
+module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,o_phase);
 
     // Module arguments
     input wire  clock;
     input wire  [3:0] i_samples;
     output reg  o_valid;
     output reg  o_bit;
+    output reg  o_code;
     output reg  o_los;
     output reg  [1:0] o_phase;
 
@@ -7827,6 +7796,8 @@ module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_lo
     reg  rx_valid_q;
     reg  rx_bit_d;
     reg  rx_bit_q;
+    reg  rx_code_d;
+    reg  rx_code_q;
     reg  los_flag_d;
     reg  los_flag_q;
 
@@ -7845,6 +7816,7 @@ module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_lo
         quiet_d = quiet_q;
         rx_valid_d = rx_valid_q;
         rx_bit_d = rx_bit_q;
+        rx_code_d = rx_code_q;
         los_flag_d = los_flag_q;
         prior = i_samples << 1;
         if (last_q) begin
@@ -7881,6 +7853,7 @@ module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_lo
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
             rx_bit_d = i_samples[take_at];
+            rx_code_d = i_samples[take_at] ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin
@@ -7895,6 +7868,7 @@ module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_lo
         end
         o_valid = rx_valid_q;
         o_bit = rx_bit_q;
+        o_code = rx_code_q;
         o_los = los_flag_q;
         o_phase = phase_q;
     end
@@ -7912,19 +7886,21 @@ module merkur_special_master__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_lo
     always @(posedge clock) rx_valid_q <= rx_valid_d;
     initial rx_bit_q = 1'h0;
     always @(posedge clock) rx_bit_q <= rx_bit_d;
+    initial rx_code_q = 1'h0;
+    always @(posedge clock) rx_code_q <= rx_code_d;
     initial los_flag_q = 1'h0;
     always @(posedge clock) los_flag_q <= los_flag_d;
 endmodule // merkur_special_master__rx_in__mon__cdr
 // --------------------------------------------------------------------------
-// `framer`: FramerRx, NRZI decoder, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
+// `framer`: FramerRx, J K hunter and group aligner. (rtl/src/line/framer_rx.rs)
 // Documented at module `merkur_special_master__rx_bsr__mon__framer` above.
 // --------------------------------------------------------------------------
-module merkur_special_master__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
+module merkur_special_master__rx_in__mon__framer(clock,i_valid,i_code,i_end,o_start,o_gvalid,o_group,o_idle,o_inpkt);
 
     // Module arguments
     input wire  clock;
     input wire  i_valid;
-    input wire  i_level;
+    input wire  i_code;
     input wire  i_end;
     output reg  o_start;
     output reg  o_gvalid;
@@ -7936,8 +7912,6 @@ module merkur_special_master__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_s
     localparam  jk = 10'b1100010001;
 
     // Registers and child block ports
-    reg  prev_d;
-    reg  prev_q;
     reg  [9:0] window_d;
     reg  [9:0] window_q;
     reg  inpkt_d;
@@ -7958,7 +7932,6 @@ module merkur_special_master__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_s
 
     // Combinational logic
     always @(*) begin
-        prev_d = prev_q;
         window_d = window_q;
         inpkt_d = inpkt_q;
         count_d = count_q;
@@ -7969,11 +7942,10 @@ module merkur_special_master__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_s
         start_d = 1'b0;
         gvalid_d = 1'b0;
         shifted = window_q << 1;
-        if (i_level ^ prev_q) begin
+        if (i_code) begin
             shifted = (window_q << 1) | 10'h1;
         end
         if (i_valid) begin
-            prev_d = i_level;
             window_d = shifted;
             if (inpkt_q) begin
                 if (count_q == 3'h4) begin
@@ -8003,8 +7975,6 @@ module merkur_special_master__rx_in__mon__framer(clock,i_valid,i_level,i_end,o_s
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
-    initial prev_q = 1'h0;
-    always @(posedge clock) prev_q <= prev_d;
     initial window_q = 10'h0;
     always @(posedge clock) window_q <= window_d;
     initial inpkt_q = 1'h0;
