@@ -118,13 +118,11 @@ pub struct WordRx {
     /// 23:20): every group shifts the register by one nibble, so each bit
     /// takes the bit above it or holds (issue 21: no multiplexer in front
     /// of a data bit, and the 4B/5B decoder feeds only the top nibble).
-    /// A basic word's N0 ends in bits 7:4, an extended word's in 3:0;
-    /// `o_data` is wired from the nibbles (where each data bit sits: the
-    /// comment at the `data` signal).
+    /// A basic word's N0 ends in bits 7:4, an extended word's in 3:0 (its
+    /// N1 in 7:4); `o_data`, `o_alarm`, `o_alive` and `o_reason` are
+    /// wired from the nibbles (where each data bit sits: the comment at
+    /// the `data` signal).
     raw: DFF<Bits<24>>,
-    reason: DFF<Bits<4>>,
-    alarm0: DFF<Bit>,
-    alive0: DFF<Bit>,
     par_a: DFF<Bit>,
     par_b: DFF<Bit>,
     all_data: DFF<Bit>,
@@ -148,7 +146,6 @@ pub struct WordRx {
     wvalid_r: DFF<Bit>,
     kind_r: DFF<Bits<2>>,
     adv: DFF<Bit>,
-    reason_r: DFF<Bits<4>>,
     ok_r: DFF<Bit>,
     compl: DFF<Bit>,
     compl_r: DFF<Bit>,
@@ -160,6 +157,11 @@ pub struct WordRx {
     nib: Signal<Local, Bits<4>>,
     // The word's data bits (protocol §4), wired from `raw`.
     data: Signal<Local, Bits<16>>,
+    // Its ALARM and ALIVE bits and (extended words) its reason nibble
+    // N1, wired from `raw` too (0 for basic words).
+    alarm: Signal<Local, Bit>,
+    alive: Signal<Local, Bit>,
+    reason: Signal<Local, Bits<4>>,
     // The previous word's nibble this group replaces (for `o_compl`):
     // the nibble at N0's place in `raw`.
     prev_nib: Signal<Local, Bits<4>>,
@@ -225,9 +227,6 @@ impl WordRx {
             gcount: Default::default(),
             idles: Default::default(),
             raw: Default::default(),
-            reason: Default::default(),
-            alarm0: Default::default(),
-            alive0: Default::default(),
             par_a: Default::default(),
             par_b: Default::default(),
             all_data: Default::default(),
@@ -243,7 +242,6 @@ impl WordRx {
             wvalid_r: Default::default(),
             kind_r: Default::default(),
             adv: Default::default(),
-            reason_r: Default::default(),
             ok_r: Default::default(),
             compl: Default::default(),
             compl_r: Default::default(),
@@ -253,6 +251,9 @@ impl WordRx {
             hdr_bad_r: Default::default(),
             nib: Default::default(),
             data: Default::default(),
+            alarm: Default::default(),
+            alive: Default::default(),
+            reason: Default::default(),
             prev_nib: Default::default(),
             d_lo: Default::default(),
             d_hi: Default::default(),
@@ -273,9 +274,9 @@ impl Logic for WordRx {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, gcount, raw, reason, alarm0, alive0, par_a, par_b, all_data, all_s,
-            active, wcount, slot, slot_inc, slot_clr, ptype, check, end_r, wvalid_r, kind_r, adv,
-            reason_r, ok_r, compl, compl_r, void_r, marked_r, own_r, hdr_bad_r, idles
+            self, clock, gcount, raw, par_a, par_b, all_data, all_s, active, wcount, slot,
+            slot_inc, slot_clr, ptype, check, end_r, wvalid_r, kind_r, adv, ok_r, compl, compl_r,
+            void_r, marked_r, own_r, hdr_bad_r, idles
         );
         self.dec.i_code.next = self.i_group.val();
         self.nib.next = self.dec.o_nibble.val();
@@ -289,9 +290,15 @@ impl Logic for WordRx {
         self.d_mid.next = self.raw.q.val().get_bits::<16>(6) & 0x3ffc;
         self.d_lo.next = self.raw.q.val().get_bits::<16>(4) & 3;
         self.prev_nib.next = self.raw.q.val().get_bits::<4>(4);
+        self.alarm.next = self.raw.q.val().get_bit(7);
+        self.alive.next = self.raw.q.val().get_bit(6);
+        self.reason.next = 0.into();
         if self.last_group.val() == 5 {
             self.d_lo.next = self.raw.q.val().get_bits::<16>(0) & 3;
             self.prev_nib.next = self.raw.q.val().get_bits::<4>(0);
+            self.alarm.next = self.raw.q.val().get_bit(3);
+            self.alive.next = self.raw.q.val().get_bit(2);
+            self.reason.next = self.raw.q.val().get_bits::<4>(4);
         }
         self.data.next = self.d_hi.val() | self.d_mid.val() | self.d_lo.val();
         self.w_pa.next = self.par_a.q.val() ^ self.nib.val().get_bit(3) ^ self.nib.val().get_bit(2);
@@ -361,8 +368,6 @@ impl Logic for WordRx {
             }
             self.raw.d.next = (self.raw.q.val() >> 4) | self.nib_top.data.val();
             if self.gcount.q.val() == 0 {
-                self.alarm0.d.next = self.nib.val().get_bit(3);
-                self.alive0.d.next = self.nib.val().get_bit(2);
                 // The slot number moves on as the next slot word begins
                 // (a clock later: `slot_inc`), so the one just published
                 // stays on `o_slot` until then.
@@ -370,9 +375,6 @@ impl Logic for WordRx {
                     self.slot_inc.d.next = true;
                     self.adv.d.next = false;
                 }
-            }
-            if self.gcount.q.val() == 1 {
-                self.reason.d.next = self.nib.val();
             }
             self.par_a.d.next = self.w_pa.val();
             self.par_b.d.next = self.w_pb.val();
@@ -389,10 +391,6 @@ impl Logic for WordRx {
                 self.all_s.d.next = true;
                 self.wvalid_r.d.next = true;
                 self.kind_r.d.next = self.wcount.q.val();
-                self.reason_r.d.next = 0.into();
-                if self.last_group.val() == 5 {
-                    self.reason_r.d.next = self.reason.q.val();
-                }
                 self.ok_r.d.next = self.w_ok.val();
                 self.compl_r.d.next = self.w_compl.val();
                 self.void_r.d.next = self.w_all_s.val();
@@ -419,7 +417,7 @@ impl Logic for WordRx {
             if self.kind_r.q.val() == 0 {
                 // H0: type and slot count.
                 if !self.ok_r.q.val()
-                    | self.alarm0.q.val()
+                    | self.alarm.val()
                     | ((self.data.val().get_bits::<2>(14) == 0)
                         & (self.data.val().get_bits::<12>(0) != self.i_slots_m1.val()))
                 {
@@ -431,7 +429,7 @@ impl Logic for WordRx {
                 // H1; SEC and TST packets end here, and an RTX whose H1 is
                 // not NOT H0. An RTX goes on with its request words
                 // (kind 3, numbered from 0 in `o_slot`) until the idles.
-                if !self.ok_r.q.val() | self.alarm0.q.val() {
+                if !self.ok_r.q.val() | self.alarm.val() {
                     self.hdr_bad_r.d.next = self.ptype.q.val() == 0;
                     self.end_r.d.next = true;
                     self.active.d.next = false;
@@ -453,9 +451,9 @@ impl Logic for WordRx {
         self.o_kind.next = self.kind_r.q.val();
         self.o_slot.next = self.slot.q.val();
         self.o_data.next = self.data.val();
-        self.o_alive.next = self.alive0.q.val();
-        self.o_alarm.next = self.alarm0.q.val();
-        self.o_reason.next = self.reason_r.q.val();
+        self.o_alive.next = self.alive.val();
+        self.o_alarm.next = self.alarm.val();
+        self.o_reason.next = self.reason.val();
         self.o_ok.next = self.ok_r.q.val();
         self.o_compl.next = self.compl_r.q.val();
         self.o_void.next = self.void_r.q.val();
