@@ -5035,12 +5035,6 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
     reg  [1:0] idles_q;
     reg  [23:0] raw_d;
     reg  [23:0] raw_q;
-    reg  [3:0] reason_d;
-    reg  [3:0] reason_q;
-    reg  alarm0_d;
-    reg  alarm0_q;
-    reg  alive0_d;
-    reg  alive0_q;
     reg  par_a_d;
     reg  par_a_q;
     reg  par_b_d;
@@ -5071,8 +5065,6 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
     reg  [1:0] kind_r_q;
     reg  adv_d;
     reg  adv_q;
-    reg  [3:0] reason_r_d;
-    reg  [3:0] reason_r_q;
     reg  ok_r_d;
     reg  ok_r_q;
     reg  compl_d;
@@ -5091,6 +5083,9 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
     // Local signals
     reg  [3:0] nib;
     reg  [15:0] data;
+    reg  alarm;
+    reg  alive;
+    reg  [3:0] reason;
     reg  [3:0] prev_nib;
     reg  [15:0] d_lo;
     reg  [15:0] d_hi;
@@ -5121,9 +5116,6 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
     always @(*) begin
         gcount_d = gcount_q;
         raw_d = raw_q;
-        reason_d = reason_q;
-        alarm0_d = alarm0_q;
-        alive0_d = alive0_q;
         par_a_d = par_a_q;
         par_b_d = par_b_q;
         all_data_d = all_data_q;
@@ -5139,7 +5131,6 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
         wvalid_r_d = wvalid_r_q;
         kind_r_d = kind_r_q;
         adv_d = adv_q;
-        reason_r_d = reason_r_q;
         ok_r_d = ok_r_q;
         compl_d = compl_q;
         compl_r_d = compl_r_q;
@@ -5154,9 +5145,15 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
         d_mid = raw_q[(6)+:(16)] & 16'h3ffc;
         d_lo = raw_q[(4)+:(16)] & 16'h3;
         prev_nib = raw_q[(4)+:(4)];
+        alarm = raw_q[7];
+        alive = raw_q[6];
+        reason = 4'h0;
         if (last_group == 3'h5) begin
             d_lo = raw_q[(0)+:(16)] & 16'h3;
             prev_nib = raw_q[(0)+:(4)];
+            alarm = raw_q[3];
+            alive = raw_q[2];
+            reason = raw_q[(4)+:(4)];
         end
         data = d_hi | d_mid | d_lo;
         w_pa = par_a_q ^ nib[3] ^ nib[2];
@@ -5211,15 +5208,10 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
             end
             raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
-                alarm0_d = nib[3];
-                alive0_d = nib[2];
                 if (adv_q) begin
                     slot_inc_d = 1'b1;
                     adv_d = 1'b0;
                 end
-            end
-            if (gcount_q == 3'h1) begin
-                reason_d = nib;
             end
             par_a_d = w_pa;
             par_b_d = w_pb;
@@ -5235,10 +5227,6 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
                 all_s_d = 1'b1;
                 wvalid_r_d = 1'b1;
                 kind_r_d = wcount_q;
-                reason_r_d = 4'h0;
-                if (last_group == 3'h5) begin
-                    reason_r_d = reason_q;
-                end
                 ok_r_d = w_ok;
                 compl_r_d = w_compl;
                 void_r_d = w_all_s;
@@ -5259,14 +5247,14 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
         end
         if (check_q) begin
             if (kind_r_q == 2'h0) begin
-                if (~ok_r_q | alarm0_q | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
+                if (~ok_r_q | alarm | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
                     hdr_bad_r_d = 1'b1;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
             end
             else if (kind_r_q == 2'h1) begin
-                if (~ok_r_q | alarm0_q) begin
+                if (~ok_r_q | alarm) begin
                     hdr_bad_r_d = ptype_q == 2'h0;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
@@ -5291,9 +5279,9 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
         o_kind = kind_r_q;
         o_slot = slot_q;
         o_data = data;
-        o_alive = alive0_q;
-        o_alarm = alarm0_q;
-        o_reason = reason_r_q;
+        o_alive = alive;
+        o_alarm = alarm;
+        o_reason = reason;
         o_ok = ok_r_q;
         o_compl = compl_r_q;
         o_void = void_r_q;
@@ -5310,12 +5298,6 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
     always @(posedge clock) idles_q <= idles_d;
     initial raw_q = 24'h0;
     always @(posedge clock) raw_q <= raw_d;
-    initial reason_q = 4'h0;
-    always @(posedge clock) reason_q <= reason_d;
-    initial alarm0_q = 1'h0;
-    always @(posedge clock) alarm0_q <= alarm0_d;
-    initial alive0_q = 1'h0;
-    always @(posedge clock) alive0_q <= alive0_d;
     initial par_a_q = 1'h0;
     always @(posedge clock) par_a_q <= par_a_d;
     initial par_b_q = 1'h0;
@@ -5346,8 +5328,6 @@ module merkur_master__node__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_i
     always @(posedge clock) kind_r_q <= kind_r_d;
     initial adv_q = 1'h0;
     always @(posedge clock) adv_q <= adv_d;
-    initial reason_r_q = 4'h0;
-    always @(posedge clock) reason_r_q <= reason_r_d;
     initial ok_r_q = 1'h0;
     always @(posedge clock) ok_r_q <= ok_r_d;
     initial compl_q = 1'h0;
@@ -6214,12 +6194,6 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
     reg  [1:0] idles_q;
     reg  [23:0] raw_d;
     reg  [23:0] raw_q;
-    reg  [3:0] reason_d;
-    reg  [3:0] reason_q;
-    reg  alarm0_d;
-    reg  alarm0_q;
-    reg  alive0_d;
-    reg  alive0_q;
     reg  par_a_d;
     reg  par_a_q;
     reg  par_b_d;
@@ -6250,8 +6224,6 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
     reg  [1:0] kind_r_q;
     reg  adv_d;
     reg  adv_q;
-    reg  [3:0] reason_r_d;
-    reg  [3:0] reason_r_q;
     reg  ok_r_d;
     reg  ok_r_q;
     reg  compl_d;
@@ -6270,6 +6242,9 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
     // Local signals
     reg  [3:0] nib;
     reg  [15:0] data;
+    reg  alarm;
+    reg  alive;
+    reg  [3:0] reason;
     reg  [3:0] prev_nib;
     reg  [15:0] d_lo;
     reg  [15:0] d_hi;
@@ -6300,9 +6275,6 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
     always @(*) begin
         gcount_d = gcount_q;
         raw_d = raw_q;
-        reason_d = reason_q;
-        alarm0_d = alarm0_q;
-        alive0_d = alive0_q;
         par_a_d = par_a_q;
         par_b_d = par_b_q;
         all_data_d = all_data_q;
@@ -6318,7 +6290,6 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
         wvalid_r_d = wvalid_r_q;
         kind_r_d = kind_r_q;
         adv_d = adv_q;
-        reason_r_d = reason_r_q;
         ok_r_d = ok_r_q;
         compl_d = compl_q;
         compl_r_d = compl_r_q;
@@ -6333,9 +6304,15 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
         d_mid = raw_q[(6)+:(16)] & 16'h3ffc;
         d_lo = raw_q[(4)+:(16)] & 16'h3;
         prev_nib = raw_q[(4)+:(4)];
+        alarm = raw_q[7];
+        alive = raw_q[6];
+        reason = 4'h0;
         if (last_group == 3'h5) begin
             d_lo = raw_q[(0)+:(16)] & 16'h3;
             prev_nib = raw_q[(0)+:(4)];
+            alarm = raw_q[3];
+            alive = raw_q[2];
+            reason = raw_q[(4)+:(4)];
         end
         data = d_hi | d_mid | d_lo;
         w_pa = par_a_q ^ nib[3] ^ nib[2];
@@ -6390,15 +6367,10 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
             end
             raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
-                alarm0_d = nib[3];
-                alive0_d = nib[2];
                 if (adv_q) begin
                     slot_inc_d = 1'b1;
                     adv_d = 1'b0;
                 end
-            end
-            if (gcount_q == 3'h1) begin
-                reason_d = nib;
             end
             par_a_d = w_pa;
             par_b_d = w_pb;
@@ -6414,10 +6386,6 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
                 all_s_d = 1'b1;
                 wvalid_r_d = 1'b1;
                 kind_r_d = wcount_q;
-                reason_r_d = 4'h0;
-                if (last_group == 3'h5) begin
-                    reason_r_d = reason_q;
-                end
                 ok_r_d = w_ok;
                 compl_r_d = w_compl;
                 void_r_d = w_all_s;
@@ -6438,14 +6406,14 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
         end
         if (check_q) begin
             if (kind_r_q == 2'h0) begin
-                if (~ok_r_q | alarm0_q | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
+                if (~ok_r_q | alarm | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
                     hdr_bad_r_d = 1'b1;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
             end
             else if (kind_r_q == 2'h1) begin
-                if (~ok_r_q | alarm0_q) begin
+                if (~ok_r_q | alarm) begin
                     hdr_bad_r_d = ptype_q == 2'h0;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
@@ -6470,9 +6438,9 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
         o_kind = kind_r_q;
         o_slot = slot_q;
         o_data = data;
-        o_alive = alive0_q;
-        o_alarm = alarm0_q;
-        o_reason = reason_r_q;
+        o_alive = alive;
+        o_alarm = alarm;
+        o_reason = reason;
         o_ok = ok_r_q;
         o_compl = compl_r_q;
         o_void = void_r_q;
@@ -6489,12 +6457,6 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
     always @(posedge clock) idles_q <= idles_d;
     initial raw_q = 24'h0;
     always @(posedge clock) raw_q <= raw_d;
-    initial reason_q = 4'h0;
-    always @(posedge clock) reason_q <= reason_d;
-    initial alarm0_q = 1'h0;
-    always @(posedge clock) alarm0_q <= alarm0_d;
-    initial alive0_q = 1'h0;
-    always @(posedge clock) alive0_q <= alive0_d;
     initial par_a_q = 1'h0;
     always @(posedge clock) par_a_q <= par_a_d;
     initial par_b_q = 1'h0;
@@ -6525,8 +6487,6 @@ module merkur_master__node__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_id
     always @(posedge clock) kind_r_q <= kind_r_d;
     initial adv_q = 1'h0;
     always @(posedge clock) adv_q <= adv_d;
-    initial reason_r_q = 4'h0;
-    always @(posedge clock) reason_r_q <= reason_r_d;
     initial ok_r_q = 1'h0;
     always @(posedge clock) ok_r_q <= ok_r_d;
     initial compl_q = 1'h0;

@@ -6879,12 +6879,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     reg  [1:0] idles_q;
     reg  [23:0] raw_d;
     reg  [23:0] raw_q;
-    reg  [3:0] reason_d;
-    reg  [3:0] reason_q;
-    reg  alarm0_d;
-    reg  alarm0_q;
-    reg  alive0_d;
-    reg  alive0_q;
     reg  par_a_d;
     reg  par_a_q;
     reg  par_b_d;
@@ -6915,8 +6909,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     reg  [1:0] kind_r_q;
     reg  adv_d;
     reg  adv_q;
-    reg  [3:0] reason_r_d;
-    reg  [3:0] reason_r_q;
     reg  ok_r_d;
     reg  ok_r_q;
     reg  compl_d;
@@ -6935,6 +6927,9 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     // Local signals
     reg  [3:0] nib;
     reg  [15:0] data;
+    reg  alarm;
+    reg  alive;
+    reg  [3:0] reason;
     reg  [3:0] prev_nib;
     reg  [15:0] d_lo;
     reg  [15:0] d_hi;
@@ -6965,9 +6960,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     always @(*) begin
         gcount_d = gcount_q;
         raw_d = raw_q;
-        reason_d = reason_q;
-        alarm0_d = alarm0_q;
-        alive0_d = alive0_q;
         par_a_d = par_a_q;
         par_b_d = par_b_q;
         all_data_d = all_data_q;
@@ -6983,7 +6975,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         wvalid_r_d = wvalid_r_q;
         kind_r_d = kind_r_q;
         adv_d = adv_q;
-        reason_r_d = reason_r_q;
         ok_r_d = ok_r_q;
         compl_d = compl_q;
         compl_r_d = compl_r_q;
@@ -6998,9 +6989,15 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         d_mid = raw_q[(6)+:(16)] & 16'h3ffc;
         d_lo = raw_q[(4)+:(16)] & 16'h3;
         prev_nib = raw_q[(4)+:(4)];
+        alarm = raw_q[7];
+        alive = raw_q[6];
+        reason = 4'h0;
         if (last_group == 3'h5) begin
             d_lo = raw_q[(0)+:(16)] & 16'h3;
             prev_nib = raw_q[(0)+:(4)];
+            alarm = raw_q[3];
+            alive = raw_q[2];
+            reason = raw_q[(4)+:(4)];
         end
         data = d_hi | d_mid | d_lo;
         w_pa = par_a_q ^ nib[3] ^ nib[2];
@@ -7055,15 +7052,10 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
             end
             raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
-                alarm0_d = nib[3];
-                alive0_d = nib[2];
                 if (adv_q) begin
                     slot_inc_d = 1'b1;
                     adv_d = 1'b0;
                 end
-            end
-            if (gcount_q == 3'h1) begin
-                reason_d = nib;
             end
             par_a_d = w_pa;
             par_b_d = w_pb;
@@ -7079,10 +7071,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
                 all_s_d = 1'b1;
                 wvalid_r_d = 1'b1;
                 kind_r_d = wcount_q;
-                reason_r_d = 4'h0;
-                if (last_group == 3'h5) begin
-                    reason_r_d = reason_q;
-                end
                 ok_r_d = w_ok;
                 compl_r_d = w_compl;
                 void_r_d = w_all_s;
@@ -7103,14 +7091,14 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         end
         if (check_q) begin
             if (kind_r_q == 2'h0) begin
-                if (~ok_r_q | alarm0_q | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
+                if (~ok_r_q | alarm | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
                     hdr_bad_r_d = 1'b1;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
             end
             else if (kind_r_q == 2'h1) begin
-                if (~ok_r_q | alarm0_q) begin
+                if (~ok_r_q | alarm) begin
                     hdr_bad_r_d = ptype_q == 2'h0;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
@@ -7135,9 +7123,9 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         o_kind = kind_r_q;
         o_slot = slot_q;
         o_data = data;
-        o_alive = alive0_q;
-        o_alarm = alarm0_q;
-        o_reason = reason_r_q;
+        o_alive = alive;
+        o_alarm = alarm;
+        o_reason = reason;
         o_ok = ok_r_q;
         o_compl = compl_r_q;
         o_void = void_r_q;
@@ -7154,12 +7142,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     always @(posedge clock) idles_q <= idles_d;
     initial raw_q = 24'h0;
     always @(posedge clock) raw_q <= raw_d;
-    initial reason_q = 4'h0;
-    always @(posedge clock) reason_q <= reason_d;
-    initial alarm0_q = 1'h0;
-    always @(posedge clock) alarm0_q <= alarm0_d;
-    initial alive0_q = 1'h0;
-    always @(posedge clock) alive0_q <= alive0_d;
     initial par_a_q = 1'h0;
     always @(posedge clock) par_a_q <= par_a_d;
     initial par_b_q = 1'h0;
@@ -7190,8 +7172,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
     always @(posedge clock) kind_r_q <= kind_r_d;
     initial adv_q = 1'h0;
     always @(posedge clock) adv_q <= adv_d;
-    initial reason_r_q = 4'h0;
-    always @(posedge clock) reason_r_q <= reason_r_d;
     initial ok_r_q = 1'h0;
     always @(posedge clock) ok_r_q <= ok_r_d;
     initial compl_q = 1'h0;
@@ -8038,12 +8018,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     reg  [1:0] idles_q;
     reg  [23:0] raw_d;
     reg  [23:0] raw_q;
-    reg  [3:0] reason_d;
-    reg  [3:0] reason_q;
-    reg  alarm0_d;
-    reg  alarm0_q;
-    reg  alive0_d;
-    reg  alive0_q;
     reg  par_a_d;
     reg  par_a_q;
     reg  par_b_d;
@@ -8074,8 +8048,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     reg  [1:0] kind_r_q;
     reg  adv_d;
     reg  adv_q;
-    reg  [3:0] reason_r_d;
-    reg  [3:0] reason_r_q;
     reg  ok_r_d;
     reg  ok_r_q;
     reg  compl_d;
@@ -8094,6 +8066,9 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     // Local signals
     reg  [3:0] nib;
     reg  [15:0] data;
+    reg  alarm;
+    reg  alive;
+    reg  [3:0] reason;
     reg  [3:0] prev_nib;
     reg  [15:0] d_lo;
     reg  [15:0] d_hi;
@@ -8124,9 +8099,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     always @(*) begin
         gcount_d = gcount_q;
         raw_d = raw_q;
-        reason_d = reason_q;
-        alarm0_d = alarm0_q;
-        alive0_d = alive0_q;
         par_a_d = par_a_q;
         par_b_d = par_b_q;
         all_data_d = all_data_q;
@@ -8142,7 +8114,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         wvalid_r_d = wvalid_r_q;
         kind_r_d = kind_r_q;
         adv_d = adv_q;
-        reason_r_d = reason_r_q;
         ok_r_d = ok_r_q;
         compl_d = compl_q;
         compl_r_d = compl_r_q;
@@ -8157,9 +8128,15 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         d_mid = raw_q[(6)+:(16)] & 16'h3ffc;
         d_lo = raw_q[(4)+:(16)] & 16'h3;
         prev_nib = raw_q[(4)+:(4)];
+        alarm = raw_q[7];
+        alive = raw_q[6];
+        reason = 4'h0;
         if (last_group == 3'h5) begin
             d_lo = raw_q[(0)+:(16)] & 16'h3;
             prev_nib = raw_q[(0)+:(4)];
+            alarm = raw_q[3];
+            alive = raw_q[2];
+            reason = raw_q[(4)+:(4)];
         end
         data = d_hi | d_mid | d_lo;
         w_pa = par_a_q ^ nib[3] ^ nib[2];
@@ -8214,15 +8191,10 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
             end
             raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
-                alarm0_d = nib[3];
-                alive0_d = nib[2];
                 if (adv_q) begin
                     slot_inc_d = 1'b1;
                     adv_d = 1'b0;
                 end
-            end
-            if (gcount_q == 3'h1) begin
-                reason_d = nib;
             end
             par_a_d = w_pa;
             par_b_d = w_pb;
@@ -8238,10 +8210,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
                 all_s_d = 1'b1;
                 wvalid_r_d = 1'b1;
                 kind_r_d = wcount_q;
-                reason_r_d = 4'h0;
-                if (last_group == 3'h5) begin
-                    reason_r_d = reason_q;
-                end
                 ok_r_d = w_ok;
                 compl_r_d = w_compl;
                 void_r_d = w_all_s;
@@ -8262,14 +8230,14 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         end
         if (check_q) begin
             if (kind_r_q == 2'h0) begin
-                if (~ok_r_q | alarm0_q | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
+                if (~ok_r_q | alarm | ((data[(14)+:(2)] == 2'h0) & (data[(0)+:(12)] != i_slots_m1))) begin
                     hdr_bad_r_d = 1'b1;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
                 end
             end
             else if (kind_r_q == 2'h1) begin
-                if (~ok_r_q | alarm0_q) begin
+                if (~ok_r_q | alarm) begin
                     hdr_bad_r_d = ptype_q == 2'h0;
                     end_r_d = 1'b1;
                     active_d = 1'b0;
@@ -8294,9 +8262,9 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         o_kind = kind_r_q;
         o_slot = slot_q;
         o_data = data;
-        o_alive = alive0_q;
-        o_alarm = alarm0_q;
-        o_reason = reason_r_q;
+        o_alive = alive;
+        o_alarm = alarm;
+        o_reason = reason;
         o_ok = ok_r_q;
         o_compl = compl_r_q;
         o_void = void_r_q;
@@ -8313,12 +8281,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     always @(posedge clock) idles_q <= idles_d;
     initial raw_q = 24'h0;
     always @(posedge clock) raw_q <= raw_d;
-    initial reason_q = 4'h0;
-    always @(posedge clock) reason_q <= reason_d;
-    initial alarm0_q = 1'h0;
-    always @(posedge clock) alarm0_q <= alarm0_d;
-    initial alive0_q = 1'h0;
-    always @(posedge clock) alive0_q <= alive0_d;
     initial par_a_q = 1'h0;
     always @(posedge clock) par_a_q <= par_a_d;
     initial par_b_q = 1'h0;
@@ -8349,8 +8311,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
     always @(posedge clock) kind_r_q <= kind_r_d;
     initial adv_q = 1'h0;
     always @(posedge clock) adv_q <= adv_d;
-    initial reason_r_q = 4'h0;
-    always @(posedge clock) reason_r_q <= reason_r_d;
     initial ok_r_q = 1'h0;
     always @(posedge clock) ok_r_q <= ok_r_d;
     initial compl_q = 1'h0;
