@@ -2677,7 +2677,6 @@ module merkur_master__node__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i
     reg  regen_q;
 
     // Local signals
-    reg  code;
     reg  [9:0] shifted;
     reg  [4:0] group;
     reg  [3:0] dec_nib;
@@ -2781,9 +2780,8 @@ module merkur_master__node__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i
         in_data_d = in_data_q;
         in_s_d = in_s_q;
         clr_h0_d = clr_h0_q;
-        code = i_code;
         shifted = window_q << 1;
-        if (code) begin
+        if (i_code) begin
             shifted = (window_q << 1) | 10'h1;
         end
         group = shifted[(0)+:(5)];
@@ -3123,7 +3121,7 @@ module merkur_master__node__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i
             code_out = 5'h1d;
         end
         out_bit = delay_q[5];
-        in_code = code | i_mute;
+        in_code = i_code | i_mute;
         sent_d = 1'b0;
         done_d = 1'b0;
         cut = 1'b0;
@@ -4712,6 +4710,7 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_cod
     reg  live;
     reg  clean;
     reg  [1:0] take_at;
+    reg  taken;
 
     // Combinational logic
     always @(*) begin
@@ -4754,11 +4753,12 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_cod
             clean = ~|edges;
         end
         take_at = ~count_q[(0)+:(2)];
+        taken = i_samples[take_at];
         rx_valid_d = 1'b0;
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
-            rx_bit_d = i_samples[take_at];
-            rx_code_d = i_samples[take_at] ^ rx_bit_q;
+            rx_bit_d = taken;
+            rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin
@@ -5963,6 +5963,7 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code
     reg  live;
     reg  clean;
     reg  [1:0] take_at;
+    reg  taken;
 
     // Combinational logic
     always @(*) begin
@@ -6005,11 +6006,12 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code
             clean = ~|edges;
         end
         take_at = ~count_q[(0)+:(2)];
+        taken = i_samples[take_at];
         rx_valid_d = 1'b0;
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
-            rx_bit_d = i_samples[take_at];
-            rx_code_d = i_samples[take_at] ^ rx_bit_q;
+            rx_bit_d = taken;
+            rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin

@@ -1133,7 +1133,6 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
     reg  regen_q;
 
     // Local signals
-    reg  code;
     reg  [9:0] shifted;
     reg  [4:0] group;
     reg  [3:0] dec_nib;
@@ -1237,9 +1236,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
         in_data_d = in_data_q;
         in_s_d = in_s_q;
         clr_h0_d = clr_h0_q;
-        code = i_code;
         shifted = window_q << 1;
-        if (code) begin
+        if (i_code) begin
             shifted = (window_q << 1) | 10'h1;
         end
         group = shifted[(0)+:(5)];
@@ -1579,7 +1577,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
             code_out = 5'h1d;
         end
         out_bit = delay_q[5];
-        in_code = code | i_mute;
+        in_code = i_code | i_mute;
         sent_d = 1'b0;
         done_d = 1'b0;
         cut = 1'b0;
@@ -3168,6 +3166,7 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
     reg  live;
     reg  clean;
     reg  [1:0] take_at;
+    reg  taken;
 
     // Combinational logic
     always @(*) begin
@@ -3210,11 +3209,12 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
             clean = ~|edges;
         end
         take_at = ~count_q[(0)+:(2)];
+        taken = i_samples[take_at];
         rx_valid_d = 1'b0;
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
-            rx_bit_d = i_samples[take_at];
-            rx_code_d = i_samples[take_at] ^ rx_bit_q;
+            rx_bit_d = taken;
+            rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin
@@ -4419,6 +4419,7 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
     reg  live;
     reg  clean;
     reg  [1:0] take_at;
+    reg  taken;
 
     // Combinational logic
     always @(*) begin
@@ -4461,11 +4462,12 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
             clean = ~|edges;
         end
         take_at = ~count_q[(0)+:(2)];
+        taken = i_samples[take_at];
         rx_valid_d = 1'b0;
         if (~count_q[2] & clean & live) begin
             rx_valid_d = 1'b1;
-            rx_bit_d = i_samples[take_at];
-            rx_code_d = i_samples[take_at] ^ rx_bit_q;
+            rx_bit_d = taken;
+            rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
         if (|edges) begin

@@ -104,7 +104,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         p(&f, "i_alarm_reason"),
         p(&f, "i_alarm_seq"),
     );
-    let (fclk, fv, fl, fph, fhb, fsd, fao, fline) = (
+    let (fclk, fv, fc, fph, fhb, fsd, fao, fline) = (
         p(&f, "clock"),
         p(&f, "i_bvalid"),
         p(&f, "i_code"),
@@ -114,7 +114,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         p(&f, "i_act_out"),
         p(&f, "o_line"),
     );
-    let (iclk, ismp, ibv, ilv, iph, ihb) = (
+    let (iclk, ismp, ibv, icd, iph, ihb) = (
         p(&mi, "clock"),
         p(&mi, "i_samples"),
         p(&mi, "o_bvalid"),
@@ -174,7 +174,7 @@ fn check_node(cfg: &Config, recs: &[CycleRecord], k: usize, ppm: f64, seed: u64)
         mi.set(ismp, pair);
         mi.tick(iclk);
         f.set(fv, mi.get(ibv));
-        f.set(fl, mi.get(ilv));
+        f.set(fc, mi.get(icd));
         f.set(fph, mi.get(iph));
         f.set(fhb, mi.get(ihb));
         for &(fi, mi_port, bit0) in &bus {

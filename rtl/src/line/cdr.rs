@@ -105,6 +105,7 @@ pub struct Cdr {
     live: Signal<Local, Bit>,
     clean: Signal<Local, Bit>,
     take_at: Signal<Local, Bits<2>>,
+    taken: Signal<Local, Bit>,
 }
 
 impl Default for Cdr {
@@ -133,6 +134,7 @@ impl Default for Cdr {
             live: Default::default(),
             clean: Default::default(),
             take_at: Default::default(),
+            taken: Default::default(),
         }
     }
 }
@@ -188,12 +190,12 @@ impl Logic for Cdr {
             self.clean.next = !self.edges.val().any();
         }
         self.take_at.next = !self.count.q.val().get_bits::<2>(0);
+        self.taken.next = self.i_samples.val().get_bit(self.take_at.val().index());
         self.rx_valid.d.next = false;
         if !self.count.q.val().get_bit(2) & self.clean.val() & self.live.val() {
             self.rx_valid.d.next = true;
-            self.rx_bit.d.next = self.i_samples.val().get_bit(self.take_at.val().index());
-            self.rx_code.d.next =
-                self.i_samples.val().get_bit(self.take_at.val().index()) ^ self.rx_bit.q.val();
+            self.rx_bit.d.next = self.taken.val();
+            self.rx_code.d.next = self.taken.val() ^ self.rx_bit.q.val();
             self.phase.d.next = self.take_at.val();
         }
         // Loss of signal: LOS_SAMPLES samples without an edge.

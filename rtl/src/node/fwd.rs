@@ -293,7 +293,6 @@ pub struct Fwd {
     sent_reason: DFF<Bits<4>>,
     done: DFF<Bit>,
     regen: DFF<Bit>,
-    code: Signal<Local, Bit>,
     shifted: Signal<Local, Bits<10>>,
     group: Signal<Local, Bits<5>>,
     dec_nib: Signal<Local, Bits<4>>,
@@ -449,7 +448,6 @@ impl Fwd {
             sent_reason: Default::default(),
             done: Default::default(),
             regen: Default::default(),
-            code: Default::default(),
             shifted: Default::default(),
             group: Default::default(),
             dec_nib: Default::default(),
@@ -554,9 +552,8 @@ impl Logic for Fwd {
             clr_h0
         );
         // The group that completes with this bit.
-        self.code.next = self.i_code.val();
         self.shifted.next = self.window.q.val() << 1;
-        if self.code.val() {
+        if self.i_code.val() {
             self.shifted.next = (self.window.q.val() << 1) | 1;
         }
         self.group.next = self.shifted.val().get_bits::<5>(0);
@@ -1022,7 +1019,7 @@ impl Logic for Fwd {
         // arrives in that clock too, the rewritten first bit goes out
         // directly (a group's first bit leaves at the second bit after it).
         self.out_bit.next = self.delay.q.val().get_bit(5);
-        self.in_code.next = self.code.val() | self.i_mute.val();
+        self.in_code.next = self.i_code.val() | self.i_mute.val();
         self.sent.d.next = false;
         self.done.d.next = false;
         self.cut.next = false;
