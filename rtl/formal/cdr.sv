@@ -23,11 +23,11 @@ module cdr_props (
     wire o_valid, o_bit, o_code, o_los;
     wire [1:0] o_phase;
     wire [5:0] quiet_q;
-    wire last_q;
+    wire calm_q, mute_q, last_q;
     cdr dut (
         .clock(clock), .i_samples(i_samples), .o_valid(o_valid),
         .o_bit(o_bit), .o_code(o_code), .o_los(o_los), .o_phase(o_phase),
-        .quiet_q(quiet_q), .last_q(last_q)
+        .quiet_q(quiet_q), .calm_q(calm_q), .mute_q(mute_q), .last_q(last_q)
     );
 
     // Shadow: the last sample of the clock before, and clocks since the
@@ -45,9 +45,12 @@ module cdr_props (
         los_rises: assert (quiet < QUIET || o_los);
         los_not_early: assert (!o_los || quiet >= QUIET);
         if (quiet <= 8) los_never_while_toggling: assert (!o_los);
-        // Induction invariants: the detector's counter is the shadow's.
+        // Induction invariants: the detector's counter is the shadow's
+        // (`calm`: the clock before had no edge; 0 stands for 64 or more).
         inv_last: assert (last_q == prev);
-        inv_quiet: assert (quiet_q == (quiet >= QUIET - 1 ? QUIET - 1 : quiet));
+        inv_calm: assert (calm_q == (quiet != 0));
+        if (quiet != 0) inv_quiet: assert (quiet_q == (quiet >= QUIET ? 0 : quiet));
+        inv_mute: assert (mute_q == (quiet >= 16));
 
         cover_los: cover (o_los);
         cover_idle_line: cover (quiet == 7 && !o_los);

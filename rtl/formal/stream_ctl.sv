@@ -79,7 +79,8 @@ module stream_ctl_props (
         tst_ack: assert (o_ack == ack);
         // Induction invariants.
         inv_bad: assert (bad_q == run);
-        inv_hold: assert (age == 0 || age > HOLD ? hold_q == 0 : hold_q == HOLD - age);
+        // (The counter is read only while the TST is held.)
+        if (age != 0 && age <= HOLD) inv_hold: assert (hold_q == HOLD - age);
 
         cover_run: cover (o_run);
         cover_tst_ends: cover (age == HOLD + 1 && !o_tst);

@@ -56,7 +56,7 @@ module switch_ctl_props (
     wire [6:0] settle_q;
     wire [8:0] ack_time_q;
     wire [19:0] grace_q;
-    wire seen_ack_q, pend_up_q, joined_q, busy_q, ack_done_q;
+    wire chg_q, run_q, seen_ack_q, pend_up_q, joined_q, busy_q, ack_done_q;
     switch_ctl dut (
         .clock(clock), .i_armed(i_armed), .i_hard_in(i_hard_in),
         .i_hard_bsr(i_hard_bsr), .i_run_in(i_run_in), .i_run_bsr(i_run_bsr),
@@ -68,6 +68,7 @@ module switch_ctl_props (
         .o_relink(o_relink), .o_tst_start(o_tst_start), .o_fs_set(o_fs_set),
         .o_grace_over(o_grace_over),
         .settle_q(settle_q), .ack_time_q(ack_time_q), .grace_q(grace_q),
+        .chg_q(chg_q), .run_q(run_q),
         .seen_ack_q(seen_ack_q), .pend_up_q(pend_up_q), .joined_q(joined_q),
         .busy_q(busy_q), .ack_done_q(ack_done_q)
     );
@@ -184,15 +185,29 @@ module switch_ctl_props (
         grace_rule: assert (o_grace_over == (grace == 0));
 
         // Induction invariants: the block's counters are the shadow's.
-        inv_settle: assert (since >= SETTLE ? settle_q == 0 : settle_q == SETTLE - since);
-        // ack_time stops at REINTEGRATE, where ack_done is set; busy is
-        // settle != 0 (the count down tests it).
-        inv_acks: assert (ack_time_q == (acks >= REINTEGRATE ? REINTEGRATE : acks)
-                          && seen_ack_q == (acks != 0));
-        inv_ack_done: assert (ack_done_q == (acks >= REINTEGRATE));
-        inv_busy: assert (busy_q == (settle_q != 0));
-        inv_pend: assert (pend_up_q == (wu_ok && o_mode == WU));
-        inv_grace: assert (grace_q == grace);
+        // The counters start in the clock after a change (since 0, `chg`),
+        // so then they may still hold the old mode's values; nothing reads
+        // them in that clock. ack_time stops at REINTEGRATE, where ack_done
+        // is set; busy is settle != 0 (the count down tests it).
+        // The reintegration state is cleared while busy (from since 1), so
+        // it is the shadow's from since 2.
+        inv_chg: assert (chg_q == (since == 0));
+        if (since != 0) begin
+            inv_settle: assert (since >= SETTLE ? settle_q == 0 : settle_q == SETTLE - since);
+            inv_busy: assert (busy_q == (settle_q != 0));
+        end
+        if (since >= 2) begin
+            inv_acks: assert (ack_time_q == (acks >= REINTEGRATE ? REINTEGRATE : acks)
+                              && seen_ack_q == (acks != 0));
+            inv_ack_done: assert (ack_done_q == (acks >= REINTEGRATE));
+            inv_pend: assert (pend_up_q == (wu_ok && o_mode == WU));
+        end
+        // The grace counter runs a clock behind: loaded in the clock after
+        // an unwrap (`chg` in mode N), then the shadow's value while `run`
+        // is set.
+        inv_run: assert (run_q == (grace != 0));
+        if (chg_q && o_mode == N) inv_load: assert (grace == (i_cs_timeout >> 1));
+        if (!chg_q && run_q) inv_grace: assert (grace_q == grace);
         inv_joined: assert (joined_q == joined);
         if (o_mode == N) inv_n: assert (acks == 0 && !wu_ok);
 

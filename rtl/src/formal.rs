@@ -133,7 +133,7 @@ fn cdr() -> Proof {
         name: "cdr",
         what: "loss of signal: raised after 32 bit times without an edge, never earlier; each bit's code is its NRZI decode",
         duts: vec![dut("cdr", block_verilog(crate::line::cdr::Cdr::default()))],
-        expose: vec![("cdr", "quiet_q"), ("cdr", "last_q")],
+        expose: vec![("cdr", "quiet_q"), ("cdr", "calm_q"), ("cdr", "mute_q"), ("cdr", "last_q")],
         props: include_str!("../formal/cdr.sv"),
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 70)],
     }
@@ -285,6 +285,8 @@ fn switch_ctl() -> Proof {
         "settle_q",
         "ack_time_q",
         "grace_q",
+        "chg_q",
+        "run_q",
         "seen_ack_q",
         "pend_up_q",
         "joined_q",

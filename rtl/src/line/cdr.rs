@@ -91,11 +91,24 @@ pub struct Cdr {
     /// bit's arrival time to a quarter clock, for a retimer's phase measure.
     pub o_phase: Signal<Out, Bits<2>>,
     quiet_last: Constant<Bits<6>>,
-    mute_after: Constant<Bits<6>>,
+    /// The count one clock before muting (`MUTE_SAMPLES` / 4 − 1).
+    mute_last: Constant<Bits<6>>,
     last: DFF<Bit>,
     phase: DFF<Bits<2>>,
     count: DFF<Bits<3>>,
+    /// Clocks without an edge up to this one, from registers: `calm` says
+    /// the clock before had no edge; without it the count is 0, with it
+    /// the count is `quiet`, where 0 stands for 64 or more (then `o_los`
+    /// is already raised: `los_flag`). Issue 21: the four samples' edge
+    /// test is one register in front of the counter, not repeated in front
+    /// of every counter bit, and the tests below are a bit or two (on a
+    /// CoolRunner-II each counter bit is a T flip-flop of two product
+    /// terms).
     quiet: DFF<Bits<6>>,
+    calm: DFF<Bit>,
+    /// The count is past `mute_last`: no bits are taken. Registered
+    /// (from the next count), so the take reads one flip-flop.
+    mute: DFF<Bit>,
     rx_valid: DFF<Bit>,
     rx_bit: DFF<Bit>,
     rx_code: DFF<Bit>,
@@ -120,11 +133,13 @@ impl Default for Cdr {
             o_phase: Default::default(),
             // LOS_SAMPLES / SAMPLES_PER_CLOCK clocks, counted from 0.
             quiet_last: Constant::new((LOS_SAMPLES / SAMPLES_PER_CLOCK as u64 - 1).to_bits()),
-            mute_after: Constant::new((MUTE_SAMPLES / SAMPLES_PER_CLOCK as u64).to_bits()),
+            mute_last: Constant::new((MUTE_SAMPLES / SAMPLES_PER_CLOCK as u64 - 1).to_bits()),
             last: Default::default(),
             phase: Default::default(),
             count: Default::default(),
             quiet: Default::default(),
+            calm: Default::default(),
+            mute: Default::default(),
             rx_valid: Default::default(),
             rx_bit: Default::default(),
             rx_code: Default::default(),
@@ -142,7 +157,9 @@ impl Default for Cdr {
 impl Logic for Cdr {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, last, phase, count, quiet, rx_valid, rx_bit, rx_code, los_flag);
+        dff_setup!(
+            self, clock, last, phase, count, quiet, calm, mute, rx_valid, rx_bit, rx_code, los_flag
+        );
         // Each sample's predecessor, and where the level changed.
         self.prior.next = self.i_samples.val() << 1;
         if self.last.q.val() {
@@ -176,7 +193,7 @@ impl Logic for Cdr {
         // (A line without an edge for 8 bit times is dead, not a run of
         // zeros: legal streams toggle at least every 4, one line-bit error
         // leaves at most 7; no bits from it.)
-        self.live.next = self.quiet.q.val() < self.mute_after.val();
+        self.live.next = !self.mute.q.val();
         self.clean.next = !self.edges.val().get_bit(0);
         if self.count.q.val().get_bits::<2>(0) == 2 {
             self.clean.next = !self.edges.val().get_bit(0) & !self.edges.val().get_bit(1);
@@ -198,14 +215,25 @@ impl Logic for Cdr {
             self.rx_code.d.next = self.taken.val() ^ self.rx_bit.q.val();
             self.phase.d.next = self.take_at.val();
         }
-        // Loss of signal: LOS_SAMPLES samples without an edge.
-        if self.edges.val().any() {
-            self.quiet.d.next = 0.into();
-            self.los_flag.d.next = false;
-        } else if self.quiet.q.val() == self.quiet_last.val() {
-            self.los_flag.d.next = true;
-        } else {
+        // Loss of signal: LOS_SAMPLES samples without an edge, i.e. the
+        // count now at `quiet_last` (63, see `quiet`) or beyond, and no
+        // edge in this clock. The next clock's count: 1 after this one
+        // without an edge (`calm`), one more than now, or (64 or more) 0.
+        self.calm.d.next = !self.edges.val().any();
+        if !self.calm.q.val() {
+            self.quiet.d.next = 1.into();
+        } else if !self.los_flag.q.val() {
             self.quiet.d.next = self.quiet.q.val() + 1;
+        }
+        // Muted from the next clock on: no edge now, and the count now at
+        // `mute_last` or more.
+        self.mute.d.next = !self.edges.val().any()
+            & self.calm.q.val()
+            & (self.los_flag.q.val() | (self.quiet.q.val() >= self.mute_last.val()));
+        if self.edges.val().any() {
+            self.los_flag.d.next = false;
+        } else if self.calm.q.val() & (self.quiet.q.val() == self.quiet_last.val()) {
+            self.los_flag.d.next = true;
         }
         self.o_valid.next = self.rx_valid.q.val();
         self.o_bit.next = self.rx_bit.q.val();

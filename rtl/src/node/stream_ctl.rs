@@ -153,10 +153,16 @@ impl Logic for StreamCtl {
         // word decoder compares them as H1 arrives; H1 follows a good H0,
         // or the packet would have ended at it). ACK is H0's bit 12, i.e.
         // NOT H1's.
-        if self.hold.q.val() != 0 {
+        // `hold` counts down while `tst` holds, and `tst` ends in the
+        // clock after it reached 0 (it then wraps round; nothing reads it
+        // until the next TST loads it). Issue 21: the counter bits read one
+        // flip-flop, not a 9-bit zero test (on a CoolRunner-II a T flip-flop
+        // of two product terms each).
+        if self.tst.q.val() {
             self.hold.d.next = self.hold.q.val() - 1;
-        } else {
-            self.tst.d.next = false;
+            if self.hold.q.val() == 0 {
+                self.tst.d.next = false;
+            }
         }
         if self.i_wvalid.val()
             & (self.i_kind.val() == 1)

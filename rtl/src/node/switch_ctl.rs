@@ -136,9 +136,22 @@ pub struct SwitchCtl {
     reint_m1: Constant<Bits<9>>,
     settle_start: Constant<Bits<7>>,
     mode: DFF<Bits<2>>,
+    /// The mode changed at the last clock edge. The counters start in the
+    /// clock after a change, from this register, a count further on
+    /// (issue 21: the change decision is not repeated in front of every
+    /// counter bit; on a CoolRunner-II each bit is a T flip-flop of two
+    /// product terms).
+    chg: DFF<Bit>,
+    /// Settling after a change: `busy` (with `chg`) is what `settle != 0`
+    /// would be with the counter loaded at the change itself.
     settle: DFF<Bits<7>>,
     busy: DFF<Bit>,
+    /// The grace period after unwrapping (half a CS timeout): `run` is
+    /// what `grace != 0` would be with the counter loaded at the unwrap
+    /// itself; the counter starts the clock after (from `chg` in mode N:
+    /// only an unwrap changes into mode N).
     grace: DFF<Bits<20>>,
+    run: DFF<Bit>,
     ack_time: DFF<Bits<9>>,
     ack_done: DFF<Bit>,
     seen_ack: DFF<Bit>,
@@ -158,6 +171,8 @@ pub struct SwitchCtl {
     unwrap: Signal<Local, Bit>,
     bsr_ok: Signal<Local, Bit>,
     ack_inc: Signal<Local, Bit>,
+    grace_l: Signal<Local, Bits<20>>,
+    grace_m: Signal<Local, Bits<20>>,
 }
 
 impl Default for SwitchCtl {
@@ -192,6 +207,8 @@ impl Default for SwitchCtl {
             settle: Default::default(),
             busy: Default::default(),
             grace: Default::default(),
+            chg: Default::default(),
+            run: Default::default(),
             ack_time: Default::default(),
             ack_done: Default::default(),
             seen_ack: Default::default(),
@@ -211,6 +228,8 @@ impl Default for SwitchCtl {
             unwrap: Default::default(),
             bsr_ok: Default::default(),
             ack_inc: Default::default(),
+            grace_l: Default::default(),
+            grace_m: Default::default(),
         }
     }
 }
@@ -219,23 +238,44 @@ impl Logic for SwitchCtl {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, mode, settle, busy, grace, ack_time, ack_done, seen_ack, pend_up, joined
+            self, clock, mode, chg, settle, busy, grace, run, ack_time, ack_done, seen_ack,
+            pend_up, joined
         );
-        if self.grace.q.val() != 0 {
-            self.grace.d.next = self.grace.q.val() - 1;
+        self.chg.d.next = false;
+        // The grace period: the counter, loaded a clock after the unwrap
+        // with one less, counts down to 0 in the clock the grace ends.
+        self.grace_l.next = self.i_cs_timeout.val() >> 1;
+        // Every bit below the load value's highest one (the count never
+        // leaves them, so in a top with a constant CS timeout synthesis
+        // drops the bits above, as with the 20-bit `grace != 0` test before).
+        self.grace_m.next = self.grace_l.val() | (self.grace_l.val() >> 1);
+        self.grace_m.next = self.grace_m.val() | (self.grace_m.val() >> 2);
+        self.grace_m.next = self.grace_m.val() | (self.grace_m.val() >> 4);
+        self.grace_m.next = self.grace_m.val() | (self.grace_m.val() >> 8);
+        self.grace_m.next = self.grace_m.val() | (self.grace_m.val() >> 16);
+        if self.chg.q.val() & (self.mode.q.val() == 0) {
+            self.grace.d.next = self.grace_l.val() - 1;
+            self.run.d.next = self.grace_l.val() > 1;
+        } else if self.run.q.val() {
+            self.grace.d.next = (self.grace.q.val() - 1) & self.grace_m.val();
+            self.run.d.next = self.grace.q.val() != 1;
         }
-        // Counts down while `busy` (below), not while a 7-bit test of its
-        // own value holds: on a CoolRunner-II each of its bits would repeat
+        // Settling: loaded the clock after a change with one less, then
+        // counting down while `busy`, not while a 7-bit test of its own
+        // value holds: on a CoolRunner-II each of its bits would repeat
         // that test's product terms (docs/benchmarks.md).
-        if self.busy.q.val() {
+        if self.chg.q.val() {
+            self.settle.d.next = self.settle_start.val() - 1;
+        } else if self.busy.q.val() {
             self.settle.d.next = self.settle.q.val() - 1;
         }
-        // `busy` is `settle != 0`, kept in its own register (issue 20: the
-        // decisions read one flip-flop, not a 7-bit compare).
-        self.busy.d.next = self.settle.q.val() > 1;
+        // `busy` is `settle != 0` from the clock after `chg` on, kept in
+        // its own register (issue 20: the decisions read flip-flops, not a
+        // 7-bit compare).
+        self.busy.d.next = self.chg.q.val() | (self.settle.q.val() > 1);
         // The decisions as flat expressions (issue 20: a few levels of
         // logic from registered inputs to the change).
-        self.live.next = !self.busy.q.val();
+        self.live.next = !self.busy.q.val() & !self.chg.q.val();
         self.acting.next = self.i_armed.val() & self.live.val();
         // In failsafe a DATA header on BSR is as good as the ACK (§12).
         self.up_ok.next = self.seen_ack.q.val() | self.i_fs.val();
@@ -308,7 +348,7 @@ impl Logic for SwitchCtl {
             self.pend_up.d.next = true;
         }
         // `ack_done` is `ack_time >= REINTEGRATE_CLOCKS`, in its own
-        // register (cleared with `ack_time` at a change, below).
+        // register (cleared with `ack_time` after a change, below).
         if (self.ack_time.q.val() == self.reint_m1.val()) & self.ack_inc.val() {
             self.ack_done.d.next = true;
         }
@@ -324,18 +364,24 @@ impl Logic for SwitchCtl {
         }
         if self.o_change.val() {
             self.mode.d.next = self.new_mode.val();
-            self.settle.d.next = self.settle_start.val();
-            self.busy.d.next = true;
+            self.chg.d.next = true;
+            if self.unwrap.val() & !self.turn.val() {
+                self.run.d.next = self.grace_l.val() != 0;
+            }
+        }
+        // The reintegration state starts afresh after a change: cleared
+        // while `busy` (from the second clock after the change until the
+        // receivers settled), when nothing reads or sets it (each of them
+        // needs `live`) (issue 21: one literal in front of these
+        // registers, not the change decision).
+        if self.busy.q.val() {
             self.ack_time.d.next = 0.into();
             self.ack_done.d.next = false;
             self.seen_ack.d.next = false;
             self.pend_up.d.next = false;
-            if self.unwrap.val() & !self.turn.val() {
-                self.grace.d.next = self.i_cs_timeout.val() >> 1;
-            }
         }
         self.o_mode.next = self.mode.q.val();
-        self.o_grace_over.next = self.grace.q.val() == 0;
+        self.o_grace_over.next = !self.run.q.val();
     }
 }
 
