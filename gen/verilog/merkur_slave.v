@@ -2804,11 +2804,11 @@ module merkur_slave__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_mark
         if (i_flush) begin
             bad_d = 4'h0;
         end
-        if (hold_q != 9'h0) begin
+        if (tst_q) begin
             hold_d = hold_q - 9'h1;
-        end
-        else begin
-            tst_d = 1'b0;
+            if (hold_q == 9'h0) begin
+                tst_d = 1'b0;
+            end
         end
         if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
             tst_d = 1'b1;
@@ -3140,7 +3140,7 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
 
     // Constant declarations
     localparam  quiet_last = 6'b111111;
-    localparam  mute_after = 6'b10000;
+    localparam  mute_last = 6'b1111;
 
     // Registers and child block ports
     reg  last_d;
@@ -3151,6 +3151,10 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
     reg  [2:0] count_q;
     reg  [5:0] quiet_d;
     reg  [5:0] quiet_q;
+    reg  calm_d;
+    reg  calm_q;
+    reg  mute_d;
+    reg  mute_q;
     reg  rx_valid_d;
     reg  rx_valid_q;
     reg  rx_bit_d;
@@ -3174,6 +3178,8 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
         phase_d = phase_q;
         count_d = count_q;
         quiet_d = quiet_q;
+        calm_d = calm_q;
+        mute_d = mute_q;
         rx_valid_d = rx_valid_q;
         rx_bit_d = rx_bit_q;
         rx_code_d = rx_code_q;
@@ -3197,7 +3203,7 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
             count_d = 3'h0;
         end
         last_d = i_samples[3];
-        live = quiet_q < mute_after;
+        live = ~mute_q;
         clean = ~edges[0];
         if (count_q[(0)+:(2)] == 2'h2) begin
             clean = ~edges[0] & ~edges[1];
@@ -3217,15 +3223,19 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
             rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
+        calm_d = ~|edges;
+        if (~calm_q) begin
+            quiet_d = 6'h1;
+        end
+        else if (~los_flag_q) begin
+            quiet_d = quiet_q + 6'h1;
+        end
+        mute_d = ~|edges & calm_q & (los_flag_q | (quiet_q >= mute_last));
         if (|edges) begin
-            quiet_d = 6'h0;
             los_flag_d = 1'b0;
         end
-        else if (quiet_q == quiet_last) begin
+        else if (calm_q & (quiet_q == quiet_last)) begin
             los_flag_d = 1'b1;
-        end
-        else begin
-            quiet_d = quiet_q + 6'h1;
         end
         o_valid = rx_valid_q;
         o_bit = rx_bit_q;
@@ -3243,6 +3253,10 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
     always @(posedge clock) count_q <= count_d;
     initial quiet_q = 6'h0;
     always @(posedge clock) quiet_q <= quiet_d;
+    initial calm_q = 1'h0;
+    always @(posedge clock) calm_q <= calm_d;
+    initial mute_q = 1'h0;
+    always @(posedge clock) mute_q <= mute_d;
     initial rx_valid_q = 1'h0;
     always @(posedge clock) rx_valid_q <= rx_valid_d;
     initial rx_bit_q = 1'h0;
@@ -4156,11 +4170,11 @@ module merkur_slave__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marke
         if (i_flush) begin
             bad_d = 4'h0;
         end
-        if (hold_q != 9'h0) begin
+        if (tst_q) begin
             hold_d = hold_q - 9'h1;
-        end
-        else begin
-            tst_d = 1'b0;
+            if (hold_q == 9'h0) begin
+                tst_d = 1'b0;
+            end
         end
         if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
             tst_d = 1'b1;
@@ -4393,7 +4407,7 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
 
     // Constant declarations
     localparam  quiet_last = 6'b111111;
-    localparam  mute_after = 6'b10000;
+    localparam  mute_last = 6'b1111;
 
     // Registers and child block ports
     reg  last_d;
@@ -4404,6 +4418,10 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
     reg  [2:0] count_q;
     reg  [5:0] quiet_d;
     reg  [5:0] quiet_q;
+    reg  calm_d;
+    reg  calm_q;
+    reg  mute_d;
+    reg  mute_q;
     reg  rx_valid_d;
     reg  rx_valid_q;
     reg  rx_bit_d;
@@ -4427,6 +4445,8 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
         phase_d = phase_q;
         count_d = count_q;
         quiet_d = quiet_q;
+        calm_d = calm_q;
+        mute_d = mute_q;
         rx_valid_d = rx_valid_q;
         rx_bit_d = rx_bit_q;
         rx_code_d = rx_code_q;
@@ -4450,7 +4470,7 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
             count_d = 3'h0;
         end
         last_d = i_samples[3];
-        live = quiet_q < mute_after;
+        live = ~mute_q;
         clean = ~edges[0];
         if (count_q[(0)+:(2)] == 2'h2) begin
             clean = ~edges[0] & ~edges[1];
@@ -4470,15 +4490,19 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
             rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
+        calm_d = ~|edges;
+        if (~calm_q) begin
+            quiet_d = 6'h1;
+        end
+        else if (~los_flag_q) begin
+            quiet_d = quiet_q + 6'h1;
+        end
+        mute_d = ~|edges & calm_q & (los_flag_q | (quiet_q >= mute_last));
         if (|edges) begin
-            quiet_d = 6'h0;
             los_flag_d = 1'b0;
         end
-        else if (quiet_q == quiet_last) begin
+        else if (calm_q & (quiet_q == quiet_last)) begin
             los_flag_d = 1'b1;
-        end
-        else begin
-            quiet_d = quiet_q + 6'h1;
         end
         o_valid = rx_valid_q;
         o_bit = rx_bit_q;
@@ -4496,6 +4520,10 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
     always @(posedge clock) count_q <= count_d;
     initial quiet_q = 6'h0;
     always @(posedge clock) quiet_q <= quiet_d;
+    initial calm_q = 1'h0;
+    always @(posedge clock) calm_q <= calm_d;
+    initial mute_q = 1'h0;
+    always @(posedge clock) mute_q <= mute_d;
     initial rx_valid_q = 1'h0;
     always @(posedge clock) rx_valid_q <= rx_valid_d;
     initial rx_bit_q = 1'h0;
@@ -5543,12 +5571,16 @@ module merkur_slave__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_
     // Registers and child block ports
     reg  [1:0] mode_d;
     reg  [1:0] mode_q;
+    reg  chg_d;
+    reg  chg_q;
     reg  [6:0] settle_d;
     reg  [6:0] settle_q;
     reg  busy_d;
     reg  busy_q;
     reg  [19:0] grace_d;
     reg  [19:0] grace_q;
+    reg  run_d;
+    reg  run_q;
     reg  [8:0] ack_time_d;
     reg  [8:0] ack_time_q;
     reg  ack_done_d;
@@ -5575,26 +5607,45 @@ module merkur_slave__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_
     reg  unwrap;
     reg  bsr_ok;
     reg  ack_inc;
+    reg  [19:0] grace_l;
+    reg  [19:0] grace_m;
 
     // Combinational logic
     always @(*) begin
         mode_d = mode_q;
+        chg_d = chg_q;
         settle_d = settle_q;
         busy_d = busy_q;
         grace_d = grace_q;
+        run_d = run_q;
         ack_time_d = ack_time_q;
         ack_done_d = ack_done_q;
         seen_ack_d = seen_ack_q;
         pend_up_d = pend_up_q;
         joined_d = joined_q;
-        if (grace_q != 20'h0) begin
-            grace_d = grace_q - 20'h1;
+        chg_d = 1'b0;
+        grace_l = i_cs_timeout >> 1;
+        grace_m = grace_l | (grace_l >> 1);
+        grace_m = grace_m | (grace_m >> 2);
+        grace_m = grace_m | (grace_m >> 4);
+        grace_m = grace_m | (grace_m >> 8);
+        grace_m = grace_m | (grace_m >> 16);
+        if (chg_q & (mode_q == 2'h0)) begin
+            grace_d = grace_l - 20'h1;
+            run_d = grace_l > 20'h1;
         end
-        if (busy_q) begin
+        else if (run_q) begin
+            grace_d = (grace_q - 20'h1) & grace_m;
+            run_d = grace_q != 20'h1;
+        end
+        if (chg_q) begin
+            settle_d = settle_start - 7'h1;
+        end
+        else if (busy_q) begin
             settle_d = settle_q - 7'h1;
         end
-        busy_d = settle_q > 7'h1;
-        live = ~busy_q;
+        busy_d = chg_q | (settle_q > 7'h1);
+        live = ~busy_q & ~chg_q;
         acting = i_armed & live;
         up_ok = seen_ack_q | i_fs;
         fail_in = i_hard_in | (i_run_in & ~i_rw);
@@ -5641,29 +5692,34 @@ module merkur_slave__swc__ctl(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_
         end
         if (o_change) begin
             mode_d = new_mode;
-            settle_d = settle_start;
-            busy_d = 1'b1;
+            chg_d = 1'b1;
+            if (unwrap & ~turn) begin
+                run_d = grace_l != 20'h0;
+            end
+        end
+        if (busy_q) begin
             ack_time_d = 9'h0;
             ack_done_d = 1'b0;
             seen_ack_d = 1'b0;
             pend_up_d = 1'b0;
-            if (unwrap & ~turn) begin
-                grace_d = i_cs_timeout >> 1;
-            end
         end
         o_mode = mode_q;
-        o_grace_over = grace_q == 20'h0;
+        o_grace_over = ~run_q;
     end
 
     // Registers: the power-up value, and the next value (`<register>_d`, set above) at each clock edge
     initial mode_q = 2'h0;
     always @(posedge clock) mode_q <= mode_d;
+    initial chg_q = 1'h0;
+    always @(posedge clock) chg_q <= chg_d;
     initial settle_q = 7'h0;
     always @(posedge clock) settle_q <= settle_d;
     initial busy_q = 1'h0;
     always @(posedge clock) busy_q <= busy_d;
     initial grace_q = 20'h0;
     always @(posedge clock) grace_q <= grace_d;
+    initial run_q = 1'h0;
+    always @(posedge clock) run_q <= run_d;
     initial ack_time_q = 9'h0;
     always @(posedge clock) ack_time_q <= ack_time_d;
     initial ack_done_q = 1'h0;
