@@ -187,10 +187,10 @@ module switch_ctl_props (
         // Induction invariants: the block's counters are the shadow's.
         // The counters start in the clock after a change (since 0, `chg`),
         // so then they may still hold the old mode's values; nothing reads
-        // them in that clock. ack_time stops at REINTEGRATE, where ack_done
-        // is set; busy is settle != 0 (the count down tests it).
-        // The reintegration state is cleared while busy (from since 1), so
-        // it is the shadow's from since 2.
+        // them in that clock. busy is settle != 0 (the count down tests
+        // it). The reintegration state is cleared while busy (from since
+        // 1), so it is the shadow's from since 2; ack_time stops at
+        // REINTEGRATE, where ack_done is set.
         inv_chg: assert (chg_q == (since == 0));
         if (since != 0) begin
             inv_settle: assert (since >= SETTLE ? settle_q == 0 : settle_q == SETTLE - since);

@@ -115,7 +115,7 @@ pub struct Cdr {
     los_flag: DFF<Bit>,
     prior: Signal<Local, Bits<4>>,
     edges: Signal<Local, Bits<4>>,
-    live: Signal<Local, Bit>,
+    still: Signal<Local, Bit>,
     clean: Signal<Local, Bit>,
     take_at: Signal<Local, Bits<2>>,
     taken: Signal<Local, Bit>,
@@ -146,7 +146,7 @@ impl Default for Cdr {
             los_flag: Default::default(),
             prior: Default::default(),
             edges: Default::default(),
-            live: Default::default(),
+            still: Default::default(),
             clean: Default::default(),
             take_at: Default::default(),
             taken: Default::default(),
@@ -192,8 +192,7 @@ impl Logic for Cdr {
         // edge comes before it: at most one per clock.
         // (A line without an edge for 8 bit times is dead, not a run of
         // zeros: legal streams toggle at least every 4, one line-bit error
-        // leaves at most 7; no bits from it.)
-        self.live.next = !self.mute.q.val();
+        // leaves at most 7; no bits from it: `mute`.)
         self.clean.next = !self.edges.val().get_bit(0);
         if self.count.q.val().get_bits::<2>(0) == 2 {
             self.clean.next = !self.edges.val().get_bit(0) & !self.edges.val().get_bit(1);
@@ -209,7 +208,7 @@ impl Logic for Cdr {
         self.take_at.next = !self.count.q.val().get_bits::<2>(0);
         self.taken.next = self.i_samples.val().get_bit(self.take_at.val().index());
         self.rx_valid.d.next = false;
-        if !self.count.q.val().get_bit(2) & self.clean.val() & self.live.val() {
+        if !self.count.q.val().get_bit(2) & self.clean.val() & !self.mute.q.val() {
             self.rx_valid.d.next = true;
             self.rx_bit.d.next = self.taken.val();
             self.rx_code.d.next = self.taken.val() ^ self.rx_bit.q.val();
@@ -217,9 +216,11 @@ impl Logic for Cdr {
         }
         // Loss of signal: LOS_SAMPLES samples without an edge, i.e. the
         // count now at `quiet_last` (63, see `quiet`) or beyond, and no
-        // edge in this clock. The next clock's count: 1 after this one
-        // without an edge (`calm`), one more than now, or (64 or more) 0.
-        self.calm.d.next = !self.edges.val().any();
+        // edge in this clock. `quiet` takes what the count will be if
+        // this clock has no edge: one more than now (1 when the count is
+        // 0, without `calm`), and 0 for 64 or more (it stops there).
+        self.still.next = !self.edges.val().any();
+        self.calm.d.next = self.still.val();
         if !self.calm.q.val() {
             self.quiet.d.next = 1.into();
         } else if !self.los_flag.q.val() {
@@ -227,10 +228,10 @@ impl Logic for Cdr {
         }
         // Muted from the next clock on: no edge now, and the count now at
         // `mute_last` or more.
-        self.mute.d.next = !self.edges.val().any()
+        self.mute.d.next = self.still.val()
             & self.calm.q.val()
             & (self.los_flag.q.val() | (self.quiet.q.val() >= self.mute_last.val()));
-        if self.edges.val().any() {
+        if !self.still.val() {
             self.los_flag.d.next = false;
         } else if self.calm.q.val() & (self.quiet.q.val() == self.quiet_last.val()) {
             self.los_flag.d.next = true;
