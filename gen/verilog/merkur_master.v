@@ -4711,7 +4711,7 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_cod
     // Local signals
     reg  [3:0] prior;
     reg  [3:0] edges;
-    reg  live;
+    reg  still;
     reg  clean;
     reg  [1:0] take_at;
     reg  taken;
@@ -4747,7 +4747,6 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_cod
             count_d = 3'h0;
         end
         last_d = i_samples[3];
-        live = ~mute_q;
         clean = ~edges[0];
         if (count_q[(0)+:(2)] == 2'h2) begin
             clean = ~edges[0] & ~edges[1];
@@ -4761,21 +4760,22 @@ module merkur_master__node__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_cod
         take_at = ~count_q[(0)+:(2)];
         taken = i_samples[take_at];
         rx_valid_d = 1'b0;
-        if (~count_q[2] & clean & live) begin
+        if (~count_q[2] & clean & ~mute_q) begin
             rx_valid_d = 1'b1;
             rx_bit_d = taken;
             rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
-        calm_d = ~|edges;
+        still = ~|edges;
+        calm_d = still;
         if (~calm_q) begin
             quiet_d = 6'h1;
         end
         else if (~los_flag_q) begin
             quiet_d = quiet_q + 6'h1;
         end
-        mute_d = ~|edges & calm_q & (los_flag_q | (quiet_q >= mute_last));
-        if (|edges) begin
+        mute_d = still & calm_q & (los_flag_q | (quiet_q >= mute_last));
+        if (~still) begin
             los_flag_d = 1'b0;
         end
         else if (calm_q & (quiet_q == quiet_last)) begin
@@ -5978,7 +5978,7 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code
     // Local signals
     reg  [3:0] prior;
     reg  [3:0] edges;
-    reg  live;
+    reg  still;
     reg  clean;
     reg  [1:0] take_at;
     reg  taken;
@@ -6014,7 +6014,6 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code
             count_d = 3'h0;
         end
         last_d = i_samples[3];
-        live = ~mute_q;
         clean = ~edges[0];
         if (count_q[(0)+:(2)] == 2'h2) begin
             clean = ~edges[0] & ~edges[1];
@@ -6028,21 +6027,22 @@ module merkur_master__node__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code
         take_at = ~count_q[(0)+:(2)];
         taken = i_samples[take_at];
         rx_valid_d = 1'b0;
-        if (~count_q[2] & clean & live) begin
+        if (~count_q[2] & clean & ~mute_q) begin
             rx_valid_d = 1'b1;
             rx_bit_d = taken;
             rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
-        calm_d = ~|edges;
+        still = ~|edges;
+        calm_d = still;
         if (~calm_q) begin
             quiet_d = 6'h1;
         end
         else if (~los_flag_q) begin
             quiet_d = quiet_q + 6'h1;
         end
-        mute_d = ~|edges & calm_q & (los_flag_q | (quiet_q >= mute_last));
-        if (|edges) begin
+        mute_d = still & calm_q & (los_flag_q | (quiet_q >= mute_last));
+        if (~still) begin
             los_flag_d = 1'b0;
         end
         else if (calm_q & (quiet_q == quiet_last)) begin

@@ -3167,7 +3167,7 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
     // Local signals
     reg  [3:0] prior;
     reg  [3:0] edges;
-    reg  live;
+    reg  still;
     reg  clean;
     reg  [1:0] take_at;
     reg  taken;
@@ -3203,7 +3203,6 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
             count_d = 3'h0;
         end
         last_d = i_samples[3];
-        live = ~mute_q;
         clean = ~edges[0];
         if (count_q[(0)+:(2)] == 2'h2) begin
             clean = ~edges[0] & ~edges[1];
@@ -3217,21 +3216,22 @@ module merkur_slave__rx_bsr__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los
         take_at = ~count_q[(0)+:(2)];
         taken = i_samples[take_at];
         rx_valid_d = 1'b0;
-        if (~count_q[2] & clean & live) begin
+        if (~count_q[2] & clean & ~mute_q) begin
             rx_valid_d = 1'b1;
             rx_bit_d = taken;
             rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
-        calm_d = ~|edges;
+        still = ~|edges;
+        calm_d = still;
         if (~calm_q) begin
             quiet_d = 6'h1;
         end
         else if (~los_flag_q) begin
             quiet_d = quiet_q + 6'h1;
         end
-        mute_d = ~|edges & calm_q & (los_flag_q | (quiet_q >= mute_last));
-        if (|edges) begin
+        mute_d = still & calm_q & (los_flag_q | (quiet_q >= mute_last));
+        if (~still) begin
             los_flag_d = 1'b0;
         end
         else if (calm_q & (quiet_q == quiet_last)) begin
@@ -4434,7 +4434,7 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
     // Local signals
     reg  [3:0] prior;
     reg  [3:0] edges;
-    reg  live;
+    reg  still;
     reg  clean;
     reg  [1:0] take_at;
     reg  taken;
@@ -4470,7 +4470,6 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
             count_d = 3'h0;
         end
         last_d = i_samples[3];
-        live = ~mute_q;
         clean = ~edges[0];
         if (count_q[(0)+:(2)] == 2'h2) begin
             clean = ~edges[0] & ~edges[1];
@@ -4484,21 +4483,22 @@ module merkur_slave__rx_in__mon__cdr(clock,i_samples,o_valid,o_bit,o_code,o_los,
         take_at = ~count_q[(0)+:(2)];
         taken = i_samples[take_at];
         rx_valid_d = 1'b0;
-        if (~count_q[2] & clean & live) begin
+        if (~count_q[2] & clean & ~mute_q) begin
             rx_valid_d = 1'b1;
             rx_bit_d = taken;
             rx_code_d = taken ^ rx_bit_q;
             phase_d = take_at;
         end
-        calm_d = ~|edges;
+        still = ~|edges;
+        calm_d = still;
         if (~calm_q) begin
             quiet_d = 6'h1;
         end
         else if (~los_flag_q) begin
             quiet_d = quiet_q + 6'h1;
         end
-        mute_d = ~|edges & calm_q & (los_flag_q | (quiet_q >= mute_last));
-        if (|edges) begin
+        mute_d = still & calm_q & (los_flag_q | (quiet_q >= mute_last));
+        if (~still) begin
             los_flag_d = 1'b0;
         end
         else if (calm_q & (quiet_q == quiet_last)) begin
