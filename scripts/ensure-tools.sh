@@ -13,9 +13,9 @@ if ((${#missing[@]})); then
 fi
 
 # The YoWASP synthesis tools (merkur synth): a venv made from the lock, remade
-# when the lock changes.
+# when the lock or the venv's stack setting changes.
 venv="$here/../.tools/venv"
-want=$(sha256sum "$here/requirements-synth.txt" | cut -d' ' -f1)
+want=$(cat "$here/requirements-synth.txt" "$here/yowasp_sitecustomize.py" | sha256sum | cut -d' ' -f1)
 if [[ "$(cat "$venv/lock.sha256" 2>/dev/null)" != "$want" ]]; then
   "$here/install-tools.sh" --synth
 fi

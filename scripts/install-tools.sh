@@ -16,8 +16,12 @@ if [[ "${1:-}" == "--synth" ]]; then
   rm -rf "$venv"
   python3 -m venv "$venv"
   "$venv/bin/pip" install -q --disable-pip-version-check --require-hashes -r "$req"
-  # The stamp says which lock the venv was made from (ensure-tools.sh).
-  sha256sum "$req" | cut -d' ' -f1 >"$venv/lock.sha256"
+  # A larger WebAssembly stack for the YoWASP tools (see the file).
+  site=$("$venv/bin/python3" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')
+  cp "$here/yowasp_sitecustomize.py" "$site/sitecustomize.py"
+  # The stamp says which lock and stack setting the venv was made from
+  # (ensure-tools.sh).
+  cat "$req" "$here/yowasp_sitecustomize.py" | sha256sum | cut -d' ' -f1 >"$venv/lock.sha256"
   echo "synthesis tools installed" >&2
   exit 0
 fi

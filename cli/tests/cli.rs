@@ -669,7 +669,8 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
         // smallest need first, then the four strategies of
         // docs/synthesis.md's table one by one, each with its need or,
         // where ABC9's sequential mode crashes in YoWASP's Yosys (the
-        // `-dff` ones, docs/synthesis.md), the crash.
+        // `-dff` ones, docs/synthesis.md: a YoWASP without the venv's
+        // larger WebAssembly stack), the crash.
         assert!(
             err.contains("it needs ") && err.contains("ICESTORM_LC of 1280 ("),
             "{err}"

@@ -43,7 +43,9 @@
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
-// | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
+// | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR); with `i_cap_sel` INPUT's and BSR's |
+// | `i_cap_sel` | in | 1 | static | 0: the switchbox chooses INPUT and BSR from `i_pi` and `i_si`; 1: the capture register in front already did, by `o_cap_si` (below) |
+// | `o_cap_si` | out | 1 | clock | for a capture register that makes the switchbox's input choice: take SI as INPUT and PI as BSR in this clock (the mode in the next clock is WU; a register) |
 // | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 // | `i_address` | in | 12 | static (DIP switches) | home slot |
 // | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
@@ -74,12 +76,14 @@
 // SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ sw_dark ─ SO
 // ```
 // --------------------------------------------------------------------------
-module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_rtx,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
+module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_cs_timeout,i_sensor_data,i_irq1,i_irq2,i_fs_req,i_master,i_slot_cfg,i_slot_data,i_slot_alive,i_fs_set,o_fwd_slot,o_regen,o_wvalid,o_kind,o_slot,o_data,o_alive,o_alarm,o_reason,o_ok,o_hdr_bad,o_rtx,o_act_data,o_mode,o_failsafe,o_perr,o_ferr);
 
     // Module arguments
     input wire  clock;
     input wire  [3:0] i_pi;
     input wire  [3:0] i_si;
+    input wire  i_cap_sel;
+    output reg  o_cap_si;
     output reg  [1:0] o_po;
     output reg  [1:0] o_so;
     input wire  [11:0] i_address;
@@ -148,6 +152,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
     reg  swc__i_tst_bsr;
     reg  swc__i_fwd;
     wire  [1:0] swc__o_mode;
+    wire  swc__o_wu_next;
     wire  swc__o_change;
     wire  swc__o_relink;
     wire  swc__o_tst_start;
@@ -338,6 +343,7 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         .i_cs_timeout(i_cs_timeout),
         .i_fwd(swc__i_fwd),
         .o_mode(swc__o_mode),
+        .o_wu_next(swc__o_wu_next),
         .o_change(swc__o_change),
         .o_relink(swc__o_relink),
         .o_tst_start(swc__o_tst_start),
@@ -491,6 +497,11 @@ module merkur_slave(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_actuator,i_
         sbox__i_mode = swc__o_mode;
         rx_in__i_samples = sbox__o_input;
         rx_bsr__i_samples = sbox__o_bsr;
+        if (i_cap_sel) begin
+            rx_in__i_samples = i_pi;
+            rx_bsr__i_samples = i_si;
+        end
+        o_cap_si = swc__o_wu_next;
         rx_in__i_tst_fail = ~wrapped & swc__o_grace_over;
         rx_bsr__i_tst_fail = ~wrapped & swc__o_grace_over;
         fwd__i_bvalid = rx_in__o_bvalid;
@@ -5128,7 +5139,10 @@ endmodule // merkur_slave__rx_in__mon__word__nib_top
 // | `o_input`, `o_bsr` | out | 4 | clock | logical inputs of the node |
 // | `o_po`, `o_so` | out | 2 | clock | physical outputs |
 //
-// Latency: combinational (0 clocks); the node registers its I/O.
+// Latency: combinational (0 clocks); the node registers its I/O. A slave
+// or a master can leave the input half to the capture register in front
+// of it ([`crate::node::slave`]'s `i_cap_sel`, as every synthesis top
+// does), which then makes the same choice a clock ahead.
 //
 // ```text
 // i_mode   == N ==X== WU ==========
@@ -5237,7 +5251,7 @@ endmodule // merkur_slave__sbox
 // o_mode    ==N===X==WU====
 // ```
 // --------------------------------------------------------------------------
-module merkur_slave__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,i_fwd,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
+module merkur_slave__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,i_fwd,o_mode,o_wu_next,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
 
     // Module arguments
     input wire  clock;
@@ -5259,6 +5273,7 @@ module merkur_slave__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i
     input wire  [19:0] i_cs_timeout;
     input wire  i_fwd;
     output reg  [1:0] o_mode;
+    output reg  o_wu_next;
     output reg  o_change;
     output reg  o_relink;
     output reg  o_tst_start;
@@ -5419,6 +5434,7 @@ module merkur_slave__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i
         fs_set_d = ctl__o_fs_set;
         grace_over_d = ctl__o_grace_over;
         o_mode = mode_q;
+        o_wu_next = ctl__o_mode == 2'h1;
         o_change = change_q;
         o_relink = relink_q;
         o_tst_start = tst_start_q;

@@ -311,6 +311,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
     reg  swc__i_tst_bsr;
     reg  swc__i_fwd;
     wire  [1:0] swc__o_mode;
+    wire  swc__o_wu_next;
     wire  swc__o_change;
     wire  swc__o_relink;
     wire  swc__o_tst_start;
@@ -827,6 +828,7 @@ module merkur_special_master(clock,i_pi,i_si,o_po,o_so,i_address,i_slots_m1,i_pe
         .i_cs_timeout(i_cs_timeout),
         .i_fwd(swc__i_fwd),
         .o_mode(swc__o_mode),
+        .o_wu_next(swc__o_wu_next),
         .o_change(swc__o_change),
         .o_relink(swc__o_relink),
         .o_tst_start(swc__o_tst_start),
@@ -8496,7 +8498,10 @@ endmodule // merkur_special_master__rx_in__mon__word__nib_top
 // | `o_input`, `o_bsr` | out | 4 | clock | logical inputs of the node |
 // | `o_po`, `o_so` | out | 2 | clock | physical outputs |
 //
-// Latency: combinational (0 clocks); the node registers its I/O.
+// Latency: combinational (0 clocks); the node registers its I/O. A slave
+// or a master can leave the input half to the capture register in front
+// of it ([`crate::node::slave`]'s `i_cap_sel`, as every synthesis top
+// does), which then makes the same choice a clock ahead.
 //
 // ```text
 // i_mode   == N ==X== WU ==========
@@ -9039,7 +9044,7 @@ endmodule // merkur_special_master__stx__tx
 // o_mode    ==N===X==WU====
 // ```
 // --------------------------------------------------------------------------
-module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,i_fwd,o_mode,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
+module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_run_bsr,i_los_in,i_los_bsr,i_rw,i_fs,i_tst_ack,i_frame_start,i_bsr_data,i_in_pkt,i_tst_in,i_tst_bsr,i_cs_timeout,i_fwd,o_mode,o_wu_next,o_change,o_relink,o_tst_start,o_fs_set,o_grace_over);
 
     // Module arguments
     input wire  clock;
@@ -9061,6 +9066,7 @@ module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_
     input wire  [19:0] i_cs_timeout;
     input wire  i_fwd;
     output reg  [1:0] o_mode;
+    output reg  o_wu_next;
     output reg  o_change;
     output reg  o_relink;
     output reg  o_tst_start;
@@ -9221,6 +9227,7 @@ module merkur_special_master__swc(clock,i_armed,i_hard_in,i_hard_bsr,i_run_in,i_
         fs_set_d = ctl__o_fs_set;
         grace_over_d = ctl__o_grace_over;
         o_mode = mode_q;
+        o_wu_next = ctl__o_mode == 2'h1;
         o_change = change_q;
         o_relink = relink_q;
         o_tst_start = tst_start_q;

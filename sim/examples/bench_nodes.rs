@@ -40,6 +40,8 @@ fn statics(chain: bool) -> Vec<(String, u64)> {
         }
     } else {
         v.push(("i_address".into(), 1));
+        // The node's own switchbox chooses its inputs.
+        v.push(("i_cap_sel".into(), 0));
     }
     v
 }

@@ -186,7 +186,7 @@ fn slave_under_icarus_matches_verilator() {
     let tb = format!(
         "module tb; reg clock = 0; reg [3:0] pi = 0, si = 0; wire [1:0] po, so; reg [7:0] mem [0:{n}]; integer i, f;\n\
          wire [15:0] act; wire [1:0] mode; wire fs; wire [15:0] perr, ferr;\n\
-         top dut(.clock(clock), .i_pi(pi), .i_si(si), .o_po(po), .o_so(so), .i_address(12'd1), .i_slots_m1(12'd{sm1}),\n\
+         top dut(.clock(clock), .i_pi(pi), .i_si(si), .i_cap_sel(1'b0), .o_po(po), .o_so(so), .i_address(12'd1), .i_slots_m1(12'd{sm1}),\n\
            .i_actuator(1'b0), .i_cs_timeout(16'd4000), .i_sensor_data(16'd{sensor}), .i_irq1(1'b0), .i_irq2(1'b0), .i_fs_req(1'b0),\n\
            .o_act_data(act), .o_mode(mode), .o_failsafe(fs), .o_perr(perr), .o_ferr(ferr));\n\
          initial begin $readmemh(\"stim.hex\", mem); f = $fopen(\"out.txt\", \"w\");\n\

@@ -4,7 +4,10 @@
 //! with ACK and then a DATA frame on PI → it reintegrates (mode N,
 //! RECONFIG(N)); with the ring known wrapped (RWC in the headers) a dark PI
 //! is a second fault → failsafe, FS set in the headers it forwards and its
-//! slot no longer written.
+//! slot no longer written. Every run drives a second copy of the slave
+//! behind a capture register that makes its switchbox's input choice
+//! (`i_cap_sel`, `o_cap_si`, as the synthesis tops build it), which must
+//! do the same in every clock.
 
 use merkur_model::line::{nrzi_encode, push_group, Word, CODE_I};
 use merkur_model::ring::{Frame, Header, HeaderRx, Mode, Slot};
@@ -99,7 +102,14 @@ struct Run {
     rso: PacketReader,
 }
 
-fn run(format: WordFormat, rtx: bool, plan: &[(Seg, Seg)], si_shift: usize, rng: &mut Rng) -> Run {
+fn run(
+    format: WordFormat,
+    rtx: bool,
+    plan: &[(Seg, Seg)],
+    si_shift: usize,
+    rng: &mut Rng,
+    ctx: &str,
+) -> Run {
     let ext = format == WordFormat::ExtendedAlarm;
     let (mut pi_code, mut si_code) = (vec![], vec![]);
     (0..8).for_each(|_| {
@@ -128,6 +138,10 @@ fn run(format: WordFormat, rtx: bool, plan: &[(Seg, Seg)], si_shift: usize, rng:
     let n = pi.len().min(si.len());
 
     let mut s = Model::build(&block_verilog(Slave::with_rtx(format, rtx))).unwrap();
+    // The same slave behind a capture register that makes its switchbox's
+    // input choice (`i_cap_sel`, as every synthesis top and the ring
+    // harness build it): it must do the same in every clock.
+    let mut s2 = Model::build(&block_verilog(Slave::with_rtx(format, rtx))).unwrap();
     let mut mpo = Model::build(&block_verilog(Monitor::new(format))).unwrap();
     let mut mso = Model::build(&block_verilog(Monitor::new(format))).unwrap();
     let p = |m: &Model, x: &str| m.port(x);
@@ -139,7 +153,15 @@ fn run(format: WordFormat, rtx: bool, plan: &[(Seg, Seg)], si_shift: usize, rng:
     ] {
         let i = p(&s, name);
         s.set(i, v);
+        s2.set(i, v);
     }
+    let sel = p(&s2, "i_cap_sel");
+    s2.set(sel, 1);
+    let cap_si = p(&s2, "o_cap_si");
+    // o_cap_si after each clock: the capture register takes it at the
+    // next edge, and the node reads the samples in the clock after.
+    let mut choice: Vec<u64> = vec![];
+    let watch = ["o_po", "o_so", "o_mode", "o_failsafe", "o_perr", "o_ferr"].map(|x| p(&s, x));
     for m in [&mut mpo, &mut mso] {
         let i = p(m, "i_slots_m1");
         m.set(i, SLOTS as u64 - 1);
@@ -167,6 +189,19 @@ fn run(format: WordFormat, rtx: bool, plan: &[(Seg, Seg)], si_shift: usize, rng:
         s.set(ipi, pi[t]);
         s.set(isi, si[t]);
         s.tick(clk);
+        let si_in = t >= 2 && choice[t - 2] == 1;
+        s2.set(ipi, if si_in { si[t] } else { pi[t] });
+        s2.set(isi, if si_in { pi[t] } else { si[t] });
+        s2.tick(clk);
+        choice.push(s2.get(cap_si));
+        for (i, w) in watch.iter().enumerate() {
+            assert_eq!(
+                s.get(*w),
+                s2.get(*w),
+                "{ctx}: clock {t}: the slave behind the selecting capture differs in {}",
+                ["o_po", "o_so", "o_mode", "o_failsafe", "o_perr", "o_ferr"][i]
+            );
+        }
         let mode = s.get(omode);
         if modes.last().map(|&(m, _)| m) != Some(mode) {
             modes.push((mode, t / 2));
@@ -234,7 +269,7 @@ fn unwrapping_cuts_no_frame() {
         plan.extend(std::iter::repeat((healthy, Dark)).take(3));
         plan.extend(std::iter::repeat((healthy, Tst { ack: true })).take(2));
         plan.extend(std::iter::repeat((healthy, Idle)).take(4));
-        let r = run(format, true, &plan, 170, &mut rng);
+        let r = run(format, true, &plan, 170, &mut rng, &ctx);
         let seq: Vec<u64> = r.modes.iter().map(|&(m, _)| m).collect();
         assert_eq!(seq, vec![n, wd, n], "{ctx}: WD end, modes {:?}", r.modes);
         let all: Vec<u16> = (0..plan.len() as u16).collect();
@@ -254,7 +289,7 @@ fn unwrapping_cuts_no_frame() {
         plan.extend(std::iter::repeat((Dark, healthy)).take(3));
         plan.extend(std::iter::repeat((Tst { ack: true }, healthy)).take(2));
         plan.extend(std::iter::repeat((healthy, Idle)).take(4));
-        let r = run(format, true, &plan, 200, &mut rng);
+        let r = run(format, true, &plan, 200, &mut rng, &ctx);
         let seq: Vec<u64> = r.modes.iter().map(|&(m, _)| m).collect();
         assert_eq!(seq, vec![n, wu, n], "{ctx}: WU end, modes {:?}", r.modes);
         let want: Vec<u16> = (0..plan.len() as u16).filter(|&c| c != 10).collect();
@@ -271,6 +306,7 @@ fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
     let ext = format == WordFormat::ExtendedAlarm;
     let seed = Rng::seed(0x5a7e);
     let mut rng = Rng::new(seed);
+    let ctx = format!("{format:?}, seed {seed} (MERKUR_SEED)");
     use Seg::*;
     // (PI, SI) per cycle period.
     let mut plan: Vec<(Seg, Seg)> = vec![];
@@ -285,8 +321,7 @@ fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
         fs_at,
         rpo,
         rso,
-    } = run(format, rtx, &plan, 0, &mut rng);
-    let ctx = format!("{format:?}, seed {seed} (MERKUR_SEED)");
+    } = run(format, rtx, &plan, 0, &mut rng, &ctx);
     let bit = |cycle: usize| 40 + cycle * PERIOD;
     // Mode sequence: N, WU (when PI went dark), N (after the repair), WU
     // again (second fault, with failsafe).

@@ -80,6 +80,10 @@ fn ddr_stages_keep_the_order_of_samples_and_pairs() {
     // Line level per quarter clock (10 time units; the clock period is 40),
     // changing halfway between sampling instants.
     let v: Vec<u8> = (0..4 * N).map(|_| rng.below(2) as u8).collect();
+    // The other line (SI to the first's PI) and, per clock, the node's
+    // capture choice (o_cap_si: take the other line's samples).
+    let v2: Vec<u8> = (0..4 * N).map(|_| rng.below(2) as u8).collect();
+    let sels: Vec<u8> = (0..N).map(|_| rng.below(2) as u8).collect();
     let pairs: Vec<u8> = (0..N).map(|_| rng.below(4) as u8).collect();
     let hex = |xs: &[u8]| xs.iter().map(|x| format!("{x:x}\n")).collect::<String>();
     let tb = format!(
@@ -89,25 +93,37 @@ module tb;
     reg clk = 1'b1;
     reg clk90 = 1'b0;
     reg d = 1'b0;
+    reg d2 = 1'b0;
+    reg sel = 1'b0;
     reg [1:0] pair = 2'd0;
     reg [0:0] lv [0:{l}];
+    reg [0:0] lv2 [0:{l}];
+    reg [0:0] sv [0:{n1}];
     reg [1:0] pv [0:{n1}];
     wire [3:0] q;
+    wire [3:0] q2;
+    wire [3:0] s1;
+    wire [3:0] s2;
     wire line;
     integer j;
     integer k;
-    merkur_ddr_in cap(.clk(clk), .clk90(clk90), .d(d), .q(q));
+    merkur_ddr_in cap(.clk(clk), .clk90(clk90), .d(d), .alt(s2), .sel(sel), .s(s1), .q(q));
+    merkur_ddr_in cap2(.clk(clk), .clk90(clk90), .d(d2), .alt(s1), .sel(sel), .s(s2), .q(q2));
     merkur_ddr_out out(.clk(clk), .d(pair), .q(line));
     always #20 clk = ~clk;
     initial begin #10 clk90 = 1'b1; forever #20 clk90 = ~clk90; end
     initial begin
         $readmemh("lv.hex", lv);
         $readmemh("pv.hex", pv);
+        $readmemh("lv2.hex", lv2);
+        $readmemh("sv.hex", sv);
         d = lv[0][0];
+        d2 = lv2[0][0];
         // quarter j's level is driven over [10j-5, 10j+5)
         #5;
         for (j = 1; j <= {l}; j = j + 1) begin
             d = lv[j][0];
+            d2 = lv2[j][0];
             #10;
         end
     end
@@ -118,7 +134,9 @@ module tb;
             // the samples of clock k-1; the pair of clock k (as a register
             // updated at this edge would give it)
             $display("Q %0d %h", k, q);
+            $display("R %0d %h", k, q2);
             pair = pv[k];
+            sel = sv[k][0];
             #10 $display("H %0d %b", k, line);
             #20 $display("L %0d %b", k, line);
         end
@@ -137,6 +155,8 @@ endmodule
             ("ddr.v", DDR_IO),
             ("lv.hex", &hex(&v)),
             ("pv.hex", &hex(&pairs)),
+            ("lv2.hex", &hex(&v2)),
+            ("sv.hex", &hex(&sels)),
         ],
     );
     let mut checked = 0;
@@ -148,14 +168,23 @@ endmodule
         let k: usize = f[1].parse().unwrap();
         match f[0] {
             // Just after clk rises (clock k): the four samples of clock
-            // k − 1, quarter 4(k − 1) first in bit 0.
-            "Q" if k >= 2 => {
+            // k − 1, quarter 4(k − 1) first in bit 0; of the other line
+            // when the choice in clock k − 1 was high (the register takes
+            // it with the samples).
+            "Q" | "R" if k >= 2 => {
                 let q = u8::from_str_radix(f[2], 16).unwrap();
                 let m = k - 1;
-                let want = v[4 * m] | v[4 * m + 1] << 1 | v[4 * m + 2] << 2 | v[4 * m + 3] << 3;
+                let own = if f[0] == "Q" { &v } else { &v2 };
+                let other = if f[0] == "Q" { &v2 } else { &v };
+                let line = if sels[m] == 1 { other } else { own };
+                let want = line[4 * m]
+                    | line[4 * m + 1] << 1
+                    | line[4 * m + 2] << 2
+                    | line[4 * m + 3] << 3;
                 assert_eq!(
                     q, want,
-                    "seed {seed}: samples of clock {m}: got {q:04b}, want {want:04b}"
+                    "seed {seed}: capture {} in clock {m} (choice {}): got {q:04b}, want {want:04b}",
+                    f[0], sels[m]
                 );
                 checked += 1;
             }
@@ -183,7 +212,7 @@ endmodule
         }
     }
     assert!(
-        checked > 3 * (N - 10),
+        checked > 4 * (N - 10),
         "seed {seed}: only {checked} checks ran:\n{out}"
     );
 }

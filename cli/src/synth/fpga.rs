@@ -82,8 +82,9 @@ pub const STRATEGIES_DEFAULT: &[&str] = &[""];
 /// clock-enable flip-flops (the fewest logic cells and the fewest control
 /// sets, so nextpnr can pack eight cells to a logic block; with `-dff`
 /// alone the sets need more blocks than the device has), then, where ABC9's
-/// sequential mode crashes (YoWASP's WebAssembly stack: the lean actuator),
-/// clock enables only where 16 or more flip-flops share one, and last that
+/// sequential mode crashes (YoWASP's WebAssembly stack, unless the venv's
+/// `sitecustomize.py` enlarged it: docs/synthesis.md) or the node does
+/// not fit, clock enables only where 16 or more flip-flops share one, and last that
 /// with ABC9's sequential mode (the lean actuator of issue 27's Verilog
 /// needs 1,281 cells with the third, 1,250 with the fourth; ABC's mapping
 /// moves by a few cells with the text it reads). Measured in
@@ -424,9 +425,10 @@ fn critical_path(report: &serde_json::Value) -> Vec<String> {
 /// options `opts` (a strategy of [`Fpga::strategies`]).
 fn yosys_script(family: Family, files: &[&str], top: &str, opts: &str) -> String {
     // The defaults of each Yosys: 0.70 maps with ABC9 by default, 0.23
-    // with ABC. (`-dff`, ABC9's sequential mode, aborts on some nodes with
-    // Yosys 0.70: the masters, the lean actuator; a strategy list goes on
-    // to the next one then.)
+    // with ABC. (`-dff`, ABC9's sequential mode, aborted on some nodes with
+    // Yosys 0.70 under wasmtime's default WebAssembly stack: the masters,
+    // the lean actuator; the synthesis venv enlarges it, docs/synthesis.md;
+    // a strategy list goes on to the next one after a crash.)
     let synth = synth_command(family);
     let opts = if opts.is_empty() {
         String::new()

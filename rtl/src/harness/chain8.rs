@@ -240,6 +240,7 @@ impl Logic for Chain8 {
         self.n0.i_slot_data.next = 0.into();
         self.n0.i_slot_alive.next = false;
         self.n0.i_fs_set.next = false;
+        self.n0.i_cap_sel.next = false;
         self.o_act0.next = self.n0.o_act_data.val();
         self.o_mode0.next = self.n0.o_mode.val();
         self.o_fs0.next = self.n0.o_failsafe.val();
@@ -260,6 +261,7 @@ impl Logic for Chain8 {
         self.n1.i_slot_data.next = 0.into();
         self.n1.i_slot_alive.next = false;
         self.n1.i_fs_set.next = false;
+        self.n1.i_cap_sel.next = false;
         self.o_act1.next = self.n1.o_act_data.val();
         self.o_mode1.next = self.n1.o_mode.val();
         self.o_fs1.next = self.n1.o_failsafe.val();
@@ -282,6 +284,7 @@ impl Logic for Chain8 {
         self.n2.i_slot_data.next = 0.into();
         self.n2.i_slot_alive.next = false;
         self.n2.i_fs_set.next = false;
+        self.n2.i_cap_sel.next = false;
         self.o_act2.next = self.n2.o_act_data.val();
         self.o_mode2.next = self.n2.o_mode.val();
         self.o_fs2.next = self.n2.o_failsafe.val();
@@ -304,6 +307,7 @@ impl Logic for Chain8 {
         self.n3.i_slot_data.next = 0.into();
         self.n3.i_slot_alive.next = false;
         self.n3.i_fs_set.next = false;
+        self.n3.i_cap_sel.next = false;
         self.o_act3.next = self.n3.o_act_data.val();
         self.o_mode3.next = self.n3.o_mode.val();
         self.o_fs3.next = self.n3.o_failsafe.val();
@@ -326,6 +330,7 @@ impl Logic for Chain8 {
         self.n4.i_slot_data.next = 0.into();
         self.n4.i_slot_alive.next = false;
         self.n4.i_fs_set.next = false;
+        self.n4.i_cap_sel.next = false;
         self.o_act4.next = self.n4.o_act_data.val();
         self.o_mode4.next = self.n4.o_mode.val();
         self.o_fs4.next = self.n4.o_failsafe.val();
@@ -348,6 +353,7 @@ impl Logic for Chain8 {
         self.n5.i_slot_data.next = 0.into();
         self.n5.i_slot_alive.next = false;
         self.n5.i_fs_set.next = false;
+        self.n5.i_cap_sel.next = false;
         self.o_act5.next = self.n5.o_act_data.val();
         self.o_mode5.next = self.n5.o_mode.val();
         self.o_fs5.next = self.n5.o_failsafe.val();
@@ -370,6 +376,7 @@ impl Logic for Chain8 {
         self.n6.i_slot_data.next = 0.into();
         self.n6.i_slot_alive.next = false;
         self.n6.i_fs_set.next = false;
+        self.n6.i_cap_sel.next = false;
         self.o_act6.next = self.n6.o_act_data.val();
         self.o_mode6.next = self.n6.o_mode.val();
         self.o_fs6.next = self.n6.o_failsafe.val();
@@ -392,6 +399,7 @@ impl Logic for Chain8 {
         self.n7.i_slot_data.next = 0.into();
         self.n7.i_slot_alive.next = false;
         self.n7.i_fs_set.next = false;
+        self.n7.i_cap_sel.next = false;
         self.o_act7.next = self.n7.o_act_data.val();
         self.o_mode7.next = self.n7.o_mode.val();
         self.o_fs7.next = self.n7.o_failsafe.val();

@@ -30,7 +30,9 @@
 //! edge; the receiver's 4 samples are the line in the last 4 ticks (oldest
 //! in bit 0), taken into a register at the receiver's clock edge, as the
 //! capture register of every synthesis top (`merkur_ddr_in`'s `q`) takes
-//! them: the node's logic reads them in the clock after. Everything else
+//! them (for a slave or a master choosing PI or SI as INPUT by the node's
+//! `o_cap_si`, as that register does): the node's logic reads them in
+//! the clock after. Everything else
 //! the top gives a node (address, slot count, CS timeout, period, sensor
 //! value, user requests, a special master's backup priority and election
 //! time, a master's Wishbone) goes through a register on the node's clock
@@ -458,6 +460,7 @@ const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated rin
 // | `i_pi`, `i_si` | in | 4, 4 | the PI and SI fibres' last 4 line levels (oldest in bit 0) |
 // | `i_pio`, `i_sio` | in | 1, 1 | the level before the oldest of them |
 // | `i_pif`, `i_sif` | in | 12, 12 | for each of the 4 levels (3 bits each, oldest in bits 2:0), the sub-tick time of the sender's half that starts in that tick: eighths of a tick before it |
+// | `i_sel_si` | in | 1 | the node's `o_cap_si`: the capture register takes SI's samples into `o_pi` and PI's into `o_si` (the switchbox's input choice, as every synthesis top's capture makes it for a slave or a master; 0 for the special master) |
 // | `i_slots_m1`, `i_cs_timeout`, `i_period` | in | 12, 20, 20 | the ring's configuration |
 // | `i_irq` | in | 5 | the node's interrupt pulses `{fs change, reconfig, failsafe, irq2, irq1}` |
 // | `nclk` | in | 1 | the node's clock: `clk` gated by `o_enl`, made in the ring top for every node at once (no `i_` prefix: a clock, like the nodes' `clock`, not a value the build keeps per instance) |
@@ -470,7 +473,7 @@ const NODE_ENV_MODULE: &str = r#"// ---- merkur_node_env: what the simulated rin
 // | `o_pi` … `o_period` | out | | the inputs above and the node's address, user request `{fs, irq2, irq1}` and sensor value (chosen by `i_incyc`), registered on `nclk` |
 // | `o_nirq1`, `o_nirq2`, `o_nirqfs`, `o_nirqrc`, `o_nirqfsc` | out | 16 each | interrupt pulses counted while the node is alive |
 module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val, i_incyc, i_innew, i_pi, i_si,
-    i_pio, i_sio, i_pif, i_sif, i_slots_m1, i_cs_timeout, i_period, i_irq, nclk, o_enl, o_hs, o_hfrac, o_first, o_dead,
+    i_pio, i_sio, i_pif, i_sif, i_sel_si, i_slots_m1, i_cs_timeout, i_period, i_irq, nclk, o_enl, o_hs, o_hfrac, o_first, o_dead,
     o_por, o_pi, o_si, o_addr, o_slots_m1,
     o_cs_timeout, o_period, o_ureq, o_sens, o_nirq1, o_nirq2, o_nirqfs, o_nirqrc, o_nirqfsc);
     input wire clk;
@@ -487,6 +490,7 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     input wire i_sio;
     input wire [11:0] i_pif;
     input wire [11:0] i_sif;
+    input wire i_sel_si;
     input wire [11:0] i_slots_m1;
     input wire [19:0] i_cs_timeout;
     input wire [19:0] i_period;
@@ -573,10 +577,13 @@ module merkur_node_env(clk, i_index, i_cfg_we, i_cfg_sel, i_cfg_field, i_cfg_val
     wire [4:0] pi_l = {i_pi, i_pio};
     wire [4:0] si_l = {i_si, i_sio};
     integer j;
+    function automatic smp(input [4:0] l, input [11:0] f, input [2:0] fr, input integer k);
+        smp = (l[k + 1] != l[k]) && (f[3 * k +: 3] < fr) ? l[k] : l[k + 1];
+    endfunction
     always @(posedge nclk) begin
         for (j = 0; j < 4; j = j + 1) begin
-            o_pi[j] <= (pi_l[j + 1] != pi_l[j]) && (i_pif[3 * j +: 3] < frac) ? pi_l[j] : pi_l[j + 1];
-            o_si[j] <= (si_l[j + 1] != si_l[j]) && (i_sif[3 * j +: 3] < frac) ? si_l[j] : si_l[j + 1];
+            o_pi[j] <= i_sel_si ? smp(si_l, i_sif, frac, j) : smp(pi_l, i_pif, frac, j);
+            o_si[j] <= i_sel_si ? smp(pi_l, i_pif, frac, j) : smp(si_l, i_sif, frac, j);
         end
         o_addr <= addr;
         o_slots_m1 <= i_slots_m1;
@@ -698,6 +705,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
         &format!(
             "    // ---- node {k}: {kind} ----\n\
              \x20   wire [1:0] mode_{k};\n\
+             \x20   // The node's capture choice (SI as INPUT); 0 for the special master, whose switchbox chooses.\n    wire capsi_{k};\n\
              \x20   // The fibre that brings the node its frames: PI, or SI when wrapped up (WU).\n\
              \x20   wire [2:0] incyc_{k} = {in_cyc};\n    wire innew_{k} = {in_new};\n\
              \x20   wire nclk_{k} = nclk[{k}];
@@ -710,7 +718,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
              \x20   merkur_node_env env_{k}(.clk(clk), .i_index(16'd{k}),\n\
              \x20       .i_cfg_we(i_cfg_we), .i_cfg_sel(i_cfg_sel), .i_cfg_field(i_cfg_field), .i_cfg_val(i_cfg_val),\n\
              \x20       .i_incyc(incyc_{k}), .i_innew(innew_{k}), .i_pi({pi}), .i_si({si}),\n\
-             \x20       .i_pio(old_{pi_f}), .i_sio(old_{sif}), .i_pif(fr_{pi_f}), .i_sif(fr_{sif}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_period(period),\n\
+             \x20       .i_pio(old_{pi_f}), .i_sio(old_{sif}), .i_pif(fr_{pi_f}), .i_sif(fr_{sif}), .i_sel_si(capsi_{k}), .i_slots_m1(slots_m1), .i_cs_timeout(cs_timeout), .i_period(period),\n\
              \x20       .i_irq({{irqfsc_{k}, irqrc_{k}, irqfs_{k}, irq2_{k}, irq1_{k}}}),\n\
              \x20       .nclk(nclk_{k}), .o_enl(enl[{k}]), .o_hs(hs_{k}), .o_hfrac(hfrac_{k}), .o_first(first_{k}), .o_dead(dead_{k}), .o_por(por_{k}), .o_pi(pi_r_{k}), .o_si(si_r_{k}), .o_addr(addr_r_{k}),\n\
              \x20       .o_slots_m1(slots_m1_r_{k}), .o_cs_timeout(cs_timeout_r_{k}), .o_period(period_r_{k}), .o_ureq(ureq_r_{k}), .o_sens(sens_r_{k}),\n\
@@ -746,7 +754,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
                 &format!(
                     "    wire [15:0] act_{k};\n    /* verilator lint_off UNUSEDSIGNAL */\n    // A slave's master-side outputs are not used in a ring.\n\
                      \x20   wire [11:0] u_fslot_{k}, u_slot_{k};\n    wire [15:0] u_data_{k};\n    wire [1:0] u_kind_{k};\n    wire u_regen_{k}, u_wvalid_{k}, u_alive_{k}, u_alarm_{k}, u_ok_{k}, u_hdr_bad_{k}, u_rtx_{k};\n    wire [3:0] u_reason_{k};\n    /* verilator lint_on UNUSEDSIGNAL */\n\
-                     \x20   merkur_slave n{k}({common}, .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
+                     \x20   merkur_slave n{k}({common}, .i_cap_sel(1'b1), .o_cap_si(capsi_{k}), .i_actuator(1'b{act}), .i_sensor_data({sens}),\n\
                      \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
                      \x20       .o_fwd_slot(u_fslot_{k}), .o_regen(u_regen_{k}), .o_wvalid(u_wvalid_{k}), .o_kind(u_kind_{k}), .o_slot(u_slot_{k}), .o_data(u_data_{k}),\n\
                      \x20       .o_alive(u_alive_{k}), .o_alarm(u_alarm_{k}), .o_reason(u_reason_{k}), .o_ok(u_ok_{k}), .o_hdr_bad(u_hdr_bad_{k}), .o_rtx(u_rtx_{k}),\n\
@@ -759,7 +767,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
             let (defs, extra) = if kind == Kind::SpecialMaster {
                 (
                     format!(
-                        "    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};\n\
+                        "    wire [15:0] serr_{k};\n    wire [11:0] hop_{k};\n    wire [15:0] cycles_{k};\n    assign capsi_{k} = 1'b0;\n\
                          \x20   // Backup priority and election time (static: written before the start).\n\
                          \x20   reg [2:0] prio_{k} = 3'd0;\n    reg [19:0] elect_{k} = 20'd0;\n\
                          \x20   // Retransmission timing (static: written before the start).\n\
@@ -792,7 +800,7 @@ fn node(k: usize, kind: Kind, n: usize, restarts: bool, flying: bool) -> String 
             } else {
                 (
                     format!("    wire [15:0] serr_{k} = 16'd0;\n    wire [11:0] hop_{k} = 12'd0;\n    wire [15:0] cycles_{k} = 16'd0;\n    wire [15:0] frames_{k} = 16'd0;"),
-                    String::new(),
+                    format!(".i_cap_sel(1'b1), .o_cap_si(capsi_{k}),"),
                 )
             };
             w(

@@ -24,7 +24,8 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate (also the Wishbone clock) |
-//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
+//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR); with `i_cap_sel` INPUT's and BSR's |
+//! | `i_cap_sel`, `o_cap_si` | in, out | 1, 1 | static, clock | the capture register in front makes the switchbox's input choice, as [`Slave`]'s |
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 //! | `i_address` | in | 12 | static | home slot (one of the LOCAL slots) |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
@@ -62,6 +63,10 @@ pub struct Master {
     pub i_pi: Signal<In, Bits<4>>,
     /// Secondary input.
     pub i_si: Signal<In, Bits<4>>,
+    /// The capture in front made the switchbox's input choice.
+    pub i_cap_sel: Signal<In, Bit>,
+    /// The capture's choice for the next clock: SI as INPUT.
+    pub o_cap_si: Signal<Out, Bit>,
     /// Primary output.
     pub o_po: Signal<Out, Bits<2>>,
     /// Secondary output.
@@ -150,6 +155,8 @@ impl Logic for Master {
 
         self.node.i_pi.next = self.i_pi.val();
         self.node.i_si.next = self.i_si.val();
+        self.node.i_cap_sel.next = self.i_cap_sel.val();
+        self.o_cap_si.next = self.node.o_cap_si.val();
         self.o_po.next = self.node.o_po.val();
         self.o_so.next = self.node.o_so.val();
         self.node.i_address.next = self.i_address.val();

@@ -27,7 +27,9 @@
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
-//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR) |
+//! | `i_pi`, `i_si` | in | 4 | clock | physical inputs, 4 samples per clock (quadrature DDR); with `i_cap_sel` INPUT's and BSR's |
+//! | `i_cap_sel` | in | 1 | static | 0: the switchbox chooses INPUT and BSR from `i_pi` and `i_si`; 1: the capture register in front already did, by `o_cap_si` (below) |
+//! | `o_cap_si` | out | 1 | clock | for a capture register that makes the switchbox's input choice: take SI as INPUT and PI as BSR in this clock (the mode in the next clock is WU; a register) |
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs, DDR pairs |
 //! | `i_address` | in | 12 | static (DIP switches) | home slot |
 //! | `i_slots_m1` | in | 12 | static | slots per frame − 1 |
@@ -77,6 +79,10 @@ pub struct Slave {
     pub i_pi: Signal<In, Bits<4>>,
     /// Secondary input.
     pub i_si: Signal<In, Bits<4>>,
+    /// The capture in front made the switchbox's input choice.
+    pub i_cap_sel: Signal<In, Bit>,
+    /// The capture's choice for the next clock: SI as INPUT.
+    pub o_cap_si: Signal<Out, Bit>,
     /// Primary output.
     pub o_po: Signal<Out, Bits<2>>,
     /// Secondary output.
@@ -214,6 +220,8 @@ impl Slave {
             clock: Default::default(),
             i_pi: Default::default(),
             i_si: Default::default(),
+            i_cap_sel: Default::default(),
+            o_cap_si: Default::default(),
             o_po: Default::default(),
             o_so: Default::default(),
             i_address: Default::default(),
@@ -311,6 +319,15 @@ impl Logic for Slave {
         self.sbox.i_si.next = self.i_si.val();
         self.rx_in.i_samples.next = self.sbox.o_input.val();
         self.rx_bsr.i_samples.next = self.sbox.o_bsr.val();
+        // Or the capture register in front made that choice, with the
+        // mode this clock's switchbox uses, a clock ahead (issue 21: the
+        // clock recoveries then read their samples from flip-flops, not
+        // through a multiplexer; the same samples in the same clocks).
+        if self.i_cap_sel.val() {
+            self.rx_in.i_samples.next = self.i_pi.val();
+            self.rx_bsr.i_samples.next = self.i_si.val();
+        }
+        self.o_cap_si.next = self.swc.o_wu_next.val();
         self.rx_in.i_slots_m1.next = self.i_slots_m1.val();
         self.rx_in.i_address.next = self.i_address.val();
         self.rx_bsr.i_slots_m1.next = self.i_slots_m1.val();

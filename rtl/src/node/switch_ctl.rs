@@ -452,6 +452,10 @@ pub struct SwitchPipe {
     pub i_fwd: Signal<In, Bit>,
     /// Switchbox mode.
     pub o_mode: Signal<Out, Bits<2>>,
+    /// `o_mode` will be WU in the next clock (a register: the decision
+    /// on its way out), for a capture register that makes the switchbox's
+    /// input choice ([`crate::node::slave`]'s `i_cap_sel`).
+    pub o_wu_next: Signal<Out, Bit>,
     /// The mode changed at this clock's edge.
     pub o_change: Signal<Out, Bit>,
     /// … and INPUT and BSR moved to other lines.
@@ -510,6 +514,7 @@ impl Default for SwitchPipe {
             i_cs_timeout: Default::default(),
             i_fwd: Default::default(),
             o_mode: Default::default(),
+            o_wu_next: Default::default(),
             o_change: Default::default(),
             o_relink: Default::default(),
             o_tst_start: Default::default(),
@@ -616,6 +621,7 @@ impl Logic for SwitchPipe {
         self.fs_set.d.next = self.ctl.o_fs_set.val();
         self.grace_over.d.next = self.ctl.o_grace_over.val();
         self.o_mode.next = self.mode.q.val();
+        self.o_wu_next.next = self.ctl.o_mode.val() == 1;
         self.o_change.next = self.change.q.val();
         self.o_relink.next = self.relink.q.val();
         self.o_tst_start.next = self.tst_start.q.val();

@@ -20,7 +20,10 @@
 //! | `o_input`, `o_bsr` | out | 4 | clock | logical inputs of the node |
 //! | `o_po`, `o_so` | out | 2 | clock | physical outputs |
 //!
-//! Latency: combinational (0 clocks); the node registers its I/O.
+//! Latency: combinational (0 clocks); the node registers its I/O. A slave
+//! or a master can leave the input half to the capture register in front
+//! of it ([`crate::node::slave`]'s `i_cap_sel`, as every synthesis top
+//! does), which then makes the same choice a clock ahead.
 //!
 //! ```text
 //! i_mode   == N ==X== WU ==========

@@ -10,7 +10,11 @@
 //! board needs 16 pins for them, not 48, and synthesis keeps them). The
 //! device-independent capture and output stages are the modules
 //! `merkur_ddr_in` and `merkur_ddr_out` below; `merkur synth` builds this
-//! top for every target (docs/synthesis.md).
+//! top for every target (docs/synthesis.md). For a slave or a master the
+//! capture register makes the switchbox's input choice (the node's
+//! `o_cap_si`, `i_cap_sel` tied 1): `i_pi` then carries INPUT's samples
+//! and `i_si` BSR's (issue 21: the clock recoveries read flip-flops, not
+//! a multiplexer; the same samples in the same clocks).
 //!
 //! | port | dir | width | kinds | meaning |
 //! |---|---|---|---|---|
@@ -37,7 +41,7 @@
 //!
 //! ```text
 //!              clk ↑   clk90 ↑  clk ↓   clk90 ↓   clk ↑
-//! pi sampled    s0       s1       s2       s3     ─▶ i_pi = {s3,s2,s1,s0} (s0 first)
+//! pi sampled    s0       s1       s2       s3     ─▶ i_pi = {s3,s2,s1,s0} (s0 first; si's when o_cap_si)
 //! o_po pair    {b1,b0} registered at clk ↑ ─▶ po = b0 (clk high), b1 (clk low)
 //! ```
 
@@ -132,10 +136,21 @@ impl RtxStatic {
 /// The device-independent capture and output stages (see the module doc).
 pub const DDR_IO: &str = r#"// merkur_ddr_in: quadrature DDR capture of one line, four samples per clk,
 // q[0] first in time (taken at clk rising), q[3] last (clk90 falling).
-module merkur_ddr_in(clk, clk90, d, q);
+// s: this line's samples before the register, for the other line's
+// capture. With sel high the register takes the other line's (alt)
+// instead: the switchbox's input choice made in the capture register, by
+// the node's o_cap_si (a slave or a master; tie sel low for the special
+// master). In an iCE40 the choice is the LUT every flip-flop has in
+// front of it and in a CoolRunner-II the register's own product terms, so
+// the quarter clock from s3 to q carries no more logic levels there; in
+// an ECP5 it is one LUT (that transfer has room to spare there).
+module merkur_ddr_in(clk, clk90, d, alt, sel, s, q);
     input wire clk;
     input wire clk90;
     input wire d;
+    input wire [3:0] alt;
+    input wire sel;
+    output wire [3:0] s;
     output reg [3:0] q = 4'd0;
     reg s0 = 1'b0;
     reg s1 = 1'b0;
@@ -145,7 +160,8 @@ module merkur_ddr_in(clk, clk90, d, q);
     always @(posedge clk90) s1 <= d;
     always @(negedge clk) s2 <= d;
     always @(negedge clk90) s3 <= d;
-    always @(posedge clk) q <= {s3, s2, s1, s0};
+    assign s = {s3, s2, s1, s0};
+    always @(posedge clk) q <= sel ? alt : s;
 endmodule
 
 // merkur_ddr_out: DDR output of a pair registered on clk: d[0] while clk is
@@ -283,10 +299,13 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
         );
     }
     v.push_str(
-        "    // Fibre capture and output.\n    wire [3:0] pi_s;\n    wire [3:0] si_s;\n\
+        "    // Fibre capture and output. A slave's or a master's capture makes its\n\
+         \x20   // switchbox's input choice (the node's o_cap_si): pi_s then carries\n\
+         \x20   // INPUT's samples, si_s BSR's.\n\
+         \x20   wire [3:0] pi_s;\n    wire [3:0] si_s;\n    wire [3:0] pi_raw;\n    wire [3:0] si_raw;\n    wire sel_si;\n\
          \x20   wire [1:0] po_pair;\n    wire [1:0] so_pair;\n\
-         \x20   merkur_ddr_in cap_pi(.clk(clk), .clk90(clk90), .d(pi), .q(pi_s));\n\
-         \x20   merkur_ddr_in cap_si(.clk(clk), .clk90(clk90), .d(si), .q(si_s));\n\
+         \x20   merkur_ddr_in cap_pi(.clk(clk), .clk90(clk90), .d(pi), .alt(si_raw), .sel(sel_si), .s(pi_raw), .q(pi_s));\n\
+         \x20   merkur_ddr_in cap_si(.clk(clk), .clk90(clk90), .d(si), .alt(pi_raw), .sel(sel_si), .s(si_raw), .q(si_s));\n\
          \x20   merkur_ddr_out out_po(.clk(clk), .d(po_pair), .q(po));\n\
          \x20   merkur_ddr_out out_so(.clk(clk), .d(so_pair), .q(so));\n\
          \x20   // User requests: two-flip-flop synchronisers.\n\
@@ -368,7 +387,7 @@ fn slave_instance(
          \x20   wire [11:0] nc_slot;\n    wire [15:0] nc_data;\n    wire nc_alive;\n    wire nc_alarm;\n    wire [3:0] nc_reason;\n    wire nc_ok;\n    wire nc_hdr_bad;\n    wire nc_rtx;\n\
          \x20   /* verilator lint_on UNUSEDSIGNAL */\n\
          \x20   {}  node(\n        {common},\n\
-         \x20       .i_actuator(1'b{actb}), .i_sensor_data({sensor}),\n\
+         \x20       .i_cap_sel(1'b1), .o_cap_si(sel_si), .i_actuator(1'b{actb}), .i_sensor_data({sensor}),\n\
          \x20       .i_master(1'b0), .i_slot_cfg(2'd0), .i_slot_data(16'd0), .i_slot_alive(1'b0), .i_fs_set(1'b0),\n\
          \x20       .o_fwd_slot(nc_fwd_slot), .o_regen(nc_regen), .o_wvalid(nc_wvalid), .o_kind(nc_kind),\n\
          \x20       .o_slot(nc_slot), .o_data(nc_data), .o_alive(nc_alive), .o_alarm(nc_alarm), .o_reason(nc_reason), .o_ok(nc_ok), .o_hdr_bad(nc_hdr_bad), .o_rtx(nc_rtx),\n\
@@ -387,6 +406,9 @@ fn master_instance(
     (lint_off, lint_on): (&str, &str),
 ) -> &'static str {
     let sm = st.kind == Kind::SpecialMaster;
+    if sm {
+        v.push_str("    // The special master's switchbox makes its own input choice.\n    assign sel_si = 1'b0;\n");
+    }
     v.push_str(&format!("{lint_off}    wire [15:0] aerr;\n"));
     let extra = if sm {
         v.push_str("    wire [15:0] serr;\n    wire [11:0] hop;\n    wire [15:0] cycles;\n");
@@ -396,7 +418,7 @@ fn master_instance(
             st.period, st.rtx.at, st.rtx.at_wrapped, st.rtx.k, st.rtx.k_wrapped
         )
     } else {
-        String::new()
+        ",\n        .i_cap_sel(1'b1), .o_cap_si(sel_si)".to_string()
     };
     v.push_str(lint_on);
     v.push_str(&format!(
