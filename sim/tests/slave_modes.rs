@@ -161,7 +161,7 @@ fn run(
     // o_cap_si after each clock: the capture register takes it at the
     // next edge, and the node reads the samples in the clock after.
     let mut choice: Vec<u64> = vec![];
-    let watch = ["o_po", "o_so", "o_mode", "o_failsafe", "o_perr", "o_ferr"].map(|x| p(&s, x));
+    let watch = ["o_po", "o_so", "o_mode", "o_failsafe", "o_perr", "o_ferr"].map(|x| (x, p(&s, x)));
     for m in [&mut mpo, &mut mso] {
         let i = p(m, "i_slots_m1");
         m.set(i, SLOTS as u64 - 1);
@@ -194,12 +194,11 @@ fn run(
         s2.set(isi, if si_in { pi[t] } else { si[t] });
         s2.tick(clk);
         choice.push(s2.get(cap_si));
-        for (i, w) in watch.iter().enumerate() {
+        for (name, w) in watch {
             assert_eq!(
-                s.get(*w),
-                s2.get(*w),
-                "{ctx}: clock {t}: the slave behind the selecting capture differs in {}",
-                ["o_po", "o_so", "o_mode", "o_failsafe", "o_perr", "o_ferr"][i]
+                s.get(w),
+                s2.get(w),
+                "{ctx}: clock {t}: the slave behind the selecting capture differs in {name}"
             );
         }
         let mode = s.get(omode);
