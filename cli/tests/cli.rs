@@ -667,10 +667,9 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
     if target == "ice40-hx1k" {
         // Every strategy was tried, and each one's outcome is named: the
         // smallest need first, then the four strategies of
-        // docs/synthesis.md's table one by one, each with its need or,
-        // where ABC9's sequential mode crashes in YoWASP's Yosys (the
-        // `-dff` ones, docs/synthesis.md: a YoWASP without the venv's
-        // larger WebAssembly stack), the crash.
+        // docs/synthesis.md's table one by one, each with its need (the
+        // `-dff` ones too: the venv's larger WebAssembly stack keeps ABC9's
+        // sequential mode from crashing, docs/synthesis.md).
         assert!(
             err.contains("it needs ") && err.contains("ICESTORM_LC of 1280 ("),
             "{err}"
@@ -683,14 +682,9 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
             "`synth_ice40 -dff -nocarry -dffe_min_ce_use 16`",
         ] {
             let outcome = tried.split(&format!("{strategy}: ")).nth(1).unwrap_or("");
-            let crash_allowed = strategy.contains("-dff ");
-            assert!(
-                outcome.starts_with("it needs ")
-                    || (crash_allowed && outcome.starts_with("Yosys failed (wasm trap")),
-                "{strategy}: {err}"
-            );
+            assert!(outcome.starts_with("it needs "), "{strategy}: {err}");
         }
-        assert!(tried.matches("it needs ").count() >= 2, "{err}");
+        assert_eq!(tried.matches("it needs ").count(), 4, "{err}");
     }
     let _ = std::fs::remove_dir_all(&dir);
 }

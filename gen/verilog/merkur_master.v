@@ -3500,6 +3500,18 @@ endmodule // merkur_master__node__fwd
 // underflow, the gap shrank by that much per hop until a node no longer
 // saw it, issue 19). A live stream within ±2000 ppm never slips.
 //
+// **The buffer's layout** ([`Layout`], the block's one parameter; the
+// same behaviour clock for clock either way, proof `retime_layouts`):
+// with [`Layout::SendShifts`] the oldest bit sits in bit 0, a send
+// shifts it out and a write goes in behind the unsent bits, decoded by
+// the count: the bit to send is one flip-flop, short paths for LUT
+// devices (the ring's nodes and every FPGA top). With
+// [`Layout::WriteShifts`] a write shifts the new bit in at bit 7 and a
+// send reads the count's bit from the top (bit 8 − count): no write
+// decoder in every buffer bit, for product-term devices (`merkur synth
+// --target xc2c*`; issue 21). In the Verilog the layout is the
+// `localparam write_shifts` (1: `WriteShifts`).
+//
 // | port | dir | width | clock domain | meaning |
 // |---|---|---|---|---|
 // | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -3532,6 +3544,7 @@ module merkur_master__node__fwd__out(clock,i_valid,i_code,i_phase,o_line,o_slip)
 
     // Constant declarations
     localparam  quiet_bits = 5'b1110;
+    localparam  write_shifts = 1'b0;
     localparam  votes = 3'b100;
     localparam  gap_min = 4'h8;
     localparam  one = 8'h1;
@@ -3568,6 +3581,8 @@ module merkur_master__node__fwd__out(clock,i_valid,i_code,i_phase,o_line,o_slip)
     reg  take;
     reg  under;
     reg  oldest;
+    reg  [2:0] rpos;
+    reg  [7:0] rsel;
     reg  [7:0] sr_shift;
     reg  [2:0] wpos;
     reg  [7:0] wmask;
@@ -3607,6 +3622,11 @@ module merkur_master__node__fwd__out(clock,i_valid,i_code,i_phase,o_line,o_slip)
         send1 = rem_q == 3'h1;
         take = (send0 | send1) & run_q & (cnt_q != 4'h0);
         oldest = sr_q[0];
+        rpos = (~cnt_q[(0)+:(3)]) + 3'h1;
+        rsel = sr_q >> rpos;
+        if (write_shifts) begin
+            oldest = (rsel & 8'h1) != 8'h0;
+        end
         under = (send0 | send1) & run_q & (cnt_q == 4'h0);
         new_lvl = lvl_q;
         if ((send0 | send1) & ~dark_q & ~under) begin
@@ -3705,6 +3725,15 @@ module merkur_master__node__fwd__out(clock,i_valid,i_code,i_phase,o_line,o_slip)
             end
             if (~take) begin
                 cnt_next = cnt_q + 4'h1;
+            end
+        end
+        if (write_shifts) begin
+            sr_d = sr_q;
+            if (i_valid) begin
+                sr_d = sr_q >> 1;
+                if (i_code) begin
+                    sr_d = (sr_q >> 1) | 8'h80;
+                end
             end
         end
         t_neg = ((rem_next == 3'h0) & (i_phase != 2'h0)) | ((rem_next == 3'h1) & (i_phase == 2'h3));
@@ -3811,6 +3840,7 @@ module merkur_master__node__rep(clock,i_valid,i_code,i_phase,o_line,o_slip);
 
     // Constant declarations
     localparam  quiet_bits = 5'b1110;
+    localparam  write_shifts = 1'b0;
     localparam  votes = 3'b100;
     localparam  gap_min = 4'h8;
     localparam  one = 8'h1;
@@ -3847,6 +3877,8 @@ module merkur_master__node__rep(clock,i_valid,i_code,i_phase,o_line,o_slip);
     reg  take;
     reg  under;
     reg  oldest;
+    reg  [2:0] rpos;
+    reg  [7:0] rsel;
     reg  [7:0] sr_shift;
     reg  [2:0] wpos;
     reg  [7:0] wmask;
@@ -3886,6 +3918,11 @@ module merkur_master__node__rep(clock,i_valid,i_code,i_phase,o_line,o_slip);
         send1 = rem_q == 3'h1;
         take = (send0 | send1) & run_q & (cnt_q != 4'h0);
         oldest = sr_q[0];
+        rpos = (~cnt_q[(0)+:(3)]) + 3'h1;
+        rsel = sr_q >> rpos;
+        if (write_shifts) begin
+            oldest = (rsel & 8'h1) != 8'h0;
+        end
         under = (send0 | send1) & run_q & (cnt_q == 4'h0);
         new_lvl = lvl_q;
         if ((send0 | send1) & ~dark_q & ~under) begin
@@ -3984,6 +4021,15 @@ module merkur_master__node__rep(clock,i_valid,i_code,i_phase,o_line,o_slip);
             end
             if (~take) begin
                 cnt_next = cnt_q + 4'h1;
+            end
+        end
+        if (write_shifts) begin
+            sr_d = sr_q;
+            if (i_valid) begin
+                sr_d = sr_q >> 1;
+                if (i_code) begin
+                    sr_d = (sr_q >> 1) | 8'h80;
+                end
             end
         end
         t_neg = ((rem_next == 3'h0) & (i_phase != 2'h0)) | ((rem_next == 3'h1) & (i_phase == 2'h3));

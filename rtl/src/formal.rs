@@ -101,6 +101,7 @@ pub fn proofs() -> Vec<Proof> {
         switch_ctl(),
         sw_dark(),
         retime(),
+        retime_layouts(),
         rmm_fcm(),
         mdb(),
         special_master(),
@@ -176,6 +177,36 @@ fn retime() -> Proof {
         expose: ["send0", "send1", "len", "run_q"].map(|w| ("retime", w)).to_vec(),
         props: include_str!("../formal/retime.sv"),
         tasks: vec![task(Mode::Bmc, 300), task(Mode::Cover, 100)],
+    }
+}
+
+fn retime_layouts() -> Proof {
+    use crate::line::retime::{Layout, Retime};
+    let regs = [
+        "sr_q", "cnt_q", "rem_q", "lvl_q", "run_q", "dark_q", "since_q", "hi_q", "lo_q", "gap_q",
+        "pair_q", "slip_q",
+    ];
+    Proof {
+        name: "retime_layouts",
+        what:
+            "elastic buffer: the layout a write shifts (CoolRunner-II) sends what the one a send \
+               shifts sends, in every clock, for ever",
+        duts: vec![
+            dut(
+                "retime_send_shifts",
+                block_verilog(Retime::new(Layout::SendShifts)),
+            ),
+            dut(
+                "retime_write_shifts",
+                block_verilog(Retime::new(Layout::WriteShifts)),
+            ),
+        ],
+        expose: ["retime_send_shifts", "retime_write_shifts"]
+            .into_iter()
+            .flat_map(|m| regs.map(|w| (m, w)))
+            .collect(),
+        props: include_str!("../formal/retime_layouts.sv"),
+        tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 60)],
     }
 }
 

@@ -101,6 +101,7 @@ fn every_top_level_port_is_constrained() {
         slots: 9,
         period: 330,
         rtx: Default::default(),
+        layout: Default::default(),
         diag: true,
         sensor_sync: true,
         format: WordFormat::Basic,

@@ -66,6 +66,7 @@ fn st(kind: Kind) -> NodeStatic {
         slots: 9,
         period: 330,
         rtx: Default::default(),
+        layout: Default::default(),
         diag: true,
         sensor_sync: true,
         format: WordFormat::Basic,

@@ -19,6 +19,7 @@ use merkur_model::config::Config;
 use merkur_model::scenario::Kind;
 use merkur_rtl::emit::verilog;
 use merkur_rtl::harness::ring_top::node_verilog;
+use merkur_rtl::line::retime::Layout;
 use merkur_rtl::line::word_rx::WordFormat;
 use merkur_rtl::top::boards;
 use merkur_rtl::top::synth_top::{self, node_top, NodeStatic};
@@ -955,6 +956,13 @@ pub fn run(scenario: &Path, o: &Opts) -> Result<bool, String> {
             slots: cfg.slots,
             period: cfg.period,
             rtx: synth_top::RtxStatic::of(&cfg),
+            // A CoolRunner-II's macrocells are sums of product terms: its
+            // retime buffers shift at a write (issue 21, docs/synthesis.md).
+            layout: if cpld(o.target).is_some() {
+                Layout::WriteShifts
+            } else {
+                Layout::SendShifts
+            },
             diag: o.diag,
             sensor_sync: o.sensor_sync,
             format: if cfg.ext {

@@ -199,6 +199,10 @@ pub fn all_blocks() -> Vec<(&'static str, String)> {
             block_verilog(port_rx::PortRx::new(WordFormat::Basic)),
         ),
         ("retime", block_verilog(retime::Retime::default())),
+        (
+            "retime_write_shifts",
+            block_verilog(retime::Retime::new(retime::Layout::WriteShifts)),
+        ),
         ("fwd", block_verilog(fwd::Fwd::new(WordFormat::Basic))),
         (
             "fwd_ext",

@@ -97,6 +97,7 @@
 //! of the frame whose H1 its PI fibre showed last (its slot comes after).
 
 use crate::emit::verilog::{block_verilog, mem_depth, rename_top, size_memories};
+use crate::line::retime::Layout;
 use crate::line::word_rx::WordFormat;
 use merkur_model::scenario::Kind;
 
@@ -244,18 +245,29 @@ pub fn module_name(kind: Kind) -> &'static str {
 /// [`mem_depth`]`(slots)` deep ([`size_memories`]). Simulation and
 /// synthesis both use this text.
 pub fn node_verilog(kind: Kind, slots: usize, format: WordFormat) -> String {
-    node_verilog_with(kind, slots, format, true)
+    node_verilog_with(kind, slots, format, true, Layout::SendShifts)
 }
 
 /// [`node_verilog`], with the node built without retransmission on demand
 /// when `rtx` is false ([`crate::node::slave::Slave::with_rtx`] and the
-/// masters' `with_rtx`: for a ring without critical slots).
-pub fn node_verilog_with(kind: Kind, slots: usize, format: WordFormat, rtx: bool) -> String {
+/// masters' `with_rtx`: for a ring without critical slots), and a slave's
+/// or a master's retime buffers in `layout` (the same behaviour,
+/// [`crate::node::slave::Slave::with_layout`]; the special master keeps
+/// [`Layout::SendShifts`]).
+pub fn node_verilog_with(
+    kind: Kind,
+    slots: usize,
+    format: WordFormat,
+    rtx: bool,
+    layout: Layout,
+) -> String {
     let v = match kind {
         Kind::Sensor | Kind::Actuator => {
-            block_verilog(crate::node::slave::Slave::with_rtx(format, rtx))
+            block_verilog(crate::node::slave::Slave::with_rtx(format, rtx).with_layout(layout))
         }
-        Kind::Master => block_verilog(crate::node::master::Master::with_rtx(format, rtx)),
+        Kind::Master => {
+            block_verilog(crate::node::master::Master::with_rtx(format, rtx).with_layout(layout))
+        }
         Kind::SpecialMaster => block_verilog(crate::node::special_master::SpecialMaster::with_rtx(
             format, rtx,
         )),

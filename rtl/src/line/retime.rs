@@ -44,6 +44,18 @@
 //! underflow, the gap shrank by that much per hop until a node no longer
 //! saw it, issue 19). A live stream within ±2000 ppm never slips.
 //!
+//! **The buffer's layout** ([`Layout`], the block's one parameter; the
+//! same behaviour clock for clock either way, proof `retime_layouts`):
+//! with [`Layout::SendShifts`] the oldest bit sits in bit 0, a send
+//! shifts it out and a write goes in behind the unsent bits, decoded by
+//! the count: the bit to send is one flip-flop, short paths for LUT
+//! devices (the ring's nodes and every FPGA top). With
+//! [`Layout::WriteShifts`] a write shifts the new bit in at bit 7 and a
+//! send reads the count's bit from the top (bit 8 − count): no write
+//! decoder in every buffer bit, for product-term devices (`merkur synth
+//! --target xc2c*`; issue 21). In the Verilog the layout is the
+//! `localparam write_shifts` (1: `WriteShifts`).
+//!
 //! | port | dir | width | clock domain | meaning |
 //! |---|---|---|---|---|
 //! | `clock` | in | 1 | — | core clock, 2× line rate |
@@ -92,6 +104,20 @@ const _: () = assert!(TARGET + BAND == 24 && TARGET - BAND == 16);
 // The overflow decision (`over`) is written out for a buffer of 8 bits.
 const _: () = assert!(DEPTH == 8);
 
+/// Where the buffer keeps its bits (see the module doc): the same
+/// behaviour, a different cost per device family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Layout {
+    /// The oldest bit in bit 0: a send shifts, a write is decoded by the
+    /// count (LUT devices: the bit to send is a flip-flop).
+    #[default]
+    SendShifts,
+    /// The newest bit in bit 7: a write shifts, a send reads bit 8 − count
+    /// (product-term devices: each buffer bit takes its neighbour or
+    /// holds).
+    WriteShifts,
+}
+
 /// Elastic output buffer with its own bit timing.
 #[derive(LogicBlock)]
 pub struct Retime {
@@ -108,6 +134,8 @@ pub struct Retime {
     /// The buffer under- or overflowed.
     pub o_slip: Signal<Out, Bit>,
     quiet_bits: Constant<Bits<5>>,
+    /// [`Layout::WriteShifts`].
+    write_shifts: Constant<Bit>,
     votes: Constant<Bits<3>>,
     gap_min: Constant<Bits<4>>,
     sr: DFF<Bits<8>>,
@@ -127,6 +155,10 @@ pub struct Retime {
     take: Signal<Local, Bit>,
     under: Signal<Local, Bit>,
     oldest: Signal<Local, Bit>,
+    // WriteShifts: the index of the bit to send (8 − count) and the
+    // buffer shifted down by it.
+    rpos: Signal<Local, Bits<3>>,
+    rsel: Signal<Local, Bits<8>>,
     sr_shift: Signal<Local, Bits<8>>,
     wpos: Signal<Local, Bits<3>>,
     wmask: Signal<Local, Bits<8>>,
@@ -152,6 +184,13 @@ pub struct Retime {
 
 impl Default for Retime {
     fn default() -> Self {
+        Self::new(Layout::default())
+    }
+}
+
+impl Retime {
+    /// A buffer with its bits in `layout`.
+    pub fn new(layout: Layout) -> Self {
         Self {
             clock: Default::default(),
             i_valid: Default::default(),
@@ -160,6 +199,7 @@ impl Default for Retime {
             o_line: Default::default(),
             o_slip: Default::default(),
             quiet_bits: Constant::new((QUIET_BITS - 2).to_bits()),
+            write_shifts: Constant::new(layout == Layout::WriteShifts),
             votes: Constant::new(VOTES.to_bits()),
             gap_min: Constant::new(GAP.to_bits()),
             sr: Default::default(),
@@ -179,6 +219,8 @@ impl Default for Retime {
             take: Default::default(),
             under: Default::default(),
             oldest: Default::default(),
+            rpos: Default::default(),
+            rsel: Default::default(),
             sr_shift: Default::default(),
             wpos: Default::default(),
             wmask: Default::default(),
@@ -216,10 +258,17 @@ impl Logic for Retime {
         self.send1.next = self.rem.q.val() == 1;
         self.take.next =
             (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() != 0);
-        // The buffer is a FIFO with the oldest bit in bit 0 (a send shifts
-        // it out, a write goes in behind the unsent bits): the bit to send
-        // is one flip-flop, not a mux by the count (issue 20).
+        // The buffer is a FIFO. SendShifts: the oldest bit in bit 0 (a
+        // send shifts it out, a write goes in behind the unsent bits), so
+        // the bit to send is one flip-flop, not a mux by the count (issue
+        // 20). WriteShifts: the newest bit in bit 7, the oldest unsent one
+        // cnt − 1 below it (issue 21).
         self.oldest.next = self.sr.q.val().get_bit(0);
+        self.rpos.next = (!self.cnt.q.val().get_bits::<3>(0)) + 1;
+        self.rsel.next = self.sr.q.val() >> self.rpos.val();
+        if self.write_shifts.val() {
+            self.oldest.next = (self.rsel.val() & 1) != 0;
+        }
         // Underflow: a bit boundary while running with nothing buffered.
         self.under.next =
             (self.send0.val() | self.send1.val()) & self.run.q.val() & (self.cnt.q.val() == 0);
@@ -337,6 +386,17 @@ impl Logic for Retime {
             }
             if !self.take.val() {
                 self.cnt_next.next = self.cnt.q.val() + 1;
+            }
+        }
+        if self.write_shifts.val() {
+            // Every write shifts the buffer down and puts its bit on top;
+            // a send leaves it.
+            self.sr.d.next = self.sr.q.val();
+            if self.i_valid.val() {
+                self.sr.d.next = self.sr.q.val() >> 1;
+                if self.i_code.val() {
+                    self.sr.d.next = (self.sr.q.val() >> 1) | 128;
+                }
             }
         }
         // The wait of the bit written now, in receive samples, against the

@@ -111,7 +111,7 @@
 //!
 //! (Extended variant: six groups, the last one N5'.)
 
-use crate::line::retime::Retime;
+use crate::line::retime::{Layout, Retime};
 use crate::line::word_rx::WordFormat;
 use rust_hdl::prelude::*;
 
@@ -483,6 +483,14 @@ impl Fwd {
             out_bit: Default::default(),
             arrived_bad: Default::default(),
         }
+    }
+
+    /// The same forwarder with its output buffer in `layout` (see
+    /// [`Layout`]: the same behaviour; [`Layout::WriteShifts`] for
+    /// product-term devices).
+    pub fn with_layout(mut self, layout: Layout) -> Self {
+        self.out = Retime::new(layout);
+        self
     }
 }
 

@@ -49,6 +49,7 @@
 //!                        └──────▶ mdb ◀──▶ Wishbone host
 //! ```
 
+use crate::line::retime::Layout;
 use crate::line::word_rx::WordFormat;
 use crate::node::mdb::Mdb;
 use crate::node::slave::Slave;
@@ -142,6 +143,13 @@ impl Master {
             mdb: Mdb::new(format),
             ..Default::default()
         }
+    }
+
+    /// The same master with its retime buffers in `layout`
+    /// ([`Slave::with_layout`]).
+    pub fn with_layout(mut self, layout: Layout) -> Self {
+        self.node = self.node.with_layout(layout);
+        self
     }
 }
 

@@ -60,7 +60,7 @@
 //! SI ─┘            └─ port_rx (BSR) ─ repeater / tst_tx ─ BSS ─┘     └─ sw_dark ─ SO
 //! ```
 
-use crate::line::retime::Retime;
+use crate::line::retime::{Layout, Retime};
 use crate::line::word_rx::WordFormat;
 use crate::node::fwd::Fwd;
 use crate::node::port_rx::PortRx;
@@ -294,6 +294,15 @@ impl Slave {
             out_pair: Default::default(),
             bss_pair: Default::default(),
         }
+    }
+
+    /// The same slave with both retime buffers (the forwarder's and the
+    /// BSR repeater's) in `layout` (see [`Layout`]: the same behaviour
+    /// clock for clock; [`Layout::WriteShifts`] for product-term devices).
+    pub fn with_layout(mut self, layout: Layout) -> Self {
+        self.fwd = self.fwd.with_layout(layout);
+        self.rep = Retime::new(layout);
+        self
     }
 }
 

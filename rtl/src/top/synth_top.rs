@@ -104,6 +104,12 @@ pub struct NodeStatic {
     /// Retransmission on demand (special master only; all 0 without
     /// critical slots).
     pub rtx: RtxStatic,
+    /// Where a slave's or a master's retime buffers keep their bits: the
+    /// same behaviour clock for clock ([`Layout`]); `merkur synth` takes
+    /// [`Layout::WriteShifts`] for a CoolRunner-II (fewer product terms)
+    /// and [`Layout::SendShifts`] for an FPGA (shorter paths). The special
+    /// master keeps [`Layout::SendShifts`].
+    pub layout: Layout,
 }
 
 /// The clock base's retransmission timing (protocol §8), static like the
@@ -184,6 +190,7 @@ endmodule
 "#;
 
 use crate::harness::ring_top::{module_name as node_module, node_verilog_with};
+use crate::line::retime::Layout;
 use crate::line::word_rx::WordFormat;
 
 /// Refuses a configuration the ports cannot carry.
@@ -232,6 +239,7 @@ pub fn node_top(st: &NodeStatic) -> Result<String, String> {
         st.slots,
         st.format,
         st.rtx.k > 0,
+        st.layout,
     ));
     v.push_str(DDR_IO);
     let act = st.kind == Kind::Actuator;
