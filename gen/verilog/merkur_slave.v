@@ -272,6 +272,8 @@ module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slo
     reg  [19:0] quiet_q;
     reg  quiet_max_d;
     reg  quiet_max_q;
+    reg  quiet_clr_d;
+    reg  quiet_clr_q;
     reg  pend_fs_d;
     reg  pend_fs_q;
     reg  pend_rc_d;
@@ -293,6 +295,7 @@ module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slo
 
     // Local signals
     reg  [2:0] cyc_gap;
+    reg  cs_due;
     reg  seq_tx;
     reg  e_rc;
     reg  e_i1;
@@ -478,6 +481,7 @@ module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slo
         armed_d = armed_q;
         quiet_d = quiet_q;
         quiet_max_d = quiet_max_q;
+        quiet_clr_d = quiet_clr_q;
         pend_fs_d = pend_fs_q;
         pend_rc_d = pend_rc_q;
         pend_i1_d = pend_i1_q;
@@ -602,7 +606,15 @@ module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slo
         if (rx_in__o_wvalid & (rx_in__o_kind == 2'h2) & rx_in__o_own & ~fwd__o_prev_alarm & ~failsafe_q & rx_in__o_ok & rx_in__o_alarm & (rx_seq != nxt_q)) begin
             fl_k_d = 2'h0;
         end
-        if (armed_q & ~quiet_max_q) begin
+        quiet_clr_d = 1'b0;
+        if (quiet_clr_q) begin
+            quiet_d = 20'h0;
+            if (armed_q) begin
+                quiet_d = 20'h1;
+            end
+            quiet_max_d = 1'b0;
+        end
+        else if (armed_q & ~quiet_max_q) begin
             quiet_d = quiet_q + 20'h1;
             quiet_max_d = quiet_q == 20'hffffe;
         end
@@ -645,8 +657,7 @@ module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slo
             perr_d = perr_q + 16'h1;
         end
         if (rx_in__o_wvalid & (rx_in__o_kind == 2'h0) & ~(rx_in__o_ok & (rx_in__o_ptype == 2'h2))) begin
-            quiet_d = 20'h0;
-            quiet_max_d = 1'b0;
+            quiet_clr_d = 1'b1;
         end
         if (ferr_owed_q != 3'h0) begin
             ferr_owed_d = ferr_owed_q - 3'h1;
@@ -654,7 +665,8 @@ module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slo
                 ferr_d = ferr_q + 16'h1;
             end
         end
-        if (armed_q & (quiet_q == i_cs_timeout)) begin
+        cs_due = armed_q & ((quiet_clr_q & (i_cs_timeout == 20'h0)) | (~quiet_clr_q & (quiet_q == i_cs_timeout)));
+        if (cs_due) begin
             failsafe_d = 1'b1;
         end
         swc__i_armed = armed_q;
@@ -743,6 +755,8 @@ module merkur_slave(clock,i_pi,i_si,i_cap_sel,o_cap_si,o_po,o_so,i_address,i_slo
     always @(posedge clock) quiet_q <= quiet_d;
     initial quiet_max_q = 1'h0;
     always @(posedge clock) quiet_max_q <= quiet_max_d;
+    initial quiet_clr_q = 1'h0;
+    always @(posedge clock) quiet_clr_q <= quiet_clr_d;
     initial pend_fs_q = 1'h0;
     always @(posedge clock) pend_fs_q <= pend_fs_d;
     initial pend_rc_q = 1'h0;
@@ -2825,7 +2839,7 @@ module merkur_slave__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_mark
     output reg  o_ack;
 
     // Constant declarations
-    localparam  hold_start = 9'b100000011;
+    localparam  hold_after = 9'b100000010;
     localparam  bad_max = 4'h8;
 
     // Registers and child block ports
@@ -2833,6 +2847,8 @@ module merkur_slave__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_mark
     reg  [3:0] bad_q;
     reg  [8:0] hold_d;
     reg  [8:0] hold_q;
+    reg  hold_ld_d;
+    reg  hold_ld_q;
     reg  tst_d;
     reg  tst_q;
     reg  ack_d;
@@ -2846,6 +2862,7 @@ module merkur_slave__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_mark
     always @(*) begin
         bad_d = bad_q;
         hold_d = hold_q;
+        hold_ld_d = hold_ld_q;
         tst_d = tst_q;
         ack_d = ack_q;
         hard_d = hard_q;
@@ -2861,16 +2878,20 @@ module merkur_slave__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_mark
         if (i_flush) begin
             bad_d = 4'h0;
         end
+        hold_ld_d = 1'b0;
         if (tst_q) begin
             hold_d = hold_q - 9'h1;
-            if (hold_q == 9'h0) begin
+            if (hold_ld_q) begin
+                hold_d = hold_after;
+            end
+            if (~hold_ld_q & (hold_q == 9'h0)) begin
                 tst_d = 1'b0;
             end
         end
         if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
             tst_d = 1'b1;
             ack_d = ~i_d12;
-            hold_d = hold_start;
+            hold_ld_d = 1'b1;
         end
         hard_d = i_los | (tst_q & i_tst_fail);
         run_d = (bad_q == bad_max) & ~i_flush;
@@ -2886,6 +2907,8 @@ module merkur_slave__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_mark
     always @(posedge clock) bad_q <= bad_d;
     initial hold_q = 9'h0;
     always @(posedge clock) hold_q <= hold_d;
+    initial hold_ld_q = 1'h0;
+    always @(posedge clock) hold_ld_q <= hold_ld_d;
     initial tst_q = 1'h0;
     always @(posedge clock) tst_q <= tst_d;
     initial ack_q = 1'h0;
@@ -3710,6 +3733,9 @@ module merkur_slave__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_s
         wvalid_r_d = 1'b0;
         hdr_bad_r_d = 1'b0;
         check_d = 1'b0;
+        if (i_gvalid) begin
+            raw_d = (raw_q >> 4) | nib_top__data;
+        end
         if (i_start) begin
             active_d = 1'b1;
             gcount_d = 3'h0;
@@ -3733,7 +3759,6 @@ module merkur_slave__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_s
             if (i_idle) begin
                 idles_d = idles_q + 2'h1;
             end
-            raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
                 if (adv_q) begin
                     slot_inc_d = 1'b1;
@@ -4191,7 +4216,7 @@ module merkur_slave__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marke
     output reg  o_ack;
 
     // Constant declarations
-    localparam  hold_start = 9'b100000011;
+    localparam  hold_after = 9'b100000010;
     localparam  bad_max = 4'h8;
 
     // Registers and child block ports
@@ -4199,6 +4224,8 @@ module merkur_slave__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marke
     reg  [3:0] bad_q;
     reg  [8:0] hold_d;
     reg  [8:0] hold_q;
+    reg  hold_ld_d;
+    reg  hold_ld_q;
     reg  tst_d;
     reg  tst_q;
     reg  ack_d;
@@ -4212,6 +4239,7 @@ module merkur_slave__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marke
     always @(*) begin
         bad_d = bad_q;
         hold_d = hold_q;
+        hold_ld_d = hold_ld_q;
         tst_d = tst_q;
         ack_d = ack_q;
         hard_d = hard_q;
@@ -4227,16 +4255,20 @@ module merkur_slave__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marke
         if (i_flush) begin
             bad_d = 4'h0;
         end
+        hold_ld_d = 1'b0;
         if (tst_q) begin
             hold_d = hold_q - 9'h1;
-            if (hold_q == 9'h0) begin
+            if (hold_ld_q) begin
+                hold_d = hold_after;
+            end
+            if (~hold_ld_q & (hold_q == 9'h0)) begin
                 tst_d = 1'b0;
             end
         end
         if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
             tst_d = 1'b1;
             ack_d = ~i_d12;
-            hold_d = hold_start;
+            hold_ld_d = 1'b1;
         end
         hard_d = i_los | (tst_q & i_tst_fail);
         run_d = (bad_q == bad_max) & ~i_flush;
@@ -4252,6 +4284,8 @@ module merkur_slave__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_void,i_marke
     always @(posedge clock) bad_q <= bad_d;
     initial hold_q = 9'h0;
     always @(posedge clock) hold_q <= hold_d;
+    initial hold_ld_q = 1'h0;
+    always @(posedge clock) hold_ld_q <= hold_ld_d;
     initial tst_q = 1'h0;
     always @(posedge clock) tst_q <= tst_d;
     initial ack_q = 1'h0;
@@ -4885,6 +4919,9 @@ module merkur_slave__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_sl
         wvalid_r_d = 1'b0;
         hdr_bad_r_d = 1'b0;
         check_d = 1'b0;
+        if (i_gvalid) begin
+            raw_d = (raw_q >> 4) | nib_top__data;
+        end
         if (i_start) begin
             active_d = 1'b1;
             gcount_d = 3'h0;
@@ -4908,7 +4945,6 @@ module merkur_slave__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_idle,i_sl
             if (i_idle) begin
                 idles_d = idles_q + 2'h1;
             end
-            raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
                 if (adv_q) begin
                     slot_inc_d = 1'b1;

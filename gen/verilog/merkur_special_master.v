@@ -6204,7 +6204,7 @@ module merkur_special_master__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_vo
     output reg  o_ack;
 
     // Constant declarations
-    localparam  hold_start = 9'b100000011;
+    localparam  hold_after = 9'b100000010;
     localparam  bad_max = 4'h8;
 
     // Registers and child block ports
@@ -6212,6 +6212,8 @@ module merkur_special_master__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_vo
     reg  [3:0] bad_q;
     reg  [8:0] hold_d;
     reg  [8:0] hold_q;
+    reg  hold_ld_d;
+    reg  hold_ld_q;
     reg  tst_d;
     reg  tst_q;
     reg  ack_d;
@@ -6225,6 +6227,7 @@ module merkur_special_master__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_vo
     always @(*) begin
         bad_d = bad_q;
         hold_d = hold_q;
+        hold_ld_d = hold_ld_q;
         tst_d = tst_q;
         ack_d = ack_q;
         hard_d = hard_q;
@@ -6240,16 +6243,20 @@ module merkur_special_master__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_vo
         if (i_flush) begin
             bad_d = 4'h0;
         end
+        hold_ld_d = 1'b0;
         if (tst_q) begin
             hold_d = hold_q - 9'h1;
-            if (hold_q == 9'h0) begin
+            if (hold_ld_q) begin
+                hold_d = hold_after;
+            end
+            if (~hold_ld_q & (hold_q == 9'h0)) begin
                 tst_d = 1'b0;
             end
         end
         if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
             tst_d = 1'b1;
             ack_d = ~i_d12;
-            hold_d = hold_start;
+            hold_ld_d = 1'b1;
         end
         hard_d = i_los | (tst_q & i_tst_fail);
         run_d = (bad_q == bad_max) & ~i_flush;
@@ -6265,6 +6272,8 @@ module merkur_special_master__rx_bsr__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_vo
     always @(posedge clock) bad_q <= bad_d;
     initial hold_q = 9'h0;
     always @(posedge clock) hold_q <= hold_d;
+    initial hold_ld_q = 1'h0;
+    always @(posedge clock) hold_ld_q <= hold_ld_d;
     initial tst_q = 1'h0;
     always @(posedge clock) tst_q <= tst_d;
     initial ack_q = 1'h0;
@@ -7089,6 +7098,9 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
         wvalid_r_d = 1'b0;
         hdr_bad_r_d = 1'b0;
         check_d = 1'b0;
+        if (i_gvalid) begin
+            raw_d = (raw_q >> 4) | nib_top__data;
+        end
         if (i_start) begin
             active_d = 1'b1;
             gcount_d = 3'h0;
@@ -7112,7 +7124,6 @@ module merkur_special_master__rx_bsr__mon__word(clock,i_start,i_gvalid,i_group,i
             if (i_idle) begin
                 idles_d = idles_q + 2'h1;
             end
-            raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
                 if (adv_q) begin
                     slot_inc_d = 1'b1;
@@ -7550,7 +7561,7 @@ module merkur_special_master__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_voi
     output reg  o_ack;
 
     // Constant declarations
-    localparam  hold_start = 9'b100000011;
+    localparam  hold_after = 9'b100000010;
     localparam  bad_max = 4'h8;
 
     // Registers and child block ports
@@ -7558,6 +7569,8 @@ module merkur_special_master__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_voi
     reg  [3:0] bad_q;
     reg  [8:0] hold_d;
     reg  [8:0] hold_q;
+    reg  hold_ld_d;
+    reg  hold_ld_q;
     reg  tst_d;
     reg  tst_q;
     reg  ack_d;
@@ -7571,6 +7584,7 @@ module merkur_special_master__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_voi
     always @(*) begin
         bad_d = bad_q;
         hold_d = hold_q;
+        hold_ld_d = hold_ld_q;
         tst_d = tst_q;
         ack_d = ack_q;
         hard_d = hard_q;
@@ -7586,16 +7600,20 @@ module merkur_special_master__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_voi
         if (i_flush) begin
             bad_d = 4'h0;
         end
+        hold_ld_d = 1'b0;
         if (tst_q) begin
             hold_d = hold_q - 9'h1;
-            if (hold_q == 9'h0) begin
+            if (hold_ld_q) begin
+                hold_d = hold_after;
+            end
+            if (~hold_ld_q & (hold_q == 9'h0)) begin
                 tst_d = 1'b0;
             end
         end
         if (i_wvalid & (i_kind == 2'h1) & i_ok & (i_ptype == 2'h2) & i_compl) begin
             tst_d = 1'b1;
             ack_d = ~i_d12;
-            hold_d = hold_start;
+            hold_ld_d = 1'b1;
         end
         hard_d = i_los | (tst_q & i_tst_fail);
         run_d = (bad_q == bad_max) & ~i_flush;
@@ -7611,6 +7629,8 @@ module merkur_special_master__rx_in__ctrl(clock,i_los,i_wvalid,i_kind,i_ok,i_voi
     always @(posedge clock) bad_q <= bad_d;
     initial hold_q = 9'h0;
     always @(posedge clock) hold_q <= hold_d;
+    initial hold_ld_q = 1'h0;
+    always @(posedge clock) hold_ld_q <= hold_ld_d;
     initial tst_q = 1'h0;
     always @(posedge clock) tst_q <= tst_d;
     initial ack_q = 1'h0;
@@ -8244,6 +8264,9 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
         wvalid_r_d = 1'b0;
         hdr_bad_r_d = 1'b0;
         check_d = 1'b0;
+        if (i_gvalid) begin
+            raw_d = (raw_q >> 4) | nib_top__data;
+        end
         if (i_start) begin
             active_d = 1'b1;
             gcount_d = 3'h0;
@@ -8267,7 +8290,6 @@ module merkur_special_master__rx_in__mon__word(clock,i_start,i_gvalid,i_group,i_
             if (i_idle) begin
                 idles_d = idles_q + 2'h1;
             end
-            raw_d = (raw_q >> 4) | nib_top__data;
             if (gcount_q == 3'h0) begin
                 if (adv_q) begin
                     slot_inc_d = 1'b1;

@@ -92,14 +92,13 @@ module special_master_props (
     end
 
     // ---- the CS timeout ------------------------------------------------------
-    wire returned = rx_wvalid & (rx_kind == 2'd0) & ~(rx_ok & (rx_ptype == 2'd2));
-    reg [19:0] quiet = 20'd0;
-    always @(posedge clock) begin
-        if (returned) quiet <= 20'd0;
-        else if (armed_q && quiet != 20'hfffff) quiet <= quiet + 20'd1;
-    end
-    reg timeout_due = 1'b0;
-    always @(posedge clock) timeout_due <= armed_q && quiet == i_cs_timeout;
+    wire [19:0] quiet;
+    wire timeout_due;
+    cs_timeout_spec spec (
+        .clock(clock), .armed(armed_q), .timeout(i_cs_timeout),
+        .rx_wvalid(rx_wvalid), .rx_kind(rx_kind), .rx_ok(rx_ok), .rx_ptype(rx_ptype),
+        .count(quiet), .due(timeout_due)
+    );
     always @(*) begin
         inv_quiet: assert (quiet_q == quiet);
         if (timeout_due) cs_timeout: assert (failsafe_q);

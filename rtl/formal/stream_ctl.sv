@@ -36,12 +36,14 @@ module stream_ctl_props (
     wire o_cf, o_hard, o_run, o_tst, o_ack;
     wire [3:0] bad_q;
     wire [8:0] hold_q;
+    wire hold_ld_q;
     stream_ctl dut (
         .clock(clock), .i_los(i_los), .i_wvalid(i_wvalid), .i_kind(i_kind),
         .i_ok(i_ok), .i_void(i_void), .i_marked(i_marked), .i_d12(i_d12), .i_compl(i_compl),
         .i_ptype(i_ptype), .i_tst_fail(i_tst_fail), .i_flush(i_flush),
         .o_cf(o_cf), .o_hard(o_hard), .o_run(o_run), .o_tst(o_tst),
-        .o_ack(o_ack), .bad_q(bad_q), .hold_q(hold_q)
+        .o_ack(o_ack), .bad_q(bad_q), .hold_q(hold_q),
+        .hold_ld_q(hold_ld_q)
     );
 
     reg past_valid = 1'b0;
@@ -80,7 +82,10 @@ module stream_ctl_props (
         // Induction invariants.
         inv_bad: assert (bad_q == run);
         // (The counter is read only while the TST is held.)
-        if (age != 0 && age <= HOLD) inv_hold: assert (hold_q == HOLD - age);
+        // (The counter is loaded through hold_ld_q: in the clock after a
+        // TST it stands for HOLD - 1.)
+        if (age != 0 && age <= HOLD) inv_hold: assert ((hold_ld_q ? HOLD - 1 : hold_q) == HOLD - age);
+        inv_hold_ld: assert (!hold_ld_q || age == 1);
 
         cover_run: cover (o_run);
         cover_tst_ends: cover (age == HOLD + 1 && !o_tst);

@@ -413,3 +413,41 @@ fn wrap_reintegrate_and_failsafe_in(format: WordFormat, rtx: bool) {
         );
     }
 }
+
+/// The CS timeout (protocol §12 item 4): an armed slave whose INPUT stays
+/// alive but carries no packet after a frame enters failsafe `i_cs_timeout`
+/// clocks after that frame's H0 — not before that word's last bit was in
+/// and within the receiver's latency after (8 bit times, as the special
+/// master's test allows). The formal proof `slave` (rtl/formal/slave.sv)
+/// shows the count is exact for every input; this run shows its trigger,
+/// which is too deep for a cover (two frames' words).
+#[test]
+fn the_cs_timeout_fires_on_time() {
+    let seed = Rng::seed(0xc5_51);
+    let mut rng = Rng::new(seed);
+    let ctx = format!("seed {seed}");
+    // Two frames (the first arms the node: a good H1), then a live but
+    // empty INPUT; BSR idles throughout.
+    let mut plan = vec![(Seg::Frame { rwc: false }, Seg::Idle); 2];
+    plan.extend([(Seg::Idle, Seg::Idle); 6]);
+    let r = run(WordFormat::Basic, true, &plan, 0, &mut rng, &ctx);
+    // `run`'s lead-in of 8 idle groups, one period, then J K and H0 of the
+    // second frame (bit times; `run` sets i_cs_timeout to 4 periods in
+    // clocks, 2 clocks a bit time).
+    let h0_end = 8 * 5 + PERIOD + 10 + 25;
+    let cs_bits = 4 * PERIOD;
+    let fs = r
+        .fs_at
+        .unwrap_or_else(|| panic!("{ctx}: no failsafe at all"));
+    eprintln!("failsafe {} bit times after the last H0", fs - h0_end);
+    assert!(
+        fs >= h0_end + cs_bits && fs <= h0_end + cs_bits + 8,
+        "{ctx}: failsafe {} bit times after the last H0 ended, CS timeout {cs_bits}",
+        fs as i64 - h0_end as i64
+    );
+    assert_eq!(
+        r.modes.iter().map(|&(m, _)| m).collect::<Vec<_>>(),
+        vec![Mode::N.code() as u64],
+        "{ctx}: the node stays in mode N"
+    );
+}

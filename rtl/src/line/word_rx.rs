@@ -338,6 +338,15 @@ impl Logic for WordRx {
         self.wvalid_r.d.next = false;
         self.hdr_bad_r.d.next = false;
         self.check.d.next = false;
+        // Every group shifts in, whether a packet is open or not: the
+        // word's nibbles are read in its last group's clock, so groups
+        // between packets (and the third idle, which ends one) only change
+        // `raw` after the fields' hold has ended (issue 21: on a
+        // CoolRunner-II each `raw` bit is then two product terms, not
+        // seven).
+        if self.i_gvalid.val() {
+            self.raw.d.next = (self.raw.q.val() >> 4) | self.nib_top.data.val();
+        }
         if self.i_start.val() {
             self.active.d.next = true;
             self.gcount.d.next = 0.into();
@@ -366,7 +375,6 @@ impl Logic for WordRx {
             if self.i_idle.val() {
                 self.idles.d.next = self.idles.q.val() + 1;
             }
-            self.raw.d.next = (self.raw.q.val() >> 4) | self.nib_top.data.val();
             if self.gcount.q.val() == 0 {
                 // The slot number moves on as the next slot word begins
                 // (a clock later: `slot_inc`), so the one just published

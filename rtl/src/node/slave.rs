@@ -172,6 +172,17 @@ pub struct Slave {
     /// counter as a T flip-flop takes 20 − k product terms with the
     /// comparison and one without; docs/benchmarks.md).
     quiet_max: DFF<Bit>,
+    /// A header restarted the CS timeout in the clock before: `quiet` and
+    /// `quiet_max` then stand for 0, whatever they hold. The restart is a
+    /// flip-flop of its own, so that the counter's bits read one literal
+    /// for it instead of the header test's product terms (issue 21; the
+    /// counter is exact: its next value is what it would have been one
+    /// clock after a restart, and the failsafe test reads 0 while this is
+    /// set).
+    quiet_clr: DFF<Bit>,
+    /// The CS timeout is due: the count (0 while `quiet_clr` is set)
+    /// equals `i_cs_timeout` in an armed node; failsafe follows.
+    cs_due: Signal<Local, Bit>,
     pend_fs: DFF<Bit>,
     pend_rc: DFF<Bit>,
     pend_i1: DFF<Bit>,
@@ -277,6 +288,8 @@ impl Slave {
             cyc_gap: Default::default(),
             quiet: Default::default(),
             quiet_max: Default::default(),
+            quiet_clr: Default::default(),
+            cs_due: Default::default(),
             pend_fs: Default::default(),
             pend_rc: Default::default(),
             pend_i1: Default::default(),
@@ -312,9 +325,9 @@ impl Logic for Slave {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, failsafe, rw, armed, quiet, quiet_max, pend_fs, pend_rc, pend_i1, pend_i2,
-            act_data, perr, ferr, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc, sw_flush, fl_k,
-            nxt
+            self, clock, failsafe, rw, armed, quiet, quiet_max, quiet_clr, pend_fs, pend_rc,
+            pend_i1, pend_i2, act_data, perr, ferr, rep_cut, fwd_cut, last_cyc, ferr_owed, h0_rwc,
+            sw_flush, fl_k, nxt
         );
         self.rx_in.clock.next = self.clock.val();
         self.rx_bsr.clock.next = self.clock.val();
@@ -505,7 +518,16 @@ impl Logic for Slave {
         // counter restarts below at every H0 that is not a good TST's: a
         // frame whose header a bit error damaged still shows the ring is
         // alive, protocol §12 rule 4).
-        if self.armed.q.val() & !self.quiet_max.q.val() {
+        // `quiet_clr` set: the count stands for 0 (and `quiet_max` for
+        // false), so it goes on from 0.
+        self.quiet_clr.d.next = false;
+        if self.quiet_clr.q.val() {
+            self.quiet.d.next = 0.into();
+            if self.armed.q.val() {
+                self.quiet.d.next = 1.into();
+            }
+            self.quiet_max.d.next = false;
+        } else if self.armed.q.val() & !self.quiet_max.q.val() {
             self.quiet.d.next = self.quiet.q.val() + 1;
             self.quiet_max.d.next = self.quiet.q.val() == 0xffffe;
         }
@@ -587,8 +609,7 @@ impl Logic for Slave {
             & (self.rx_in.o_kind.val() == 0)
             & !(self.rx_in.o_ok.val() & (self.rx_in.o_ptype.val() == 2))
         {
-            self.quiet.d.next = 0.into();
-            self.quiet_max.d.next = false;
+            self.quiet_clr.d.next = true;
         }
         if self.ferr_owed.q.val() != 0 {
             self.ferr_owed.d.next = self.ferr_owed.q.val() - 1;
@@ -596,7 +617,10 @@ impl Logic for Slave {
                 self.ferr.d.next = self.ferr.q.val() + 1;
             }
         }
-        if self.armed.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val()) {
+        self.cs_due.next = self.armed.q.val()
+            & ((self.quiet_clr.q.val() & (self.i_cs_timeout.val() == 0))
+                | (!self.quiet_clr.q.val() & (self.quiet.q.val() == self.i_cs_timeout.val())));
+        if self.cs_due.val() {
             self.failsafe.d.next = true;
         }
         // Switchbox decisions (protocol §10, §12): crate::node::switch_ctl.

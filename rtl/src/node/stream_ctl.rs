@@ -90,10 +90,16 @@ pub struct StreamCtl {
     pub o_tst: Signal<Out, Bit>,
     /// ACK bit of the last TST.
     pub o_ack: Signal<Out, Bit>,
-    hold_start: Constant<Bits<9>>,
+    /// What `hold` takes in the clock after a load (`TST_HOLD_CLOCKS` − 2:
+    /// in that clock it stands for `TST_HOLD_CLOCKS` − 1).
+    hold_after: Constant<Bits<9>>,
     bad_max: Constant<Bits<4>>,
     bad: DFF<Bits<4>>,
     hold: DFF<Bits<9>>,
+    /// A TST loaded the hold in the clock before: `hold` then stands for
+    /// `TST_HOLD_CLOCKS` − 1, whatever it holds (issue 21: the load is one literal
+    /// in each counter bit's product terms, not the TST test's).
+    hold_ld: DFF<Bit>,
     tst: DFF<Bit>,
     ack: DFF<Bit>,
     hard: DFF<Bit>,
@@ -120,10 +126,11 @@ impl Default for StreamCtl {
             o_run: Default::default(),
             o_tst: Default::default(),
             o_ack: Default::default(),
-            hold_start: Constant::new((TST_HOLD_CLOCKS - 1).to_bits()),
+            hold_after: Constant::new((TST_HOLD_CLOCKS - 2).to_bits()),
             bad_max: Constant::new(BAD_WORDS.to_bits()),
             bad: Default::default(),
             hold: Default::default(),
+            hold_ld: Default::default(),
             tst: Default::default(),
             ack: Default::default(),
             hard: Default::default(),
@@ -135,7 +142,7 @@ impl Default for StreamCtl {
 impl Logic for StreamCtl {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, bad, hold, tst, ack, hard, run);
+        dff_setup!(self, clock, bad, hold, hold_ld, tst, ack, hard, run);
         if self.i_wvalid.val() {
             if self.i_ok.val() {
                 self.bad.d.next = 0.into();
@@ -155,12 +162,18 @@ impl Logic for StreamCtl {
         // NOT H1's.
         // `hold` counts down while `tst` holds, and `tst` ends in the
         // clock after it reached 0 (it then wraps round; nothing reads it
-        // until the next TST loads it). Issue 21: the counter bits read one
-        // flip-flop, not a 9-bit zero test (on a CoolRunner-II a T flip-flop
-        // of two product terms each).
+        // until the next TST loads it). A load is `hold_ld`: in the clock
+        // after it `hold` stands for `TST_HOLD_CLOCKS` − 1 (not 0). Issue 21: the
+        // counter bits read two flip-flops, not a 9-bit zero test nor the
+        // TST test (on a CoolRunner-II a T flip-flop of two product terms
+        // each).
+        self.hold_ld.d.next = false;
         if self.tst.q.val() {
             self.hold.d.next = self.hold.q.val() - 1;
-            if self.hold.q.val() == 0 {
+            if self.hold_ld.q.val() {
+                self.hold.d.next = self.hold_after.val();
+            }
+            if !self.hold_ld.q.val() & (self.hold.q.val() == 0) {
                 self.tst.d.next = false;
             }
         }
@@ -172,7 +185,7 @@ impl Logic for StreamCtl {
         {
             self.tst.d.next = true;
             self.ack.d.next = !self.i_d12.val();
-            self.hold.d.next = self.hold_start.val();
+            self.hold_ld.d.next = true;
         }
         self.hard.d.next = self.i_los.val() | (self.tst.q.val() & self.i_tst_fail.val());
         self.run.d.next = (self.bad.q.val() == self.bad_max.val()) & !self.i_flush.val();
