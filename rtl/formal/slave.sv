@@ -17,6 +17,10 @@
 //   sets failsafe for it) in exactly the clocks in which the spec's count
 //   equals the timeout in an armed node: not sooner, not later.
 //
+// The cover shows only that the environment is not vacuous (failsafe
+// reached); the timeout itself is too deep for a cover (a good H1, two
+// whole words): slave_modes.rs shows it in simulation.
+//
 // The reference count is the spec's (rtl/formal/cs_timeout_spec.sv, a
 // counter that a header restarts and that stops at its highest value),
 // not taken from the slave.
@@ -67,5 +71,8 @@ module slave_props (
         inv_quiet_max: assert ((!quiet_clr_q && quiet_max_q) == (quiet == 20'hfffff));
         cs_due_exact: assert (cs_due == (armed_q && quiet == i_cs_timeout));
         if (timeout_due) cs_timeout: assert (failsafe_q);
+        // The environment is not vacuous: the slave's own failsafe
+        // register moves (here through the host's request, `i_fs_set`).
+        cover_failsafe: cover (failsafe_q);
     end
 endmodule

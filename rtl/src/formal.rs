@@ -316,7 +316,7 @@ fn slave() -> Proof {
             include_str!("../formal/slave.sv"),
             include_str!("../formal/cs_timeout_spec.sv")
         ),
-        tasks: vec![task(Mode::Prove, 2)],
+        tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 4)],
     }
 }
 
