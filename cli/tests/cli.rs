@@ -677,8 +677,8 @@ fn refuses_the_slave(target: &str, device: &str, needs: &str) {
         let tried = err.split("(Yosys strategies tried: ").nth(1).unwrap_or("");
         for strategy in [
             "`synth_ice40` (Yosys' defaults)",
-            "`synth_ice40 -dff -nocarry -nodffe`",
             "`synth_ice40 -nocarry -dffe_min_ce_use 16`",
+            "`synth_ice40 -dff -nocarry -nodffe`",
             "`synth_ice40 -dff -nocarry -dffe_min_ce_use 16`",
         ] {
             let outcome = tried.split(&format!("{strategy}: ")).nth(1).unwrap_or("");

@@ -78,21 +78,22 @@ pub struct Fpga {
 pub const STRATEGIES_DEFAULT: &[&str] = &[""];
 
 /// For a device the lean slave fills to 95–99 % (the iCE40-HX1K), after
-/// Yosys' default: ABC9's sequential mode without carry chains and without
-/// clock-enable flip-flops (the fewest logic cells and the fewest control
-/// sets, so nextpnr can pack eight cells to a logic block; with `-dff`
-/// alone the sets need more blocks than the device has), then, where ABC9's
-/// sequential mode crashes (YoWASP's WebAssembly stack, unless the venv's
-/// `sitecustomize.py` enlarged it: docs/synthesis.md) or the node does
-/// not fit, clock enables only where 16 or more flip-flops share one, and last that
-/// with ABC9's sequential mode (the lean actuator of issue 27's Verilog
-/// needs 1,281 cells with the third, 1,250 with the fourth; ABC's mapping
-/// moves by a few cells with the text it reads). Measured in
-/// docs/benchmarks.md ("The smallest iCE40").
+/// Yosys' default: clock enables only where 16 or more flip-flops share one,
+/// without carry chains (both lean slaves fit with it today, and it is the
+/// quick one: about 4 s of Yosys, where ABC9's sequential mode `-dff` takes
+/// about 2 min on the slave in YoWASP's Yosys); then ABC9's sequential mode
+/// without carry chains and without clock-enable flip-flops (the fewest
+/// control sets, so nextpnr can pack eight cells to a logic block; with
+/// `-dff` alone the sets need more blocks than the device has); last that
+/// with clock enables where 16 share one. A `-dff` strategy that crashes
+/// (YoWASP's WebAssembly stack, unless the venv's `sitecustomize.py`
+/// enlarged it: docs/synthesis.md) hands on to the next. ABC's mapping
+/// moves by a few cells with the text it reads, so which one fits a node
+/// moves too. Measured in docs/benchmarks.md ("The smallest iCE40").
 pub const STRATEGIES_TIGHT: &[&str] = &[
     "",
-    "-dff -nocarry -nodffe",
     "-nocarry -dffe_min_ce_use 16",
+    "-dff -nocarry -nodffe",
     "-dff -nocarry -dffe_min_ce_use 16",
 ];
 
