@@ -1131,6 +1131,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
     reg  [3:0] f_reason_q;
     reg  [3:0] f_rn_d;
     reg  [3:0] f_rn_q;
+    reg  f_hold_d;
+    reg  f_hold_q;
     reg  pre_home_d;
     reg  pre_home_q;
     reg  at_home_d;
@@ -1245,6 +1247,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
         f_alarm_d = f_alarm_q;
         f_reason_d = f_reason_q;
         f_rn_d = f_rn_q;
+        f_hold_d = f_hold_q;
         pre_home_d = pre_home_q;
         at_home_d = at_home_q;
         fs_r_d = fs_r_q;
@@ -1442,7 +1445,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
                 fresh_data = fresh_data | 16'h800;
             end
         end
-        if ((gidx_q == 3'h0) & ~g_pend_q) begin
+        if (~f_hold_q) begin
             f_data_d = fresh_data;
             f_alive_d = fresh_alive;
             f_alarm_d = send_c;
@@ -1784,6 +1787,7 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
         if (i_hdr_bad) begin
             dead_d = 1'b1;
         end
+        f_hold_d = (gidx_d != 3'h0) | g_pend_d;
         o_slot = slot_q;
         o_rtx_own = idx_own_q;
         o_rtx_idx = idx_q;
@@ -1891,6 +1895,8 @@ module merkur_slave__fwd(clock,i_bvalid,i_code,i_phase,i_hdr_bad,i_mute,i_slots_
     always @(posedge clock) f_reason_q <= f_reason_d;
     initial f_rn_q = 4'h0;
     always @(posedge clock) f_rn_q <= f_rn_d;
+    initial f_hold_q = 1'h0;
+    always @(posedge clock) f_hold_q <= f_hold_d;
     initial pre_home_q = 1'h0;
     always @(posedge clock) pre_home_q <= pre_home_d;
     initial at_home_q = 1'h0;

@@ -106,6 +106,7 @@ pub fn proofs() -> Vec<Proof> {
         mdb(),
         special_master(),
         slave(),
+        fwd(),
     ]
 }
 
@@ -317,6 +318,26 @@ fn slave() -> Proof {
             include_str!("../formal/cs_timeout_spec.sv")
         ),
         tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 4)],
+    }
+}
+
+fn fwd() -> Proof {
+    Proof {
+        name: "fwd",
+        what: "the forwarder's fresh word: followed between words, held through a word, \
+               its hold taken from one flip-flop",
+        duts: vec![dut(
+            "fwd",
+            block_verilog(crate::node::fwd::Fwd::new(
+                crate::line::word_rx::WordFormat::Basic,
+            )),
+        )],
+        expose: ["gidx_q", "g_pend_q", "f_hold_q", "f_data_q", "fresh_data"]
+            .map(|w| ("fwd", w))
+            .to_vec(),
+        props: include_str!("../formal/fwd.sv"),
+        // The cover: a J K (10 bits) and a whole group after it.
+        tasks: vec![task(Mode::Prove, 2), task(Mode::Cover, 24)],
     }
 }
 

@@ -79,9 +79,10 @@ pub const STRATEGIES_DEFAULT: &[&str] = &[""];
 
 /// For a device the lean slave fills to 95–99 % (the iCE40-HX1K), after
 /// Yosys' default: clock enables only where 16 or more flip-flops share one,
-/// without carry chains (both lean slaves fit with it today, and it is the
-/// quick one: about 4 s of Yosys, where ABC9's sequential mode `-dff` takes
-/// about 2 min on the slave in YoWASP's Yosys); then ABC9's sequential mode
+/// without carry chains (the quick one: about 4 s of Yosys, where ABC9's
+/// sequential mode `-dff` takes about 2 min on the slave in YoWASP's Yosys;
+/// the lean actuator fits with it, the lean sensor needs 12 cells too
+/// many since its fresh word's hold flip-flop); then ABC9's sequential mode
 /// without carry chains and without clock-enable flip-flops (the fewest
 /// control sets, so nextpnr can pack eight cells to a logic block; with
 /// `-dff` alone the sets need more blocks than the device has); last that

@@ -281,6 +281,12 @@ pub struct Fwd {
     f_reason: DFF<Bits<4>>,
     // The fresh word's N1 (extended variant): {SEQ, REASON[2:0]} or 0.
     f_rn: DFF<Bits<4>>,
+    /// The f_* registers hold (`f_hold`): set in every clock in which a
+    /// word is under way in stage B (`gidx` not 0) or a group is pending
+    /// for it (`g_pend`), from those registers' next values, so that each
+    /// f_* bit's load and hold read one register instead of the four
+    /// (issue 21; proved exact, rtl/formal/fwd.sv).
+    f_hold: DFF<Bit>,
     pre_home: DFF<Bit>,
     at_home: DFF<Bit>,
     fs_r: DFF<Bit>,
@@ -436,6 +442,7 @@ impl Fwd {
             f_alarm: Default::default(),
             f_reason: Default::default(),
             f_rn: Default::default(),
+            f_hold: Default::default(),
             pre_home: Default::default(),
             at_home: Default::default(),
             fs_r: Default::default(),
@@ -542,6 +549,7 @@ impl Logic for Fwd {
             f_alarm,
             f_reason,
             f_rn,
+            f_hold,
             pre_home,
             at_home,
             fs_r,
@@ -814,7 +822,7 @@ impl Logic for Fwd {
                 self.fresh_data.next = self.fresh_data.val() | 0x0800;
             }
         }
-        if (self.gidx.q.val() == 0) & !self.g_pend.q.val() {
+        if !self.f_hold.q.val() {
             self.f_data.d.next = self.fresh_data.val();
             self.f_alive.d.next = self.fresh_alive.val();
             self.f_alarm.d.next = self.send_c.val();
@@ -1271,6 +1279,9 @@ impl Logic for Fwd {
         if self.i_hdr_bad.val() {
             self.dead.d.next = true;
         }
+        // The f_* registers' hold in the next clock, from `gidx`'s and
+        // `g_pend`'s next values (their last assignments are above).
+        self.f_hold.d.next = (self.gidx.d.val() != 0) | self.g_pend.d.val();
         self.o_slot.next = self.slot.q.val();
         self.o_rtx_own.next = self.idx_own.q.val();
         self.o_rtx_idx.next = self.idx.q.val();
